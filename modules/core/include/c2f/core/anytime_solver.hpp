@@ -1,0 +1,30 @@
+#pragma once
+// The AnytimeSolver concept: a solver that improves a labeling in small units of work.
+
+#include <concepts>
+#include <span>
+
+#include "c2f/core/energy.hpp"
+#include "c2f/core/labeling.hpp"
+
+namespace c2f {
+
+/// A solver S that minimises energies of type E one unit of work at a time.
+/// Contract:
+///  - `bind(e, x)` starts from labeling x of e (validated; throws std::invalid_argument when
+///    it is not a labeling of e). e must outlive the binding. Rebinding to another energy of
+///    the same type (another level) is allowed at any time.
+///  - `step()` does one unit of work (one expansion move, one BP iteration, one sweep) and
+///    returns the energy of the current labeling. The returned energy never increases across
+///    steps of one binding.
+///  - `energy()` and `labeling()` report the current (best) labeling and its energy.
+template <class S, class E>
+concept AnytimeSolver =
+    Energy<E> && requires(S& s, const S& cs, const E& e, std::span<const Label> x) {
+      s.bind(e, x);
+      { s.step() } -> std::convertible_to<double>;
+      { cs.energy() } -> std::convertible_to<double>;
+      { cs.labeling() } -> std::convertible_to<std::span<const Label>>;
+    };
+
+}  // namespace c2f

@@ -1,0 +1,45 @@
+#pragma once
+// The Energy concept: a discrete energy E(x) = sum_v unary(v, x_v) + higher-order terms over
+// labelings x of num_variables variables with num_labels labels each.
+
+#include <concepts>
+#include <cstddef>
+#include <span>
+
+#include "c2f/core/labeling.hpp"
+
+namespace c2f {
+
+/// How the library reads an energy type. The default forwards to member functions
+/// `num_variables()`, `num_labels()`, `unary(v, l)` and `evaluate(labeling)`; a foreign type
+/// opts in by specialising energy_traits instead of changing the type.
+template <class E>
+struct energy_traits {
+  template <class T = E>
+  static auto num_variables(const T& e) -> decltype(e.num_variables()) {
+    return e.num_variables();
+  }
+  template <class T = E>
+  static auto num_labels(const T& e) -> decltype(e.num_labels()) { return e.num_labels(); }
+  template <class T = E>
+  static auto unary(const T& e, std::size_t v, Label l) -> decltype(e.unary(v, l)) {
+    return e.unary(v, l);
+  }
+  template <class T = E>
+  static auto evaluate(const T& e, std::span<const Label> x) -> decltype(e.evaluate(x)) {
+    return e.evaluate(x);
+  }
+};
+
+/// An energy over a finite set of variables sharing one label set.
+/// Contract: `evaluate(x)` returns E(x) in double for any valid labeling x (and throws
+/// std::invalid_argument for an invalid one); `unary(v, l)` is the unary cost of label l at v.
+template <class E>
+concept Energy = requires(const E& e, std::span<const Label> x, std::size_t v, Label l) {
+  { energy_traits<E>::num_variables(e) } -> std::convertible_to<std::size_t>;
+  { energy_traits<E>::num_labels(e) } -> std::convertible_to<int>;
+  { energy_traits<E>::unary(e, v, l) } -> std::convertible_to<double>;
+  { energy_traits<E>::evaluate(e, x) } -> std::convertible_to<double>;
+};
+
+}  // namespace c2f

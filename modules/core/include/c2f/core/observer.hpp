@@ -1,0 +1,39 @@
+#pragma once
+// What a coarse-to-fine run (or any anytime loop) reports after every step.
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "c2f/core/labeling.hpp"
+
+namespace c2f {
+
+/// One observation: the state after `step` steps on `level` (step 0 = the level's start
+/// labeling, right after the transfer from the previous level).
+struct StepEvent {
+  double time_s = 0.0;          ///< run-clock seconds since the run started (observer time excluded)
+  int level = 0;                ///< 0 = coarsest
+  long step = 0;                ///< steps done on this level
+  double energy = 0.0;          ///< energy of the ground (original) labeling
+  std::size_t num_variables = 0;///< variables at this level
+  bool at_original = false;     ///< true on the last level (the original problem)
+  std::span<const Label> level_labeling;      ///< current labeling of the level's variables
+  std::span<const VariableIndex> group_of;    ///< pixel -> level variable; empty at the original level
+
+  /// The labeling of the original variables that this step's labeling stands for. O(N).
+  [[nodiscard]] Labeling ground_labeling() const;
+};
+
+enum class ObserverDecision { continue_run, stop };
+
+/// Called after every step; returning stop ends the run. Time spent inside it is not counted
+/// on the run clock.
+using Observer = std::function<ObserverDecision(const StepEvent&)>;
+
+/// An observer that calls each of `observers` in turn; stops when any of them says stop.
+Observer observe_all(std::vector<Observer> observers);
+
+}  // namespace c2f

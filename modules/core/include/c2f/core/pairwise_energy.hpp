@@ -1,0 +1,75 @@
+#pragma once
+// PairwiseEnergy: unary costs plus weighted pairwise terms on undirected edges.
+//
+//   E(x) = sum_v unary(v, x_v) + sum_{edges (u, v, w, t)} w * terms[t].cost(x_u, x_v)
+//
+// Layout is flat (DESIGN.md section 5): unaries are one row-major array of
+// num_variables * num_labels costs, edges one array. Costs are stored in double, not float:
+// the reduced energy of a partition sums the unaries of whole groups, and reduction must stay
+// exact (Theorem 1) to rounding of double sums so that transfers between levels keep the
+// energy; float sums over thousands of members would not.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "c2f/core/labeling.hpp"
+#include "c2f/core/pairwise_term.hpp"
+
+namespace c2f {
+
+/// An undirected edge: cost weight * terms[term].cost(x_u, x_v). For an asymmetric table term
+/// the orientation (u first) matters.
+struct Edge {
+  VariableIndex u = 0;
+  VariableIndex v = 0;
+  double weight = 0.0;
+  std::uint32_t term = 0;
+
+  friend bool operator==(const Edge&, const Edge&) = default;
+};
+
+class PairwiseEnergy {
+ public:
+  /// Validates everything and throws std::invalid_argument naming the offending field:
+  /// num_labels >= 1; unaries has num_variables * num_labels finite entries; every term fits
+  /// num_labels; every edge has endpoints < num_variables, u != v, a finite weight and a term
+  /// index < terms.size(). num_variables must fit VariableIndex.
+  PairwiseEnergy(std::size_t num_variables, int num_labels, std::vector<double> unaries,
+                 std::vector<PairwiseTerm> terms, std::vector<Edge> edges);
+
+  [[nodiscard]] std::size_t num_variables() const noexcept { return num_variables_; }
+  [[nodiscard]] int num_labels() const noexcept { return num_labels_; }
+
+  [[nodiscard]] double unary(std::size_t v, Label l) const noexcept {
+    return unaries_[v * static_cast<std::size_t>(num_labels_) + static_cast<std::size_t>(l)];
+  }
+  /// The num_labels unary costs of variable v.
+  [[nodiscard]] std::span<const double> unary_row(std::size_t v) const noexcept {
+    return {unaries_.data() + v * static_cast<std::size_t>(num_labels_),
+            static_cast<std::size_t>(num_labels_)};
+  }
+  [[nodiscard]] std::span<const double> unaries() const noexcept { return unaries_; }
+  [[nodiscard]] std::span<const PairwiseTerm> terms() const noexcept { return terms_; }
+  [[nodiscard]] std::span<const Edge> edges() const noexcept { return edges_; }
+
+  /// The cost of edge e when its endpoints take labels a (at e.u) and b (at e.v).
+  [[nodiscard]] double pairwise_cost(const Edge& e, Label a, Label b) const noexcept {
+    return e.weight * terms_[e.term].cost(a, b);
+  }
+
+  /// E(x) in double. Throws std::invalid_argument when x is not a labeling of this energy.
+  [[nodiscard]] double evaluate(std::span<const Label> labeling) const;
+  /// E(x) without validating x (x must be a valid labeling). O(N + E).
+  [[nodiscard]] double evaluate_unchecked(std::span<const Label> labeling) const noexcept;
+
+ private:
+  std::size_t num_variables_;
+  int num_labels_;
+  std::vector<double> unaries_;
+  std::vector<PairwiseTerm> terms_;
+  std::vector<Edge> edges_;
+};
+
+}  // namespace c2f

@@ -1,0 +1,22 @@
+#include "c2f/core/observer.hpp"
+
+namespace c2f {
+
+Labeling StepEvent::ground_labeling() const {
+  if (group_of.empty()) return {level_labeling.begin(), level_labeling.end()};
+  Labeling ground(group_of.size());
+  for (std::size_t v = 0; v < group_of.size(); ++v) ground[v] = level_labeling[group_of[v]];
+  return ground;
+}
+
+Observer observe_all(std::vector<Observer> observers) {
+  return [observers = std::move(observers)](const StepEvent& event) {
+    ObserverDecision decision = ObserverDecision::continue_run;
+    for (const Observer& observer : observers) {
+      if (observer && observer(event) == ObserverDecision::stop) decision = ObserverDecision::stop;
+    }
+    return decision;
+  };
+}
+
+}  // namespace c2f

@@ -1,0 +1,77 @@
+#include "c2f/core/pairwise_energy.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace c2f {
+
+PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
+                               std::vector<double> unaries, std::vector<PairwiseTerm> terms,
+                               std::vector<Edge> edges)
+    : num_variables_(num_variables),
+      num_labels_(num_labels),
+      unaries_(std::move(unaries)),
+      terms_(std::move(terms)),
+      edges_(std::move(edges)) {
+  if (num_labels_ < 1) {
+    throw std::invalid_argument("PairwiseEnergy: num_labels must be >= 1, got " +
+                                std::to_string(num_labels_));
+  }
+  if (num_variables_ > std::numeric_limits<VariableIndex>::max()) {
+    throw std::invalid_argument("PairwiseEnergy: num_variables " + std::to_string(num_variables_) +
+                                " does not fit a 32-bit variable index");
+  }
+  const std::size_t expected = num_variables_ * static_cast<std::size_t>(num_labels_);
+  if (unaries_.size() != expected) {
+    throw std::invalid_argument("PairwiseEnergy: unaries has " + std::to_string(unaries_.size()) +
+                                " entries, expected num_variables * num_labels = " +
+                                std::to_string(expected));
+  }
+  for (std::size_t i = 0; i < unaries_.size(); ++i) {
+    if (!std::isfinite(unaries_[i])) {
+      throw std::invalid_argument(
+          "PairwiseEnergy: unaries: cost of label " + std::to_string(i % num_labels_) +
+          " at variable " + std::to_string(i / num_labels_) + " is not finite (" +
+          std::to_string(unaries_[i]) + ")");
+    }
+  }
+  for (std::size_t t = 0; t < terms_.size(); ++t) {
+    terms_[t].validate_for(num_labels_, "PairwiseEnergy: terms[" + std::to_string(t) + "]");
+  }
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    const Edge& e = edges_[i];
+    const std::string name = "PairwiseEnergy: edges[" + std::to_string(i) + "]";
+    if (e.u >= num_variables_ || e.v >= num_variables_) {
+      throw std::invalid_argument(name + ": endpoint (" + std::to_string(e.u) + ", " +
+                                  std::to_string(e.v) + ") out of range, num_variables = " +
+                                  std::to_string(num_variables_));
+    }
+    if (e.u == e.v) {
+      throw std::invalid_argument(name + ": self-loop at variable " + std::to_string(e.u));
+    }
+    if (!std::isfinite(e.weight)) {
+      throw std::invalid_argument(name + ": weight is not finite");
+    }
+    if (e.term >= terms_.size()) {
+      throw std::invalid_argument(name + ": term index " + std::to_string(e.term) +
+                                  " out of range, there are " + std::to_string(terms_.size()) +
+                                  " terms");
+    }
+  }
+}
+
+double PairwiseEnergy::evaluate(std::span<const Label> labeling) const {
+  validate_labeling(labeling, num_variables_, num_labels_);
+  return evaluate_unchecked(labeling);
+}
+
+double PairwiseEnergy::evaluate_unchecked(std::span<const Label> labeling) const noexcept {
+  double total = 0.0;
+  for (std::size_t v = 0; v < num_variables_; ++v) total += unary(v, labeling[v]);
+  for (const Edge& e : edges_) total += pairwise_cost(e, labeling[e.u], labeling[e.v]);
+  return total;
+}
+
+}  // namespace c2f

@@ -1,0 +1,38 @@
+#include "c2f/core/trace.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace c2f {
+
+std::string trace_header(bool with_error) {
+  return with_error ? "time_s,level,step,energy,num_vars,error" : "time_s,level,step,energy,num_vars";
+}
+
+TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error)
+    : out_(&out), error_(std::move(error)) {
+  *out_ << trace_header(static_cast<bool>(error_)) << '\n';
+}
+
+ObserverDecision TraceWriter::operator()(const StepEvent& event) {
+  char row[160];
+  std::snprintf(row, sizeof row, "%.6f,%d,%ld,%.17g,%zu", event.time_s, event.level, event.step,
+                event.energy, event.num_variables);
+  *out_ << row;
+  if (error_) {
+    const Labeling ground = event.ground_labeling();
+    std::snprintf(row, sizeof row, ",%.9g", error_(ground));
+    *out_ << row;
+  }
+  *out_ << '\n';
+  if (!*out_) throw std::runtime_error("trace: writing a row failed");
+  return ObserverDecision::continue_run;
+}
+
+std::ofstream open_trace_file(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("trace: cannot open '" + path + "' for writing");
+  return out;
+}
+
+}  // namespace c2f

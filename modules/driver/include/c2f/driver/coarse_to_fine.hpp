@@ -1,0 +1,154 @@
+#pragma once
+// coarse_to_fine: Algorithm 1 of the paper for any energy, partition provider and anytime
+// solver.
+
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/energy.hpp"
+#include "c2f/core/observer.hpp"
+#include "c2f/driver/detail/run_clock.hpp"
+#include "c2f/driver/options.hpp"
+#include "c2f/driver/rules.hpp"
+#include "c2f/driver/summary.hpp"
+#include "c2f/lift/partition_provider.hpp"
+#include "c2f/lift/reduce.hpp"
+#include "c2f/lift/transfer.hpp"
+
+namespace c2f {
+
+/// The start labeling of a level's energy: each variable's cheapest unary label, or all 0.
+template <Energy E>
+Labeling initial_labeling(const E& energy, InitialLabeling kind) {
+  const std::size_t n = energy_traits<E>::num_variables(energy);
+  const int num_labels = energy_traits<E>::num_labels(energy);
+  Labeling labeling(n, 0);
+  if (kind == InitialLabeling::zero) return labeling;
+  for (std::size_t v = 0; v < n; ++v) {
+    double best = energy_traits<E>::unary(energy, v, 0);
+    for (Label l = 1; l < num_labels; ++l) {
+      const double cost = energy_traits<E>::unary(energy, v, l);
+      if (cost < best) {
+        best = cost;
+        labeling[v] = l;
+      }
+    }
+  }
+  return labeling;
+}
+
+/// Minimises `energy` coarse to fine. For each partition that `levels` provides (coarsest
+/// first), the energy is reduced by it, the current labeling is transferred to it (same
+/// energy), the solver is bound to the reduced energy and stepped until `rules` say refine;
+/// then the original energy is solved the same way, until the rules say refine (finished) or
+/// stop. A provider that yields no partition gives the flat run, with the same code and clock.
+///
+/// The run clock starts before the first partition is built; partitions, reductions, transfers
+/// and binding are on it; time inside `observer` is not. The observer sees every step,
+/// including step 0 of every level, with the energy of the current labeling (equal to the
+/// energy of the ground labeling it stands for, by Theorem 1).
+///
+/// Throws std::invalid_argument when a provided partition does not cover the energy's variables
+/// or does not refine the previous level.
+template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
+Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
+                       const Observer& observer = {},
+                       InitialLabeling init = InitialLabeling::unary_argmin) {
+  if (rules.empty()) throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
+  detail::RunClock clock;
+  Summary summary;
+  std::optional<DensePartition> previous;  // partition of the last finished level
+  Labeling labeling;                       // labeling on the last finished level
+  std::vector<double> history;
+  bool finished = false;
+
+  for (int level = 0; !finished; ++level) {
+    LevelSummary stats;
+    stats.level = level;
+    const double level_start = clock.elapsed();
+    std::optional<DensePartition> partition = levels.next(energy);
+    const double partition_done = clock.elapsed();
+    stats.partition_seconds = partition_done - level_start;
+
+    const bool at_original = !partition.has_value();
+    std::optional<E> reduced;
+    if (!at_original) reduced.emplace(reduce(energy, *partition));
+    const E& level_energy = at_original ? energy : *reduced;
+
+    Labeling start;
+    if (level == 0) {
+      start = initial_labeling(level_energy, init);
+    } else if (at_original) {
+      start = expand(labeling, *previous);
+    } else {
+      start = transfer_labels(labeling, *previous, *partition);
+    }
+    solver.bind(level_energy, start);
+    const double setup_done = clock.elapsed();
+    stats.setup_seconds = setup_done - partition_done;
+    stats.num_variables = energy_traits<E>::num_variables(level_energy);
+
+    const std::span<const VariableIndex> group_of =
+        at_original ? std::span<const VariableIndex>{} : partition->group_ids();
+    history.assign(1, solver.energy());
+    stats.start_energy = history.back();
+
+    for (long step = 0;; ++step) {
+      if (step > 0) {
+        history.push_back(solver.step());
+        ++summary.total_steps;
+      }
+      if (observer) {
+        const StepEvent event{clock.elapsed(), level, step, history.back(), stats.num_variables,
+                              at_original, solver.labeling(), group_of};
+        if (clock.off_the_clock([&] { return observer(event); }) == ObserverDecision::stop) {
+          summary.reason = TerminationReason::observer;
+          finished = true;
+          break;
+        }
+      }
+      const Progress progress{clock.elapsed(), level, at_original, step, summary.total_steps,
+                              history};
+      const Verdict verdict = rules.decide(progress);
+      if (verdict.decision == Decision::stop ||
+          (verdict.decision == Decision::refine && at_original)) {
+        summary.reason = verdict.reason;
+        finished = true;
+        break;
+      }
+      if (verdict.decision == Decision::refine) break;
+    }
+
+    stats.steps = static_cast<long>(history.size()) - 1;
+    stats.final_energy = history.back();
+    stats.solve_seconds = clock.elapsed() - setup_done;
+    summary.levels.push_back(stats);
+    const std::span<const Label> result = solver.labeling();
+    labeling.assign(result.begin(), result.end());
+    if (at_original) {
+      previous.reset();  // the labeling is already on the original variables
+    } else {
+      previous = std::move(partition);
+    }
+  }
+
+  summary.labeling = previous ? expand(labeling, *previous) : labeling;
+  summary.energy = energy_traits<E>::evaluate(energy, summary.labeling);
+  summary.seconds = clock.elapsed();
+  summary.observer_seconds = clock.excluded();
+  return summary;
+}
+
+/// As above with the rules and initial labeling of `options`; throws std::invalid_argument
+/// when options.validate() reports a problem.
+template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
+Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Options& options,
+                       const Observer& observer = {}) {
+  return coarse_to_fine(energy, levels, solver, options.rules(), observer,
+                        options.initial_labeling);
+}
+
+}  // namespace c2f

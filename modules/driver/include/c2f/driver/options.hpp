@@ -1,0 +1,46 @@
+#pragma once
+// Options of a coarse-to-fine run, in the Ceres shape: plain fields plus a validity check.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "c2f/driver/rules.hpp"
+
+namespace c2f {
+
+/// The labeling the first (coarsest) level starts from.
+enum class InitialLabeling {
+  unary_argmin,  ///< every variable takes its cheapest unary label
+  zero,          ///< every variable takes label 0 (what the reference implementation does)
+};
+
+std::string_view to_string(InitialLabeling init);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+InitialLabeling initial_labeling_from_string(std::string_view text);
+
+struct Options {
+  /// Refine (on the original problem: finish) when the energy has not decreased over the last
+  /// k steps; k = plateau_steps[level], the last entry serving deeper levels. Empty: no such rule.
+  std::vector<int> plateau_steps{4};
+  /// A decrease counts only when larger than plateau_tolerance * max(1, |E|).
+  double plateau_tolerance = 0.0;
+  /// Refine after this many steps on one level (0: no limit).
+  long max_steps_per_level = 0;
+  /// Stop after this many steps in the whole run (0: no limit).
+  long max_total_steps = 0;
+  /// Stop once the run clock passes this many seconds (0: no limit).
+  double time_limit_seconds = 0.0;
+  /// Stop once the energy is at or below this value.
+  std::optional<double> target_energy;
+  InitialLabeling initial_labeling = InitialLabeling::unary_argmin;
+
+  /// Empty when the options are usable, else a message naming the offending field. Options
+  /// must contain a rule that ends every level (plateau_steps or max_steps_per_level).
+  [[nodiscard]] std::string validate() const;
+  /// The rules these options describe. Throws std::invalid_argument when validate() fails.
+  [[nodiscard]] Rules rules() const;
+};
+
+}  // namespace c2f

@@ -1,0 +1,74 @@
+#pragma once
+// Refinement and stopping rules of a coarse-to-fine run: small composable objects that look at
+// the run's progress after every step and say continue, refine (go to the next finer level;
+// on the original problem: finish) or stop.
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace c2f {
+
+enum class Decision { continue_level, refine, stop };
+
+/// Why a run ended.
+enum class TerminationReason {
+  converged,      ///< the last level's refinement rule fired (e.g. no decrease over k steps)
+  step_limit,     ///< a step limit was reached
+  time_limit,     ///< the run clock passed the time limit
+  target_energy,  ///< the energy reached the target
+  observer,       ///< the observer asked to stop
+};
+
+std::string_view to_string(TerminationReason reason);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+TerminationReason termination_reason_from_string(std::string_view text);
+
+/// What the rules see after every step (and at step 0 of each level).
+struct Progress {
+  double elapsed_s = 0.0;       ///< run clock
+  int level = 0;                ///< 0 = coarsest
+  bool at_original = false;     ///< this level is the original problem
+  long level_step = 0;          ///< steps done on this level
+  long total_steps = 0;         ///< steps done in the whole run
+  std::span<const double> level_energies;  ///< energy at step 0..level_step of this level
+};
+
+/// A rule's answer; `reason` says why the run ends if this verdict ends it (a refine on the
+/// original problem, or a stop).
+struct Verdict {
+  Decision decision = Decision::continue_level;
+  TerminationReason reason = TerminationReason::converged;
+};
+
+using Rule = std::function<Verdict(const Progress&)>;
+
+/// Refine when the energy has not decreased by more than tolerance * max(1, |E|) over the
+/// last k steps of the level; k = steps_per_level[level] (the last entry serves deeper levels).
+/// Every k must be >= 1 (std::invalid_argument otherwise).
+Rule no_decrease(std::vector<int> steps_per_level, double tolerance = 0.0);
+/// Refine after `max_steps` steps on a level.
+Rule level_step_limit(long max_steps);
+/// Stop after `max_steps` steps in the whole run.
+Rule total_step_limit(long max_steps);
+/// Stop once the run clock passes `seconds`.
+Rule time_limit(double seconds);
+/// Stop once the energy is <= target.
+Rule target_energy(double target);
+
+/// A set of rules consulted together: the strongest decision wins (stop over refine over
+/// continue); among equally strong verdicts the first rule added wins.
+class Rules {
+ public:
+  Rules() = default;
+  Rules& add(Rule rule);
+  [[nodiscard]] Verdict decide(const Progress& progress) const;
+  [[nodiscard]] bool empty() const noexcept { return rules_.empty(); }
+
+ private:
+  std::vector<Rule> rules_;
+};
+
+}  // namespace c2f

@@ -1,0 +1,59 @@
+#include "c2f/driver/options.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace c2f {
+
+std::string_view to_string(InitialLabeling init) {
+  switch (init) {
+    case InitialLabeling::unary_argmin: return "unary_argmin";
+    case InitialLabeling::zero: return "zero";
+  }
+  return "unknown";
+}
+
+InitialLabeling initial_labeling_from_string(std::string_view text) {
+  for (InitialLabeling init : {InitialLabeling::unary_argmin, InitialLabeling::zero}) {
+    if (to_string(init) == text) return init;
+  }
+  throw std::invalid_argument("unknown initial labeling '" + std::string(text) +
+                              "' (expected unary_argmin or zero)");
+}
+
+std::string Options::validate() const {
+  for (std::size_t i = 0; i < plateau_steps.size(); ++i) {
+    if (plateau_steps[i] < 1) {
+      return "plateau_steps[" + std::to_string(i) + "] must be >= 1, got " +
+             std::to_string(plateau_steps[i]);
+    }
+  }
+  if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0.0) {
+    return "plateau_tolerance must be finite and >= 0";
+  }
+  if (max_steps_per_level < 0) return "max_steps_per_level must be >= 0 (0: no limit)";
+  if (max_total_steps < 0) return "max_total_steps must be >= 0 (0: no limit)";
+  if (!std::isfinite(time_limit_seconds) || time_limit_seconds < 0.0) {
+    return "time_limit_seconds must be finite and >= 0 (0: no limit)";
+  }
+  if (target_energy && !std::isfinite(*target_energy)) return "target_energy must be finite";
+  if (plateau_steps.empty() && max_steps_per_level == 0) {
+    return "no rule ends a level: set plateau_steps or max_steps_per_level";
+  }
+  return {};
+}
+
+Rules Options::rules() const {
+  if (const std::string problem = validate(); !problem.empty()) {
+    throw std::invalid_argument("coarse-to-fine options: " + problem);
+  }
+  Rules rules;
+  if (!plateau_steps.empty()) rules.add(no_decrease(plateau_steps, plateau_tolerance));
+  if (max_steps_per_level > 0) rules.add(level_step_limit(max_steps_per_level));
+  if (max_total_steps > 0) rules.add(total_step_limit(max_total_steps));
+  if (time_limit_seconds > 0.0) rules.add(time_limit(time_limit_seconds));
+  if (target_energy) rules.add(c2f::target_energy(*target_energy));
+  return rules;
+}
+
+}  // namespace c2f

@@ -1,0 +1,106 @@
+#include "c2f/driver/rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace c2f {
+
+namespace {
+constexpr TerminationReason kAllReasons[] = {
+    TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
+    TerminationReason::target_energy, TerminationReason::observer};
+}
+
+std::string_view to_string(TerminationReason reason) {
+  switch (reason) {
+    case TerminationReason::converged: return "converged";
+    case TerminationReason::step_limit: return "step_limit";
+    case TerminationReason::time_limit: return "time_limit";
+    case TerminationReason::target_energy: return "target_energy";
+    case TerminationReason::observer: return "observer";
+  }
+  return "unknown";
+}
+
+TerminationReason termination_reason_from_string(std::string_view text) {
+  for (TerminationReason reason : kAllReasons) {
+    if (to_string(reason) == text) return reason;
+  }
+  throw std::invalid_argument("unknown termination reason '" + std::string(text) + "'");
+}
+
+Rule no_decrease(std::vector<int> steps_per_level, double tolerance) {
+  if (steps_per_level.empty()) {
+    throw std::invalid_argument("no_decrease: steps_per_level is empty");
+  }
+  for (int k : steps_per_level) {
+    if (k < 1) throw std::invalid_argument("no_decrease: every k must be >= 1, got " + std::to_string(k));
+  }
+  if (!std::isfinite(tolerance) || tolerance < 0.0) {
+    throw std::invalid_argument("no_decrease: tolerance must be finite and >= 0");
+  }
+  return [ks = std::move(steps_per_level), tolerance](const Progress& p) -> Verdict {
+    const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
+    const auto k = static_cast<std::size_t>(ks[index]);
+    const auto& history = p.level_energies;
+    if (history.size() < k + 1) return {};
+    const double before = history[history.size() - 1 - k];
+    const double now = history.back();
+    const double margin = tolerance * std::max(1.0, std::abs(before));
+    if (before - now > margin) return {};
+    return {Decision::refine, TerminationReason::converged};
+  };
+}
+
+Rule level_step_limit(long max_steps) {
+  if (max_steps < 1) throw std::invalid_argument("level_step_limit: max_steps must be >= 1");
+  return [max_steps](const Progress& p) -> Verdict {
+    if (p.level_step >= max_steps) return {Decision::refine, TerminationReason::step_limit};
+    return {};
+  };
+}
+
+Rule total_step_limit(long max_steps) {
+  if (max_steps < 1) throw std::invalid_argument("total_step_limit: max_steps must be >= 1");
+  return [max_steps](const Progress& p) -> Verdict {
+    if (p.total_steps >= max_steps) return {Decision::stop, TerminationReason::step_limit};
+    return {};
+  };
+}
+
+Rule time_limit(double seconds) {
+  if (!(seconds > 0.0)) throw std::invalid_argument("time_limit: seconds must be > 0");
+  return [seconds](const Progress& p) -> Verdict {
+    if (p.elapsed_s >= seconds) return {Decision::stop, TerminationReason::time_limit};
+    return {};
+  };
+}
+
+Rule target_energy(double target) {
+  if (!std::isfinite(target)) throw std::invalid_argument("target_energy: target must be finite");
+  return [target](const Progress& p) -> Verdict {
+    if (!p.level_energies.empty() && p.level_energies.back() <= target) {
+      return {Decision::stop, TerminationReason::target_energy};
+    }
+    return {};
+  };
+}
+
+Rules& Rules::add(Rule rule) {
+  if (!rule) throw std::invalid_argument("Rules::add: empty rule");
+  rules_.push_back(std::move(rule));
+  return *this;
+}
+
+Verdict Rules::decide(const Progress& progress) const {
+  Verdict strongest;
+  for (const Rule& rule : rules_) {
+    const Verdict verdict = rule(progress);
+    if (static_cast<int>(verdict.decision) > static_cast<int>(strongest.decision)) strongest = verdict;
+  }
+  return strongest;
+}
+
+}  // namespace c2f

@@ -1,0 +1,219 @@
+#include <catch2/catch.hpp>
+
+#include "c2f/adapters/icm.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/block_hierarchy.hpp"
+#include "c2f/lift/partition_list.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+namespace {
+
+/// A refining sequence of 1 to 4 random partitions, coarsest first.
+std::vector<DensePartition> random_sequence(Rng& rng, std::size_t n) {
+  std::vector<DensePartition> levels{random_partition(rng, n, std::max<std::size_t>(1, n / 8))};
+  const std::size_t extra = std::uniform_int_distribution<std::size_t>(0, 3)(rng);
+  for (std::size_t i = 0; i < extra; ++i) levels.push_back(random_refinement(rng, levels.back(), 2));
+  return levels;
+}
+
+struct Recorded {
+  std::vector<StepEvent> events;
+  std::vector<double> ground_energies;
+};
+
+}  // namespace
+
+TEST_CASE("coarse-to-fine with ICM: energies never increase and the summary is exact",
+          "[driver][property]") {
+  Rng rng(424242);
+  for (int trial = 0; trial < 150; ++trial) {
+    const std::size_t w = std::uniform_int_distribution<std::size_t>(2, 9)(rng);
+    const std::size_t h = std::uniform_int_distribution<std::size_t>(2, 9)(rng);
+    const int num_labels = std::uniform_int_distribution<int>(2, 5)(rng);
+    const PairwiseEnergy energy = trial % 2 == 0 ? random_grid_energy(rng, w, h, num_labels)
+                                                 : random_energy(rng, w * h, num_labels, 3 * w * h);
+    const auto sequence = random_sequence(rng, energy.num_variables());
+    PartitionList levels(sequence);
+    IcmSolver solver(IcmOptions{trial % 3 == 0 ? VisitOrder::random : VisitOrder::sequential,
+                                static_cast<std::uint64_t>(trial), 1e-12});
+    Options options;
+    options.plateau_steps = {std::uniform_int_distribution<int>(1, 3)(rng)};
+    options.max_steps_per_level = 50;
+    Recorded recorded;
+    const Summary summary = coarse_to_fine(energy, levels, solver, options, [&](const StepEvent& event) {
+      recorded.events.push_back(event);
+      recorded.ground_energies.push_back(energy.evaluate(event.ground_labeling()));
+      return ObserverDecision::continue_run;
+    });
+    INFO("trial " << trial);
+    REQUIRE(summary.levels.size() == sequence.size() + 1);
+    CHECK(summary.reason == TerminationReason::converged);
+    for (std::size_t i = 0; i < recorded.events.size(); ++i) {
+      // The observer sees the energy of the ground labeling.
+      CHECK(close_relative(recorded.events[i].energy, recorded.ground_energies[i], 1e-12));
+      if (i > 0) {
+        CHECK(recorded.events[i].energy <=
+              recorded.events[i - 1].energy + 1e-12 * std::max(1.0, std::abs(recorded.events[i - 1].energy)));
+      }
+    }
+    CHECK(recorded.events.back().at_original);
+    CHECK(summary.energy == energy.evaluate(summary.labeling));
+    CHECK(close_relative(summary.energy, recorded.events.back().energy, 1e-12));
+    for (std::size_t level = 0; level < sequence.size(); ++level) {
+      CHECK(summary.levels[level].num_variables == sequence[level].num_groups());
+    }
+    CHECK(summary.levels.back().num_variables == energy.num_variables());
+  }
+}
+
+TEST_CASE("a flat run is a coarse-to-fine run without partitions", "[driver]") {
+  Rng rng(3);
+  const PairwiseEnergy energy = random_grid_energy(rng, 12, 10, 4);
+  PartitionList flat;
+  IcmSolver solver;
+  const Summary summary = coarse_to_fine(energy, flat, solver, Options{});
+  REQUIRE(summary.levels.size() == 1);
+  CHECK(summary.levels[0].num_variables == 120);
+  CHECK(summary.levels[0].steps >= 4);  // plateau of 4 steps without decrease
+  CHECK(summary.energy <= summary.levels[0].start_energy);
+}
+
+TEST_CASE("stopping rules end the run with their reason", "[driver][rules]") {
+  Rng rng(8);
+  const PairwiseEnergy energy = random_grid_energy(rng, 16, 16, 5);
+
+  SECTION("total step limit") {
+    BlockHierarchy levels(GridShape{16, 16}, {8, 4, 2});
+    IcmSolver solver;
+    Options options;
+    options.max_total_steps = 3;
+    options.plateau_steps = {100};
+    const Summary summary = coarse_to_fine(energy, levels, solver, options);
+    CHECK(summary.reason == TerminationReason::step_limit);
+    CHECK(summary.total_steps == 3);
+    CHECK(summary.labeling.size() == energy.num_variables());  // expanded from the lifted level
+    CHECK(summary.energy == energy.evaluate(summary.labeling));
+  }
+  SECTION("per-level step limit refines, and on the original problem ends the run") {
+    BlockHierarchy levels(GridShape{16, 16}, {8, 4});
+    IcmSolver solver;
+    Options options;
+    options.plateau_steps = {};
+    options.max_steps_per_level = 2;
+    const Summary summary = coarse_to_fine(energy, levels, solver, options);
+    REQUIRE(summary.levels.size() == 3);
+    for (const LevelSummary& level : summary.levels) CHECK(level.steps == 2);
+    CHECK(summary.reason == TerminationReason::step_limit);
+  }
+  SECTION("target energy") {
+    BlockHierarchy levels(GridShape{16, 16}, {8, 4});
+    IcmSolver solver;
+    Options options;
+    options.target_energy = 1e300;  // reached by the start labeling
+    const Summary summary = coarse_to_fine(energy, levels, solver, options);
+    CHECK(summary.reason == TerminationReason::target_energy);
+    CHECK(summary.total_steps == 0);
+  }
+  SECTION("time limit") {
+    BlockHierarchy levels(GridShape{16, 16}, {8, 4});
+    IcmSolver solver;
+    Rules rules;
+    rules.add(time_limit(1e-9)).add(no_decrease({4}));
+    const Summary summary = coarse_to_fine(energy, levels, solver, rules);
+    CHECK(summary.reason == TerminationReason::time_limit);
+  }
+  SECTION("observer") {
+    PartitionList flat;
+    IcmSolver solver;
+    long seen = 0;
+    const Summary summary = coarse_to_fine(energy, flat, solver, Options{}, [&](const StepEvent& event) {
+      ++seen;
+      return event.step == 1 ? ObserverDecision::stop : ObserverDecision::continue_run;
+    });
+    CHECK(summary.reason == TerminationReason::observer);
+    CHECK(seen == 2);
+    CHECK(summary.total_steps == 1);
+  }
+}
+
+TEST_CASE("rules compose: the strongest verdict wins", "[driver][rules]") {
+  const std::vector<double> flat_history{5.0, 5.0, 5.0};
+  Progress progress{0.5, 1, false, 2, 10, flat_history};
+  Rules rules;
+  rules.add(no_decrease({2}));
+  CHECK(rules.decide(progress).decision == Decision::refine);
+  rules.add(total_step_limit(10));
+  CHECK(rules.decide(progress).decision == Decision::stop);
+  CHECK(rules.decide(progress).reason == TerminationReason::step_limit);
+
+  const std::vector<double> falling{5.0, 4.0, 3.0};
+  progress.level_energies = falling;
+  progress.total_steps = 1;
+  CHECK(rules.decide(progress).decision == Decision::continue_level);
+
+  // Per-level k: level 0 uses k = 1, deeper levels the last entry (k = 3).
+  Rules per_level;
+  per_level.add(no_decrease({1, 3}));
+  const std::vector<double> one_flat{5.0, 4.0, 4.0};
+  progress.level_energies = one_flat;
+  progress.level = 0;
+  CHECK(per_level.decide(progress).decision == Decision::refine);
+  progress.level = 5;
+  CHECK(per_level.decide(progress).decision == Decision::continue_level);
+}
+
+TEST_CASE("options and rules validate their fields", "[driver][options][validation]") {
+  Options options;
+  CHECK(options.validate().empty());
+  options.plateau_steps = {4, 0};
+  CHECK_THAT(options.validate(), Catch::Contains("plateau_steps[1] must be >= 1"));
+  options.plateau_steps = {};
+  CHECK_THAT(options.validate(), Catch::Contains("no rule ends a level"));
+  options.max_steps_per_level = -1;
+  CHECK_THAT(options.validate(), Catch::Contains("max_steps_per_level must be >= 0"));
+  options = Options{};
+  options.time_limit_seconds = std::nan("");
+  CHECK_THAT(options.validate(), Catch::Contains("time_limit_seconds"));
+  options = Options{};
+  options.target_energy = std::numeric_limits<double>::infinity();
+  CHECK_THAT(options.validate(), Catch::Contains("target_energy must be finite"));
+  CHECK_THROWS_WITH(options.rules(), Catch::Contains("coarse-to-fine options: target_energy"));
+  CHECK_THROWS_WITH(no_decrease({}), Catch::Contains("steps_per_level is empty"));
+  CHECK_THROWS_WITH(time_limit(0.0), Catch::Contains("seconds must be > 0"));
+  CHECK_THROWS_WITH(level_step_limit(0), Catch::Contains("max_steps must be >= 1"));
+
+  Rng rng(1);
+  const PairwiseEnergy energy = random_grid_energy(rng, 4, 4, 2);
+  PartitionList flat;
+  IcmSolver solver;
+  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, Rules{}), Catch::Contains("no rules"));
+  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, options), Catch::Contains("target_energy"));
+}
+
+TEST_CASE("enum names round-trip", "[driver][options]") {
+  for (auto reason : {TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
+                      TerminationReason::target_energy, TerminationReason::observer}) {
+    CHECK(termination_reason_from_string(to_string(reason)) == reason);
+  }
+  CHECK(initial_labeling_from_string("zero") == InitialLabeling::zero);
+  CHECK(initial_labeling_from_string(to_string(InitialLabeling::unary_argmin)) == InitialLabeling::unary_argmin);
+  CHECK_THROWS_WITH(initial_labeling_from_string("random"), Catch::Contains("'random'"));
+  CHECK_THROWS_WITH(termination_reason_from_string("done"), Catch::Contains("'done'"));
+}
+
+TEST_CASE("the driver starts from the chosen initial labeling", "[driver]") {
+  // One variable pair, unaries favour label 2; with zero init and a step limit of 0 steps
+  // reached by a target energy, the run reports the start labeling.
+  const PairwiseEnergy energy(2, 3, {5, 5, 0, 5, 5, 0}, {PairwiseTerm::potts()}, {Edge{0, 1, 1.0, 0}});
+  PartitionList flat;
+  IcmSolver solver;
+  Rules rules;
+  rules.add(target_energy(1e9));
+  CHECK(coarse_to_fine(energy, flat, solver, rules, {}, InitialLabeling::zero).labeling == Labeling{0, 0});
+  PartitionList flat_again;
+  CHECK(coarse_to_fine(energy, flat_again, solver, rules, {}, InitialLabeling::unary_argmin).labeling ==
+        Labeling{2, 2});
+}
