@@ -28,14 +28,16 @@ const PairwiseEnergy& stereo_sized_energy() {
     for (double& u : unaries) u = cost(rng);
     const double weights[] = {0.3125, 0.15625, 0.125};
     std::uniform_int_distribution<int> weight_class(0, 2);
-    return make_grid_energy(kShape, Connectivity::four, kLabels, std::move(unaries), PairwiseTerm::tsgo_step(),
-                            [&](VariableIndex, VariableIndex) { return weights[weight_class(rng)]; });
+    return make_grid_energy(
+        kShape, Connectivity::four, kLabels, std::move(unaries), PairwiseTerm::tsgo_step(),
+        [&](VariableIndex, VariableIndex) { return weights[weight_class(rng)]; });
   }();
   return energy;
 }
 
 std::size_t groups_for(std::int64_t per_mille) {
-  return static_cast<std::size_t>(static_cast<double>(kShape.size()) * static_cast<double>(per_mille) / 1000.0);
+  return static_cast<std::size_t>(static_cast<double>(kShape.size()) *
+                                  static_cast<double>(per_mille) / 1000.0);
 }
 
 DensePartition scattered_partition(std::size_t num_groups, std::uint64_t seed) {
@@ -47,8 +49,9 @@ DensePartition scattered_partition(std::size_t num_groups, std::uint64_t seed) {
 }
 
 DensePartition compact_partition(std::size_t num_groups) {
-  const auto block = static_cast<std::size_t>(
-      std::max(1.0, std::round(std::sqrt(static_cast<double>(kShape.size()) / static_cast<double>(num_groups)))));
+  const auto block = static_cast<std::size_t>(std::max(
+      1.0,
+      std::round(std::sqrt(static_cast<double>(kShape.size()) / static_cast<double>(num_groups)))));
   return block_partition(kShape, block);
 }
 
@@ -66,16 +69,17 @@ BENCHMARK(BM_Evaluate)->Unit(benchmark::kMillisecond);
 void BM_Reduce(benchmark::State& state) {
   const PairwiseEnergy& energy = stereo_sized_energy();
   const bool scattered = state.range(1) == 1;
-  const DensePartition partition =
-      scattered ? scattered_partition(groups_for(state.range(0)), 3) : compact_partition(groups_for(state.range(0)));
+  const DensePartition partition = scattered ? scattered_partition(groups_for(state.range(0)), 3)
+                                             : compact_partition(groups_for(state.range(0)));
   std::size_t edges = 0;
   for (auto _ : state) {
     const PairwiseEnergy reduced = reduce(energy, partition);
     edges = reduced.edges().size();
     benchmark::DoNotOptimize(edges);
   }
-  state.SetLabel(std::string(scattered ? "scattered" : "blocks") + ", " + std::to_string(partition.num_groups()) +
-                 " groups, " + std::to_string(edges) + " merged edges");
+  state.SetLabel(std::string(scattered ? "scattered" : "blocks") + ", " +
+                 std::to_string(partition.num_groups()) + " groups, " + std::to_string(edges) +
+                 " merged edges");
 }
 BENCHMARK(BM_Reduce)
     ->ArgsProduct({{1, 10, 100}, {0, 1}})
@@ -88,13 +92,15 @@ void BM_TransferLabels(benchmark::State& state) {
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<std::int64_t> part(0, 9);
   std::vector<std::int64_t> ids(kShape.size());
-  for (std::size_t v = 0; v < ids.size(); ++v) ids[v] = static_cast<std::int64_t>(coarse.group_of(v)) * 10 + part(rng);
+  for (std::size_t v = 0; v < ids.size(); ++v)
+    ids[v] = static_cast<std::int64_t>(coarse.group_of(v)) * 10 + part(rng);
   const DensePartition fine = DensePartition::from_ids(ids);
   std::uniform_int_distribution<Label> label(0, kLabels - 1);
   Labeling y(coarse.num_groups());
   for (Label& l : y) l = label(rng);
   for (auto _ : state) benchmark::DoNotOptimize(transfer_labels(y, coarse, fine));
-  state.SetLabel(std::to_string(coarse.num_groups()) + " -> " + std::to_string(fine.num_groups()) + " groups");
+  state.SetLabel(std::to_string(coarse.num_groups()) + " -> " + std::to_string(fine.num_groups()) +
+                 " groups");
 }
 BENCHMARK(BM_TransferLabels)->Unit(benchmark::kMillisecond);
 

@@ -47,7 +47,8 @@ Summary run(const char* name, const examples::SyntheticProblem& problem, Provide
   });
   IcmSolver solver;
   Summary summary = coarse_to_fine(problem.energy, levels, solver, options, std::ref(writer));
-  std::cout << "# trace: " << name << "\n" << trace.str() << "# summary: " << name << "\n"
+  std::cout << "# trace: " << name << "\n"
+            << trace.str() << "# summary: " << name << "\n"
             << summary.report() << "\n";
   if (!trace_path.empty()) {
     std::ofstream file = open_trace_file(trace_path);
@@ -69,19 +70,25 @@ int main(int argc, char** argv) {
       "c2f-synthetic: restores a noisy piecewise-constant label image with ICM, flat and coarse\n"
       "to fine over nested pixel blocks, and prints both traces (time_s,level,step,energy,\n"
       "num_vars,error; error = fraction of wrong pixels).\n\nOptions");
-  description.add_options()
-      ("help,h", "show this help")
-      ("width", po::value(&spec.shape.width)->default_value(spec.shape.width), "image width")
-      ("height", po::value(&spec.shape.height)->default_value(spec.shape.height), "image height")
-      ("labels", po::value(&spec.num_labels)->default_value(spec.num_labels), "number of labels (>= 2)")
-      ("shapes", po::value(&spec.num_shapes)->default_value(spec.num_shapes), "rectangles and discs in the image")
-      ("noise", po::value(&spec.noise_sigma)->default_value(spec.noise_sigma), "noise sigma, in labels")
-      ("smoothness", po::value(&spec.smoothness)->default_value(spec.smoothness), "weight of the truncated-linear term")
-      ("seed", po::value(&spec.seed)->default_value(spec.seed), "random seed of the problem")
-      ("blocks", po::value(&blocks)->default_value(blocks), "block sizes of the coarse levels, coarsest first; each divides the previous")
-      ("plateau", po::value(&plateau)->default_value(plateau), "refine after this many sweeps without decrease")
-      ("time-limit", po::value(&options.time_limit_seconds)->default_value(0.0), "seconds per run (0: none)")
-      ("out,o", po::value(&out_dir), "directory for trace-flat.csv, trace-c2f.csv and PGM images");
+  description.add_options()("help,h", "show this help")(
+      "width", po::value(&spec.shape.width)->default_value(spec.shape.width), "image width")(
+      "height", po::value(&spec.shape.height)->default_value(spec.shape.height), "image height")(
+      "labels", po::value(&spec.num_labels)->default_value(spec.num_labels),
+      "number of labels (>= 2)")("shapes",
+                                 po::value(&spec.num_shapes)->default_value(spec.num_shapes),
+                                 "rectangles and discs in the image")(
+      "noise", po::value(&spec.noise_sigma)->default_value(spec.noise_sigma),
+      "noise sigma, in labels")("smoothness",
+                                po::value(&spec.smoothness)->default_value(spec.smoothness),
+                                "weight of the truncated-linear term")(
+      "seed", po::value(&spec.seed)->default_value(spec.seed), "random seed of the problem")(
+      "blocks", po::value(&blocks)->default_value(blocks),
+      "block sizes of the coarse levels, coarsest first; each divides the previous")(
+      "plateau", po::value(&plateau)->default_value(plateau),
+      "refine after this many sweeps without decrease")(
+      "time-limit", po::value(&options.time_limit_seconds)->default_value(0.0),
+      "seconds per run (0: none)")("out,o", po::value(&out_dir),
+                                   "directory for trace-flat.csv, trace-c2f.csv and PGM images");
   try {
     po::variables_map vm;
     po::store(po::parse_command_line(argc, argv, description), vm);
@@ -117,7 +124,8 @@ int main(int argc, char** argv) {
               << c2f_summary.seconds << " s\n";
     if (!out_dir.empty()) {
       examples::write_label_pgm(path("truth.pgm"), problem.truth, spec.shape, spec.num_labels);
-      examples::write_label_pgm(path("flat.pgm"), flat_summary.labeling, spec.shape, spec.num_labels);
+      examples::write_label_pgm(path("flat.pgm"), flat_summary.labeling, spec.shape,
+                                spec.num_labels);
       examples::write_label_pgm(path("c2f.pgm"), c2f_summary.labeling, spec.shape, spec.num_labels);
       std::cerr << "c2f-synthetic: wrote traces and images to " << out_dir << "\n";
     }

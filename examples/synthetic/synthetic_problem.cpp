@@ -36,7 +36,8 @@ SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
       for (std::size_t x = 0; x < w; ++x) {
         const double dx = (static_cast<double>(x) - cx) / rx;
         const double dy = (static_cast<double>(y) - cy) / ry;
-        const bool inside = disc ? dx * dx + dy * dy <= 1.0 : std::abs(dx) <= 1.0 && std::abs(dy) <= 1.0;
+        const bool inside =
+            disc ? dx * dx + dy * dy <= 1.0 : std::abs(dx) <= 1.0 && std::abs(dy) <= 1.0;
         if (inside) truth[y * w + x] = l;
       }
     }
@@ -49,13 +50,14 @@ SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
     const double observed = truth[v] + noise(rng);
     for (std::size_t l = 0; l < L; ++l) {
       const double d = static_cast<double>(l) - observed;
-      unaries[v * L + l] = std::min(d * d, cap) / std::max(1.0, spec.noise_sigma * spec.noise_sigma);
+      unaries[v * L + l] =
+          std::min(d * d, cap) / std::max(1.0, spec.noise_sigma * spec.noise_sigma);
     }
   }
-  PairwiseEnergy energy = make_grid_energy(
-      spec.shape, Connectivity::four, spec.num_labels, std::move(unaries),
-      PairwiseTerm::truncated_linear(spec.truncation),
-      [&](VariableIndex, VariableIndex) { return spec.smoothness; });
+  PairwiseEnergy energy =
+      make_grid_energy(spec.shape, Connectivity::four, spec.num_labels, std::move(unaries),
+                       PairwiseTerm::truncated_linear(spec.truncation),
+                       [&](VariableIndex, VariableIndex) { return spec.smoothness; });
   return {std::move(truth), std::move(energy)};
 }
 

@@ -15,10 +15,10 @@ namespace c2f::examples {
 struct SyntheticSpec {
   GridShape shape{160, 120};
   int num_labels = 16;
-  int num_shapes = 12;        ///< rectangles and discs painted over the background
-  double noise_sigma = 3.0;   ///< in label units
-  double smoothness = 4.0;    ///< weight of the truncated-linear term
-  double truncation = 2.0;    ///< of the truncated-linear term
+  int num_shapes = 12;       ///< rectangles and discs painted over the background
+  double noise_sigma = 3.0;  ///< in label units
+  double smoothness = 4.0;   ///< weight of the truncated-linear term
+  double truncation = 2.0;   ///< of the truncated-linear term
   std::uint64_t seed = 7;
 };
 

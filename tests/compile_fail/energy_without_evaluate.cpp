@@ -7,10 +7,14 @@ struct IncompleteEnergy {
   int num_labels() const { return 2; }
   double unary(std::size_t, c2f::Label l) const { return l; }
 #ifdef C2F_COMPILE_FAIL_CONTROL
-  double evaluate(std::span<const c2f::Label>) const { return 0.0; }
+  double evaluate(std::span<const c2f::Label>) const {
+    return 0.0;
+  }
 #endif
 };
 
 int main() {
-  return static_cast<int>(c2f::initial_labeling(IncompleteEnergy{}, c2f::InitialLabeling::zero).size()) - 2;
+  return static_cast<int>(
+             c2f::initial_labeling(IncompleteEnergy{}, c2f::InitialLabeling::zero).size()) -
+         2;
 }

@@ -4,12 +4,20 @@
 #include "c2f/c2f.hpp"
 
 struct IncompleteSolver {
-  void bind(const c2f::PairwiseEnergy&, std::span<const c2f::Label> start) { x.assign(start.begin(), start.end()); }
+  void bind(const c2f::PairwiseEnergy&, std::span<const c2f::Label> start) {
+    x.assign(start.begin(), start.end());
+  }
 #ifdef C2F_COMPILE_FAIL_CONTROL
-  double step() { return 0.0; }
+  double step() {
+    return 0.0;
+  }
 #endif
-  double energy() const { return 0.0; }
-  std::span<const c2f::Label> labeling() const { return x; }
+  double energy() const {
+    return 0.0;
+  }
+  std::span<const c2f::Label> labeling() const {
+    return x;
+  }
   c2f::Labeling x;
 };
 
@@ -17,5 +25,7 @@ int main() {
   const c2f::PairwiseEnergy energy(1, 2, {0.0, 1.0}, {}, {});
   c2f::PartitionList flat;
   IncompleteSolver solver;
-  return static_cast<int>(c2f::coarse_to_fine(energy, flat, solver, c2f::Options{}).labeling.size()) - 1;
+  return static_cast<int>(
+             c2f::coarse_to_fine(energy, flat, solver, c2f::Options{}).labeling.size()) -
+         1;
 }

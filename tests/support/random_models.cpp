@@ -14,9 +14,12 @@ PairwiseTerm random_term(Rng& rng, int num_labels) {
   std::uniform_int_distribution<int> kind(0, 4);
   std::uniform_real_distribution<double> cost(-1.0, 2.0);
   switch (kind(rng)) {
-    case 0: return PairwiseTerm::potts();
-    case 1: return PairwiseTerm::truncated_linear(std::uniform_real_distribution<double>(0.5, 3.0)(rng));
-    case 2: return PairwiseTerm::tsgo_step();
+    case 0:
+      return PairwiseTerm::potts();
+    case 1:
+      return PairwiseTerm::truncated_linear(std::uniform_real_distribution<double>(0.5, 3.0)(rng));
+    case 2:
+      return PairwiseTerm::tsgo_step();
     case 3: {  // symmetric table with a non-zero diagonal
       std::vector<double> table(static_cast<std::size_t>(num_labels * num_labels));
       for (int a = 0; a < num_labels; ++a) {
@@ -49,7 +52,8 @@ PairwiseEnergy random_energy(Rng& rng, std::size_t num_variables, int num_labels
   std::vector<PairwiseTerm> terms;
   const int num_terms = std::uniform_int_distribution<int>(1, 3)(rng);
   for (int t = 0; t < num_terms; ++t) terms.push_back(random_term(rng, num_labels));
-  std::uniform_int_distribution<VariableIndex> variable(0, static_cast<VariableIndex>(num_variables - 1));
+  std::uniform_int_distribution<VariableIndex> variable(
+      0, static_cast<VariableIndex>(num_variables - 1));
   std::uniform_real_distribution<double> weight(0.0, 3.0);
   std::uniform_int_distribution<std::uint32_t> term(0, static_cast<std::uint32_t>(num_terms - 1));
   std::vector<Edge> edges;
@@ -65,9 +69,9 @@ PairwiseEnergy random_energy(Rng& rng, std::size_t num_variables, int num_labels
 PairwiseEnergy random_grid_energy(Rng& rng, std::size_t width, std::size_t height, int num_labels) {
   std::uniform_real_distribution<double> weight(0.0, 3.0);
   const GridShape shape{width, height};
-  return make_grid_energy(shape, Connectivity::four, num_labels,
-                          random_unaries(rng, shape.size(), num_labels), random_term(rng, num_labels),
-                          [&](VariableIndex, VariableIndex) { return weight(rng); });
+  return make_grid_energy(
+      shape, Connectivity::four, num_labels, random_unaries(rng, shape.size(), num_labels),
+      random_term(rng, num_labels), [&](VariableIndex, VariableIndex) { return weight(rng); });
 }
 
 DensePartition random_partition(Rng& rng, std::size_t num_variables, std::size_t max_groups) {
@@ -82,7 +86,8 @@ DensePartition random_refinement(Rng& rng, const DensePartition& coarse, std::si
   std::uniform_int_distribution<std::int64_t> part(0, static_cast<std::int64_t>(max_split) - 1);
   std::vector<std::int64_t> ids(coarse.num_variables());
   for (std::size_t v = 0; v < ids.size(); ++v) {
-    ids[v] = static_cast<std::int64_t>(coarse.group_of(v)) * static_cast<std::int64_t>(max_split) + part(rng);
+    ids[v] = static_cast<std::int64_t>(coarse.group_of(v)) * static_cast<std::int64_t>(max_split) +
+             part(rng);
   }
   return DensePartition::from_ids(ids);
 }

@@ -38,9 +38,13 @@ struct Chain {
 
 template <>
 struct c2f::energy_traits<foreign::Chain> {
-  static std::size_t num_variables(const foreign::Chain& c) { return static_cast<std::size_t>(c.size); }
+  static std::size_t num_variables(const foreign::Chain& c) {
+    return static_cast<std::size_t>(c.size);
+  }
   static int num_labels(const foreign::Chain&) { return 2; }
-  static double unary(const foreign::Chain& c, std::size_t v, Label l) { return c.cost(static_cast<int>(v), l); }
+  static double unary(const foreign::Chain& c, std::size_t v, Label l) {
+    return c.cost(static_cast<int>(v), l);
+  }
   static double evaluate(const foreign::Chain& c, std::span<const Label> x) {
     double total = 0.0;
     for (std::size_t v = 0; v < x.size(); ++v) total += c.cost(static_cast<int>(v), x[v]);

@@ -2,10 +2,10 @@
 
 #include <vector>
 
+#include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/partition_list.hpp"
-#include "c2f/core/pairwise_energy.hpp"
 
 using namespace c2f;
 
@@ -14,9 +14,12 @@ TEST_CASE("partitions list their groups' members in ascending order", "[lift][pa
   CHECK(p.num_variables() == 5);
   CHECK(p.num_groups() == 3);
   CHECK(p.group_of(2) == 1);
-  CHECK(std::vector<VariableIndex>(p.members(0).begin(), p.members(0).end()) == std::vector<VariableIndex>{1, 4});
-  CHECK(std::vector<VariableIndex>(p.members(1).begin(), p.members(1).end()) == std::vector<VariableIndex>{0, 2});
-  CHECK(std::vector<VariableIndex>(p.members(2).begin(), p.members(2).end()) == std::vector<VariableIndex>{3});
+  CHECK(std::vector<VariableIndex>(p.members(0).begin(), p.members(0).end()) ==
+        std::vector<VariableIndex>{1, 4});
+  CHECK(std::vector<VariableIndex>(p.members(1).begin(), p.members(1).end()) ==
+        std::vector<VariableIndex>{0, 2});
+  CHECK(std::vector<VariableIndex>(p.members(2).begin(), p.members(2).end()) ==
+        std::vector<VariableIndex>{3});
   CHECK_FALSE(p.is_identity());
   CHECK(DensePartition::identity(4).is_identity());
   CHECK(DensePartition::single_group(4).num_groups() == 1);
@@ -31,7 +34,8 @@ TEST_CASE("from_ids numbers groups by first occurrence", "[lift][partition]") {
 }
 
 TEST_CASE("partition construction validates group ids", "[lift][partition][validation]") {
-  CHECK_THROWS_WITH(DensePartition({0, 3}, 2), Catch::Contains("group_of[1] = 3 is out of range, num_groups = 2"));
+  CHECK_THROWS_WITH(DensePartition({0, 3}, 2),
+                    Catch::Contains("group_of[1] = 3 is out of range, num_groups = 2"));
   CHECK_THROWS_WITH(DensePartition({0, 2}, 3), Catch::Contains("group 1 has no members"));
 }
 
@@ -69,18 +73,23 @@ TEST_CASE("block partitions nest when each size divides the previous", "[lift][b
   CHECK_FALSE(hierarchy.next(energy).has_value());
   CHECK_FALSE(hierarchy.next(energy).has_value());
 
-  CHECK_THROWS_WITH(BlockHierarchy(shape, {8, 3}), Catch::Contains("block size 3 does not divide the previous size 8"));
+  CHECK_THROWS_WITH(BlockHierarchy(shape, {8, 3}),
+                    Catch::Contains("block size 3 does not divide the previous size 8"));
   CHECK_THROWS_WITH(BlockHierarchy(shape, {0}), Catch::Contains("block size 0 is 0"));
   BlockHierarchy wrong_grid(GridShape{5, 5}, {2});
-  CHECK_THROWS_WITH(wrong_grid.next(energy), Catch::Contains("the energy has 70 variables, the 5x5 grid has 25 pixels"));
+  CHECK_THROWS_WITH(wrong_grid.next(energy),
+                    Catch::Contains("the energy has 70 variables, the 5x5 grid has 25 pixels"));
 }
 
 TEST_CASE("partition lists must refine and fit the energy", "[lift][partition][validation]") {
   const DensePartition coarse({0, 0, 1, 1}, 2);
   const DensePartition crossing({0, 1, 1, 2}, 3);
-  CHECK_THROWS_WITH(PartitionList({coarse, crossing}), Catch::Contains("partition 1 does not refine partition 0"));
-  CHECK_THROWS_WITH(PartitionList({coarse, DensePartition::identity(5)}), Catch::Contains("partition 1 covers 5 variables"));
+  CHECK_THROWS_WITH(PartitionList({coarse, crossing}),
+                    Catch::Contains("partition 1 does not refine partition 0"));
+  CHECK_THROWS_WITH(PartitionList({coarse, DensePartition::identity(5)}),
+                    Catch::Contains("partition 1 covers 5 variables"));
   PartitionList list({coarse});
   const PairwiseEnergy five(5, 2, std::vector<double>(10, 0.0), {}, {});
-  CHECK_THROWS_WITH(list.next(five), Catch::Contains("partition 0 covers 4 variables, the energy has 5"));
+  CHECK_THROWS_WITH(list.next(five),
+                    Catch::Contains("partition 0 covers 4 variables, the energy has 5"));
 }

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+
 #include "c2f/adapters/icm.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
@@ -15,7 +18,8 @@ namespace {
 std::vector<DensePartition> random_sequence(Rng& rng, std::size_t n) {
   std::vector<DensePartition> levels{random_partition(rng, n, std::max<std::size_t>(1, n / 8))};
   const std::size_t extra = std::uniform_int_distribution<std::size_t>(0, 3)(rng);
-  for (std::size_t i = 0; i < extra; ++i) levels.push_back(random_refinement(rng, levels.back(), 2));
+  for (std::size_t i = 0; i < extra; ++i)
+    levels.push_back(random_refinement(rng, levels.back(), 2));
   return levels;
 }
 
@@ -43,11 +47,12 @@ TEST_CASE("coarse-to-fine with ICM: energies never increase and the summary is e
     options.plateau_steps = {std::uniform_int_distribution<int>(1, 3)(rng)};
     options.max_steps_per_level = 50;
     Recorded recorded;
-    const Summary summary = coarse_to_fine(energy, levels, solver, options, [&](const StepEvent& event) {
-      recorded.events.push_back(event);
-      recorded.ground_energies.push_back(energy.evaluate(event.ground_labeling()));
-      return ObserverDecision::continue_run;
-    });
+    const Summary summary =
+        coarse_to_fine(energy, levels, solver, options, [&](const StepEvent& event) {
+          recorded.events.push_back(event);
+          recorded.ground_energies.push_back(energy.evaluate(event.ground_labeling()));
+          return ObserverDecision::continue_run;
+        });
     INFO("trial " << trial);
     REQUIRE(summary.levels.size() == sequence.size() + 1);
     CHECK(summary.reason == TerminationReason::converged);
@@ -56,7 +61,8 @@ TEST_CASE("coarse-to-fine with ICM: energies never increase and the summary is e
       CHECK(close_relative(recorded.events[i].energy, recorded.ground_energies[i], 1e-12));
       if (i > 0) {
         CHECK(recorded.events[i].energy <=
-              recorded.events[i - 1].energy + 1e-12 * std::max(1.0, std::abs(recorded.events[i - 1].energy)));
+              recorded.events[i - 1].energy +
+                  1e-12 * std::max(1.0, std::abs(recorded.events[i - 1].energy)));
       }
     }
     CHECK(recorded.events.back().at_original);
@@ -129,10 +135,11 @@ TEST_CASE("stopping rules end the run with their reason", "[driver][rules]") {
     PartitionList flat;
     IcmSolver solver;
     long seen = 0;
-    const Summary summary = coarse_to_fine(energy, flat, solver, Options{}, [&](const StepEvent& event) {
-      ++seen;
-      return event.step == 1 ? ObserverDecision::stop : ObserverDecision::continue_run;
-    });
+    const Summary summary =
+        coarse_to_fine(energy, flat, solver, Options{}, [&](const StepEvent& event) {
+          ++seen;
+          return event.step == 1 ? ObserverDecision::stop : ObserverDecision::continue_run;
+        });
     CHECK(summary.reason == TerminationReason::observer);
     CHECK(seen == 2);
     CHECK(summary.total_steps == 1);
@@ -184,22 +191,37 @@ TEST_CASE("options and rules validate their fields", "[driver][options][validati
   CHECK_THROWS_WITH(no_decrease({}), Catch::Contains("steps_per_level is empty"));
   CHECK_THROWS_WITH(time_limit(0.0), Catch::Contains("seconds must be > 0"));
   CHECK_THROWS_WITH(level_step_limit(0), Catch::Contains("max_steps must be >= 1"));
+  CHECK_THROWS_WITH(total_step_limit(-2),
+                    Catch::Contains("total_step_limit: max_steps must be >= 1"));
+  CHECK_THROWS_WITH(no_decrease({2, 0}), Catch::Contains("every k must be >= 1, got 0"));
+  CHECK_THROWS_WITH(no_decrease({2}, -1.0), Catch::Contains("tolerance must be finite and >= 0"));
+  CHECK_THROWS_WITH(target_energy(std::nan("")), Catch::Contains("target must be finite"));
+  CHECK_THROWS_WITH(Rules{}.add(Rule{}), Catch::Contains("empty rule"));
 
   Rng rng(1);
   const PairwiseEnergy energy = random_grid_energy(rng, 4, 4, 2);
   PartitionList flat;
   IcmSolver solver;
   CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, Rules{}), Catch::Contains("no rules"));
-  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, options), Catch::Contains("target_energy"));
+  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, options),
+                    Catch::Contains("target_energy"));
+  options = Options{};
+  options.plateau_tolerance = -0.5;
+  CHECK_THAT(options.validate(), Catch::Contains("plateau_tolerance must be finite and >= 0"));
+  options = Options{};
+  options.max_total_steps = -1;
+  CHECK_THAT(options.validate(), Catch::Contains("max_total_steps must be >= 0"));
 }
 
 TEST_CASE("enum names round-trip", "[driver][options]") {
-  for (auto reason : {TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
-                      TerminationReason::target_energy, TerminationReason::observer}) {
+  for (auto reason :
+       {TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
+        TerminationReason::target_energy, TerminationReason::observer}) {
     CHECK(termination_reason_from_string(to_string(reason)) == reason);
   }
   CHECK(initial_labeling_from_string("zero") == InitialLabeling::zero);
-  CHECK(initial_labeling_from_string(to_string(InitialLabeling::unary_argmin)) == InitialLabeling::unary_argmin);
+  CHECK(initial_labeling_from_string(to_string(InitialLabeling::unary_argmin)) ==
+        InitialLabeling::unary_argmin);
   CHECK_THROWS_WITH(initial_labeling_from_string("random"), Catch::Contains("'random'"));
   CHECK_THROWS_WITH(termination_reason_from_string("done"), Catch::Contains("'done'"));
 }
@@ -207,13 +229,15 @@ TEST_CASE("enum names round-trip", "[driver][options]") {
 TEST_CASE("the driver starts from the chosen initial labeling", "[driver]") {
   // One variable pair, unaries favour label 2; with zero init and a step limit of 0 steps
   // reached by a target energy, the run reports the start labeling.
-  const PairwiseEnergy energy(2, 3, {5, 5, 0, 5, 5, 0}, {PairwiseTerm::potts()}, {Edge{0, 1, 1.0, 0}});
+  const PairwiseEnergy energy(2, 3, {5, 5, 0, 5, 5, 0}, {PairwiseTerm::potts()},
+                              {Edge{0, 1, 1.0, 0}});
   PartitionList flat;
   IcmSolver solver;
   Rules rules;
   rules.add(target_energy(1e9));
-  CHECK(coarse_to_fine(energy, flat, solver, rules, {}, InitialLabeling::zero).labeling == Labeling{0, 0});
+  CHECK(coarse_to_fine(energy, flat, solver, rules, {}, InitialLabeling::zero).labeling ==
+        Labeling{0, 0});
   PartitionList flat_again;
-  CHECK(coarse_to_fine(energy, flat_again, solver, rules, {}, InitialLabeling::unary_argmin).labeling ==
-        Labeling{2, 2});
+  CHECK(coarse_to_fine(energy, flat_again, solver, rules, {}, InitialLabeling::unary_argmin)
+            .labeling == Labeling{2, 2});
 }

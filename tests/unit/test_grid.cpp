@@ -18,15 +18,16 @@ TEST_CASE("grid neighbour pairs cover 4- and 8-neighbourhoods in raster order", 
   CHECK(eight[5] == std::pair<VariableIndex, VariableIndex>{1, 6});
   CHECK(eight[6] == std::pair<VariableIndex, VariableIndex>{1, 4});
   for (const auto& [u, v] : eight) CHECK(u < v);
-  CHECK_THROWS_WITH(grid_neighbour_pairs({0, 3}, Connectivity::four), Catch::Contains("width and height must be >= 1"));
+  CHECK_THROWS_WITH(grid_neighbour_pairs({0, 3}, Connectivity::four),
+                    Catch::Contains("width and height must be >= 1"));
 }
 
 TEST_CASE("grid energies carry per-edge weights", "[core][grid]") {
   const GridShape shape{3, 2};
   const auto pairs = grid_neighbour_pairs(shape, Connectivity::four);
-  const PairwiseEnergy e = make_grid_energy(shape, Connectivity::four, 2, std::vector<double>(12, 0.0),
-                                            PairwiseTerm::potts(),
-                                            [](VariableIndex u, VariableIndex v) { return u + 10.0 * v; });
+  const PairwiseEnergy e = make_grid_energy(
+      shape, Connectivity::four, 2, std::vector<double>(12, 0.0), PairwiseTerm::potts(),
+      [](VariableIndex u, VariableIndex v) { return u + 10.0 * v; });
   REQUIRE(e.edges().size() == pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     CHECK(e.edges()[i].u == pairs[i].first);

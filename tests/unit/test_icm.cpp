@@ -6,7 +6,8 @@
 using namespace c2f;
 using namespace c2f::test;
 
-TEST_CASE("ICM never increases the energy and stops in a single-site local minimum", "[icm][property]") {
+TEST_CASE("ICM never increases the energy and stops in a single-site local minimum",
+          "[icm][property]") {
   Rng rng(17);
   for (int trial = 0; trial < 100; ++trial) {
     const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 25)(rng);
@@ -38,7 +39,8 @@ TEST_CASE("ICM never increases the energy and stops in a single-site local minim
   }
 }
 
-TEST_CASE("ICM reaches the brute-force optimum on a chain with dominant unaries", "[icm][brute-force]") {
+TEST_CASE("ICM reaches the brute-force optimum on a chain with dominant unaries",
+          "[icm][brute-force]") {
   // Unaries dominate the Potts weights, so the optimum is the unary argmin and ICM finds it.
   const PairwiseEnergy energy(4, 3, {0, 9, 9, 9, 0, 9, 9, 9, 0, 0, 9, 9}, {PairwiseTerm::potts()},
                               {Edge{0, 1, 1.0, 0}, Edge{1, 2, 1.0, 0}, Edge{2, 3, 1.0, 0}});
@@ -53,9 +55,12 @@ TEST_CASE("ICM validates its inputs", "[icm][validation]") {
   const PairwiseEnergy energy(2, 2, {0, 1, 1, 0}, {PairwiseTerm::potts()}, {Edge{0, 1, 1.0, 0}});
   IcmSolver solver;
   CHECK_THROWS_WITH(solver.step(), Catch::Contains("call bind() first"));
-  CHECK_THROWS_WITH(solver.bind(energy, Labeling{0}), Catch::Contains("IcmSolver::bind: start: has 1 entries"));
-  CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 5}), Catch::Contains("label 5 of variable 1 is out of range"));
-  CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::sequential, 1, -1.0}), Catch::Contains("min_improvement"));
+  CHECK_THROWS_WITH(solver.bind(energy, Labeling{0}),
+                    Catch::Contains("IcmSolver::bind: start: has 1 entries"));
+  CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 5}),
+                    Catch::Contains("label 5 of variable 1 is out of range"));
+  CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::sequential, 1, -1.0}),
+                    Catch::Contains("min_improvement"));
   CHECK(visit_order_from_string("random") == VisitOrder::random);
   CHECK_THROWS_WITH(visit_order_from_string("spiral"), Catch::Contains("'spiral'"));
 }

@@ -31,8 +31,10 @@ TEST_CASE("evaluate sums unaries and weighted pairwise costs", "[core][energy]")
 
 TEST_CASE("evaluate rejects labelings that do not fit the energy", "[core][energy][validation]") {
   const PairwiseEnergy e = chain();
-  CHECK_THROWS_WITH(e.evaluate(Labeling{0, 0}), Catch::Contains("labeling: has 2 entries, expected num_variables = 3"));
-  CHECK_THROWS_WITH(e.evaluate(Labeling{0, 2, 0}), Catch::Contains("label 2 of variable 1 is out of range [0, 2)"));
+  CHECK_THROWS_WITH(e.evaluate(Labeling{0, 0}),
+                    Catch::Contains("labeling: has 2 entries, expected num_variables = 3"));
+  CHECK_THROWS_WITH(e.evaluate(Labeling{0, 2, 0}),
+                    Catch::Contains("label 2 of variable 1 is out of range [0, 2)"));
   CHECK_THROWS_WITH(e.evaluate(Labeling{-1, 0, 0}), Catch::Contains("label -1 of variable 0"));
 }
 
@@ -40,21 +42,25 @@ TEST_CASE("PairwiseEnergy validates every field", "[core][energy][validation]") 
   const auto inf = std::numeric_limits<double>::infinity();
   const auto nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<PairwiseTerm> potts{PairwiseTerm::potts()};
-  CHECK_THROWS_WITH(PairwiseEnergy(2, 0, {}, potts, {}), Catch::Contains("num_labels must be >= 1"));
-  CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0}, potts, {}),
-                    Catch::Contains("unaries has 3 entries, expected num_variables * num_labels = 4"));
+  CHECK_THROWS_WITH(PairwiseEnergy(2, 0, {}, potts, {}),
+                    Catch::Contains("num_labels must be >= 1"));
+  CHECK_THROWS_WITH(
+      PairwiseEnergy(2, 2, {0, 0, 0}, potts, {}),
+      Catch::Contains("unaries has 3 entries, expected num_variables * num_labels = 4"));
   CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, nan, 0}, potts, {}),
                     Catch::Contains("unaries: cost of label 0 at variable 1 is not finite"));
   CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, inf, 0, 0}, potts, {}),
                     Catch::Contains("cost of label 1 at variable 0 is not finite"));
   CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0, 0}, potts, {Edge{0, 2, 1.0, 0}}),
                     Catch::Contains("edges[0]: endpoint (0, 2) out of range"));
-  CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0, 0}, potts, {Edge{0, 1, 1.0, 0}, Edge{1, 1, 1.0, 0}}),
-                    Catch::Contains("edges[1]: self-loop at variable 1"));
+  CHECK_THROWS_WITH(
+      PairwiseEnergy(2, 2, {0, 0, 0, 0}, potts, {Edge{0, 1, 1.0, 0}, Edge{1, 1, 1.0, 0}}),
+      Catch::Contains("edges[1]: self-loop at variable 1"));
   CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0, 0}, potts, {Edge{0, 1, nan, 0}}),
                     Catch::Contains("edges[0]: weight is not finite"));
   CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0, 0}, potts, {Edge{0, 1, 1.0, 1}}),
                     Catch::Contains("edges[0]: term index 1 out of range, there are 1 terms"));
-  CHECK_THROWS_WITH(PairwiseEnergy(2, 2, {0, 0, 0, 0}, {PairwiseTerm::table(3, std::vector<double>(9, 0.0))}, {}),
-                    Catch::Contains("terms[0]: table term has 3 labels, the energy has 2"));
+  CHECK_THROWS_WITH(
+      PairwiseEnergy(2, 2, {0, 0, 0, 0}, {PairwiseTerm::table(3, std::vector<double>(9, 0.0))}, {}),
+      Catch::Contains("terms[0]: table term has 3 labels, the energy has 2"));
 }

@@ -35,19 +35,24 @@ TEST_CASE("pairwise terms have the documented costs", "[core][term]") {
 }
 
 TEST_CASE("term kinds round-trip through their names", "[core][term]") {
-  for (TermKind kind : {TermKind::potts, TermKind::truncated_linear, TermKind::tsgo_step, TermKind::table}) {
+  for (TermKind kind :
+       {TermKind::potts, TermKind::truncated_linear, TermKind::tsgo_step, TermKind::table}) {
     CHECK(term_kind_from_string(to_string(kind)) == kind);
   }
-  CHECK_THROWS_WITH(term_kind_from_string("linear"), Catch::Contains("unknown pairwise term kind 'linear'"));
+  CHECK_THROWS_WITH(term_kind_from_string("linear"),
+                    Catch::Contains("unknown pairwise term kind 'linear'"));
 }
 
-TEST_CASE("invalid terms are rejected with a message naming the problem", "[core][term][validation]") {
+TEST_CASE("invalid terms are rejected with a message naming the problem",
+          "[core][term][validation]") {
   CHECK_THROWS_WITH(PairwiseTerm::truncated_linear(0.0), Catch::Contains("truncation"));
   CHECK_THROWS_WITH(PairwiseTerm::truncated_linear(std::nan("")), Catch::Contains("truncation"));
-  CHECK_THROWS_WITH(PairwiseTerm::table(2, {0.0, 1.0, 2.0}), Catch::Contains("expected num_labels^2 = 4"));
+  CHECK_THROWS_WITH(PairwiseTerm::table(2, {0.0, 1.0, 2.0}),
+                    Catch::Contains("expected num_labels^2 = 4"));
   CHECK_THROWS_WITH(PairwiseTerm::table(0, {}), Catch::Contains("num_labels must be >= 1"));
-  CHECK_THROWS_WITH(PairwiseTerm::table(2, {0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0}),
-                    Catch::Contains("cost(0, 1) is not finite"));
+  CHECK_THROWS_WITH(
+      PairwiseTerm::table(2, {0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0}),
+      Catch::Contains("cost(0, 1) is not finite"));
   CHECK_THROWS_WITH(PairwiseTerm::table(2, {0, 1, 1, 0}).validate_for(3, "edge term"),
                     Catch::Contains("edge term: table term has 2 labels, the energy has 3"));
   CHECK_NOTHROW(PairwiseTerm::potts().validate_for(7, "x"));

@@ -19,7 +19,8 @@ TEST_CASE("reduced energy of y equals original energy of expand(y)", "[lift][red
   for (int trial = 0; trial < 400; ++trial) {
     const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 30)(rng);
     const int num_labels = std::uniform_int_distribution<int>(1, 5)(rng);
-    const PairwiseEnergy energy = random_energy(rng, n, num_labels, std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
+    const PairwiseEnergy energy = random_energy(
+        rng, n, num_labels, std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
     const DensePartition partition = random_partition(rng, n, n);
     const PairwiseEnergy reduced = reduce(energy, partition);
     REQUIRE(reduced.num_variables() == partition.num_groups());
@@ -34,7 +35,10 @@ TEST_CASE("reduced energy of y equals original energy of expand(y)", "[lift][red
   }
 }
 
-TEST_CASE("reduction merges edges: at most one edge per group pair, orientation (asymmetric terms only) and term", "[lift][reduce]") {
+TEST_CASE(
+    "reduction merges edges: at most one edge per group pair, orientation (asymmetric terms only) "
+    "and term",
+    "[lift][reduce]") {
   Rng rng(7);
   for (int trial = 0; trial < 100; ++trial) {
     const PairwiseEnergy energy = random_grid_energy(rng, 9, 7, 3);
@@ -82,7 +86,8 @@ TEST_CASE("the minimum of a reduced energy is never below the original minimum (
     INFO("trial " << trial);
     CHECK(lifted.energy >= original.energy - 1e-12 * std::max(1.0, std::abs(original.energy)));
     // The lifted optimum is a real labeling of the original problem with the same energy.
-    CHECK(close_relative(energy.evaluate(expand(lifted.labeling, partition)), lifted.energy, 1e-12));
+    CHECK(
+        close_relative(energy.evaluate(expand(lifted.labeling, partition)), lifted.energy, 1e-12));
   }
 }
 
@@ -98,7 +103,8 @@ TEST_CASE("transfer between refining partitions keeps the energy", "[lift][trans
     const Labeling y = random_labeling(rng, coarse.num_groups(), num_labels);
     const Labeling z = transfer_labels(y, coarse, fine);
     CHECK(expand(z, fine) == expand(y, coarse));
-    CHECK(close_relative(reduce(energy, fine).evaluate(z), reduce(energy, coarse).evaluate(y), 1e-12));
+    CHECK(close_relative(reduce(energy, fine).evaluate(z), reduce(energy, coarse).evaluate(y),
+                         1e-12));
   }
 }
 
@@ -107,18 +113,23 @@ TEST_CASE("transfer and expand reject inputs that do not fit", "[lift][transfer]
   const DensePartition crossing({0, 1, 1, 2}, 3);
   CHECK_THROWS_WITH(transfer_labels(Labeling{0, 1}, coarse, crossing),
                     Catch::Contains("the target partition does not refine the source partition"));
-  CHECK_THROWS_WITH(transfer_labels(Labeling{0}, coarse, DensePartition::identity(4)),
-                    Catch::Contains("the labeling has 1 entries, the source partition has 2 groups"));
+  CHECK_THROWS_WITH(
+      transfer_labels(Labeling{0}, coarse, DensePartition::identity(4)),
+      Catch::Contains("the labeling has 1 entries, the source partition has 2 groups"));
   CHECK_THROWS_WITH(transfer_labels(Labeling{0, 1}, coarse, DensePartition::identity(5)),
                     Catch::Contains("cover 4 and 5 variables"));
-  CHECK_THROWS_WITH(expand(Labeling{0, 1, 2}, coarse), Catch::Contains("the labeling has 3 entries, the partition has 2 groups"));
+  CHECK_THROWS_WITH(expand(Labeling{0, 1, 2}, coarse),
+                    Catch::Contains("the labeling has 3 entries, the partition has 2 groups"));
   const PairwiseEnergy energy(5, 2, std::vector<double>(10, 0.0), {}, {});
-  CHECK_THROWS_WITH(reduce(energy, coarse), Catch::Contains("the partition has 4 variables, the energy has 5"));
+  CHECK_THROWS_WITH(reduce(energy, coarse),
+                    Catch::Contains("the partition has 4 variables, the energy has 5"));
 }
 
-TEST_CASE("edges inside a group fold their diagonal cost into the group's unary", "[lift][reduce]") {
+TEST_CASE("edges inside a group fold their diagonal cost into the group's unary",
+          "[lift][reduce]") {
   // Two variables in one group joined by a table edge with cost(l, l) = 10 + l.
-  const PairwiseEnergy energy(2, 2, {1.0, 2.0, 3.0, 4.0}, {PairwiseTerm::table(2, {10.0, 0.0, 0.0, 11.0})},
+  const PairwiseEnergy energy(2, 2, {1.0, 2.0, 3.0, 4.0},
+                              {PairwiseTerm::table(2, {10.0, 0.0, 0.0, 11.0})},
                               {Edge{0, 1, 0.5, 0}});
   const PairwiseEnergy reduced = reduce(energy, DensePartition::single_group(2));
   REQUIRE(reduced.num_variables() == 1);

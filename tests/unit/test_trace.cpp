@@ -19,10 +19,10 @@ TEST_CASE("trace rows follow the documented CSV format", "[core][trace]") {
   IcmSolver solver;
   std::ostringstream plain, with_error;
   TraceWriter writer(plain);
-  TraceWriter error_writer(with_error, [](std::span<const Label> ground) {
-    return static_cast<double>(ground.size());
-  });
-  const Summary summary = coarse_to_fine(energy, levels, solver, Options{}, observe_all({std::ref(writer), std::ref(error_writer)}));
+  TraceWriter error_writer(
+      with_error, [](std::span<const Label> ground) { return static_cast<double>(ground.size()); });
+  const Summary summary = coarse_to_fine(energy, levels, solver, Options{},
+                                         observe_all({std::ref(writer), std::ref(error_writer)}));
   std::istringstream lines(plain.str());
   std::string line;
   std::getline(lines, line);
@@ -32,11 +32,13 @@ TEST_CASE("trace rows follow the documented CSV format", "[core][trace]") {
     ++rows;
     CHECK(std::count(line.begin(), line.end(), ',') == 4);
   }
-  CHECK(rows == summary.total_steps + static_cast<long>(summary.levels.size()));  // + step 0 of each level
+  CHECK(rows ==
+        summary.total_steps + static_cast<long>(summary.levels.size()));  // + step 0 of each level
   std::istringstream error_lines(with_error.str());
   std::getline(error_lines, line);
   CHECK(line == "time_s,level,step,energy,num_vars,error");
   std::getline(error_lines, line);
   CHECK(line.substr(line.rfind(',') + 1) == "64");  // error column = ground labeling size
-  CHECK_THROWS_WITH(open_trace_file("/nonexistent-dir/trace.csv"), Catch::Contains("/nonexistent-dir/trace.csv"));
+  CHECK_THROWS_WITH(open_trace_file("/nonexistent-dir/trace.csv"),
+                    Catch::Contains("/nonexistent-dir/trace.csv"));
 }

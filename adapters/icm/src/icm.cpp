@@ -9,8 +9,10 @@ namespace c2f {
 
 std::string_view to_string(VisitOrder order) {
   switch (order) {
-    case VisitOrder::sequential: return "sequential";
-    case VisitOrder::random: return "random";
+    case VisitOrder::sequential:
+      return "sequential";
+    case VisitOrder::random:
+      return "random";
   }
   return "unknown";
 }
@@ -78,7 +80,8 @@ double IcmSolver::step() {
         const Incidence& inc = incidences_[k];
         const Edge& e = edges[inc.edge];
         const Label other = labeling_[inc.other];
-        cost += inc.is_first ? energy.pairwise_cost(e, l, other) : energy.pairwise_cost(e, other, l);
+        cost +=
+            inc.is_first ? energy.pairwise_cost(e, l, other) : energy.pairwise_cost(e, other, l);
       }
       return cost;
     };

@@ -63,7 +63,8 @@ PairwiseEnergy make_grid_energy(GridShape shape, Connectivity connectivity, int 
                                 const std::function<double(VariableIndex, VariableIndex)>& weight) {
   const auto pairs = grid_neighbour_pairs(shape, connectivity);
   std::vector<double> weights(pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i) weights[i] = weight(pairs[i].first, pairs[i].second);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    weights[i] = weight(pairs[i].first, pairs[i].second);
   return make_grid_energy(shape, connectivity, num_labels, std::move(unaries), std::move(term),
                           weights);
 }

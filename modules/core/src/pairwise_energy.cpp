@@ -25,16 +25,16 @@ PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
   }
   const std::size_t expected = num_variables_ * static_cast<std::size_t>(num_labels_);
   if (unaries_.size() != expected) {
-    throw std::invalid_argument("PairwiseEnergy: unaries has " + std::to_string(unaries_.size()) +
-                                " entries, expected num_variables * num_labels = " +
-                                std::to_string(expected));
+    throw std::invalid_argument(
+        "PairwiseEnergy: unaries has " + std::to_string(unaries_.size()) +
+        " entries, expected num_variables * num_labels = " + std::to_string(expected));
   }
   for (std::size_t i = 0; i < unaries_.size(); ++i) {
     if (!std::isfinite(unaries_[i])) {
-      throw std::invalid_argument(
-          "PairwiseEnergy: unaries: cost of label " + std::to_string(i % num_labels_) +
-          " at variable " + std::to_string(i / num_labels_) + " is not finite (" +
-          std::to_string(unaries_[i]) + ")");
+      throw std::invalid_argument("PairwiseEnergy: unaries: cost of label " +
+                                  std::to_string(i % num_labels_) + " at variable " +
+                                  std::to_string(i / num_labels_) + " is not finite (" +
+                                  std::to_string(unaries_[i]) + ")");
     }
   }
   for (std::size_t t = 0; t < terms_.size(); ++t) {
@@ -44,9 +44,9 @@ PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
     const Edge& e = edges_[i];
     const std::string name = "PairwiseEnergy: edges[" + std::to_string(i) + "]";
     if (e.u >= num_variables_ || e.v >= num_variables_) {
-      throw std::invalid_argument(name + ": endpoint (" + std::to_string(e.u) + ", " +
-                                  std::to_string(e.v) + ") out of range, num_variables = " +
-                                  std::to_string(num_variables_));
+      throw std::invalid_argument(
+          name + ": endpoint (" + std::to_string(e.u) + ", " + std::to_string(e.v) +
+          ") out of range, num_variables = " + std::to_string(num_variables_));
     }
     if (e.u == e.v) {
       throw std::invalid_argument(name + ": self-loop at variable " + std::to_string(e.u));

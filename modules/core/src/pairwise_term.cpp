@@ -13,10 +13,14 @@ constexpr TermKind kAllKinds[] = {TermKind::potts, TermKind::truncated_linear, T
 
 std::string_view to_string(TermKind kind) {
   switch (kind) {
-    case TermKind::potts: return "potts";
-    case TermKind::truncated_linear: return "truncated_linear";
-    case TermKind::tsgo_step: return "tsgo_step";
-    case TermKind::table: return "table";
+    case TermKind::potts:
+      return "potts";
+    case TermKind::truncated_linear:
+      return "truncated_linear";
+    case TermKind::tsgo_step:
+      return "tsgo_step";
+    case TermKind::table:
+      return "table";
   }
   return "unknown";
 }
@@ -29,7 +33,9 @@ TermKind term_kind_from_string(std::string_view text) {
                               "' (expected potts, truncated_linear, tsgo_step or table)");
 }
 
-PairwiseTerm PairwiseTerm::potts() { return {TermKind::potts, 0.0, 0, {}}; }
+PairwiseTerm PairwiseTerm::potts() {
+  return {TermKind::potts, 0.0, 0, {}};
+}
 
 PairwiseTerm PairwiseTerm::truncated_linear(double truncation) {
   if (!std::isfinite(truncation) || truncation <= 0.0) {
@@ -39,7 +45,9 @@ PairwiseTerm PairwiseTerm::truncated_linear(double truncation) {
   return {TermKind::truncated_linear, truncation, 0, {}};
 }
 
-PairwiseTerm PairwiseTerm::tsgo_step() { return {TermKind::tsgo_step, 0.0, 0, {}}; }
+PairwiseTerm PairwiseTerm::tsgo_step() {
+  return {TermKind::tsgo_step, 0.0, 0, {}};
+}
 
 PairwiseTerm PairwiseTerm::table(int num_labels, std::vector<double> costs) {
   if (num_labels < 1) {

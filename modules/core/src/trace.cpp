@@ -6,7 +6,8 @@
 namespace c2f {
 
 std::string trace_header(bool with_error) {
-  return with_error ? "time_s,level,step,energy,num_vars,error" : "time_s,level,step,energy,num_vars";
+  return with_error ? "time_s,level,step,energy,num_vars,error"
+                    : "time_s,level,step,energy,num_vars";
 }
 
 TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error)

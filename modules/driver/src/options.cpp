@@ -7,8 +7,10 @@ namespace c2f {
 
 std::string_view to_string(InitialLabeling init) {
   switch (init) {
-    case InitialLabeling::unary_argmin: return "unary_argmin";
-    case InitialLabeling::zero: return "zero";
+    case InitialLabeling::unary_argmin:
+      return "unary_argmin";
+    case InitialLabeling::zero:
+      return "zero";
   }
   return "unknown";
 }

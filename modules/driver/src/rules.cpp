@@ -15,11 +15,16 @@ constexpr TerminationReason kAllReasons[] = {
 
 std::string_view to_string(TerminationReason reason) {
   switch (reason) {
-    case TerminationReason::converged: return "converged";
-    case TerminationReason::step_limit: return "step_limit";
-    case TerminationReason::time_limit: return "time_limit";
-    case TerminationReason::target_energy: return "target_energy";
-    case TerminationReason::observer: return "observer";
+    case TerminationReason::converged:
+      return "converged";
+    case TerminationReason::step_limit:
+      return "step_limit";
+    case TerminationReason::time_limit:
+      return "time_limit";
+    case TerminationReason::target_energy:
+      return "target_energy";
+    case TerminationReason::observer:
+      return "observer";
   }
   return "unknown";
 }
@@ -36,7 +41,8 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance) {
     throw std::invalid_argument("no_decrease: steps_per_level is empty");
   }
   for (int k : steps_per_level) {
-    if (k < 1) throw std::invalid_argument("no_decrease: every k must be >= 1, got " + std::to_string(k));
+    if (k < 1)
+      throw std::invalid_argument("no_decrease: every k must be >= 1, got " + std::to_string(k));
   }
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
     throw std::invalid_argument("no_decrease: tolerance must be finite and >= 0");
@@ -98,7 +104,8 @@ Verdict Rules::decide(const Progress& progress) const {
   Verdict strongest;
   for (const Rule& rule : rules_) {
     const Verdict verdict = rule(progress);
-    if (static_cast<int>(verdict.decision) > static_cast<int>(strongest.decision)) strongest = verdict;
+    if (static_cast<int>(verdict.decision) > static_cast<int>(strongest.decision))
+      strongest = verdict;
   }
   return strongest;
 }

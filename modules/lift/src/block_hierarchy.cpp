@@ -15,7 +15,8 @@ DensePartition block_partition(GridShape shape, std::size_t block) {
   std::vector<VariableIndex> group_of(shape.size());
   for (std::size_t y = 0; y < shape.height; ++y) {
     for (std::size_t x = 0; x < shape.width; ++x) {
-      group_of[y * shape.width + x] = static_cast<VariableIndex>((y / block) * blocks_per_row + x / block);
+      group_of[y * shape.width + x] =
+          static_cast<VariableIndex>((y / block) * blocks_per_row + x / block);
     }
   }
   return DensePartition(std::move(group_of), blocks_per_row * blocks_per_column);

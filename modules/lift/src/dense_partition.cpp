@@ -15,9 +15,9 @@ DensePartition::DensePartition(std::vector<VariableIndex> group_of, std::size_t 
   }
   for (std::size_t v = 0; v < group_of_.size(); ++v) {
     if (group_of_[v] >= num_groups) {
-      throw std::invalid_argument("DensePartition: group_of[" + std::to_string(v) + "] = " +
-                                  std::to_string(group_of_[v]) + " is out of range, num_groups = " +
-                                  std::to_string(num_groups));
+      throw std::invalid_argument("DensePartition: group_of[" + std::to_string(v) +
+                                  "] = " + std::to_string(group_of_[v]) +
+                                  " is out of range, num_groups = " + std::to_string(num_groups));
     }
     ++offsets_[group_of_[v] + 1];
   }
@@ -43,8 +43,8 @@ DensePartition dense_from_ids(std::span<const Id> ids) {
   dense.reserve(ids.size() / 4 + 16);
   for (std::size_t v = 0; v < ids.size(); ++v) {
     if (ids[v] < 0) {
-      throw std::invalid_argument("DensePartition::from_ids: ids[" + std::to_string(v) + "] = " +
-                                  std::to_string(ids[v]) + " is negative");
+      throw std::invalid_argument("DensePartition::from_ids: ids[" + std::to_string(v) +
+                                  "] = " + std::to_string(ids[v]) + " is negative");
     }
     const auto [it, inserted] = dense.try_emplace(ids[v], static_cast<VariableIndex>(dense.size()));
     group_of[v] = it->second;
@@ -58,7 +58,9 @@ DensePartition DensePartition::from_ids(std::span<const std::int64_t> ids) {
   return dense_from_ids(ids);
 }
 
-DensePartition DensePartition::from_ids(std::span<const int> ids) { return dense_from_ids(ids); }
+DensePartition DensePartition::from_ids(std::span<const int> ids) {
+  return dense_from_ids(ids);
+}
 
 DensePartition DensePartition::identity(std::size_t num_variables) {
   std::vector<VariableIndex> group_of(num_variables);

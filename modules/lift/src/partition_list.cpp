@@ -24,7 +24,8 @@ PartitionList::PartitionList(std::vector<DensePartition> partitions)
 void PartitionList::check_size(std::size_t num_variables) const {
   if (partitions_[position_].num_variables() != num_variables) {
     throw std::invalid_argument("PartitionList: partition " + std::to_string(position_) +
-                                " covers " + std::to_string(partitions_[position_].num_variables()) +
+                                " covers " +
+                                std::to_string(partitions_[position_].num_variables()) +
                                 " variables, the energy has " + std::to_string(num_variables));
   }
 }

@@ -23,10 +23,9 @@ bool has_nonzero_diagonal(const PairwiseTerm& term, int num_labels) {
 
 PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partition) {
   if (partition.num_variables() != energy.num_variables()) {
-    throw std::invalid_argument("reduce: the partition has " +
-                                std::to_string(partition.num_variables()) +
-                                " variables, the energy has " +
-                                std::to_string(energy.num_variables()));
+    throw std::invalid_argument(
+        "reduce: the partition has " + std::to_string(partition.num_variables()) +
+        " variables, the energy has " + std::to_string(energy.num_variables()));
   }
   const std::size_t num_groups = partition.num_groups();
   const int num_labels = energy.num_labels();
@@ -73,7 +72,8 @@ PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partit
   {
     std::vector<std::uint32_t> cursor(bucket_start.begin(), bucket_start.end() - 1);
     for (std::size_t i = 0; i < edges.size(); ++i) {
-      if (oriented[i].first != kNone) order[cursor[oriented[i].first]++] = static_cast<std::uint32_t>(i);
+      if (oriented[i].first != kNone)
+        order[cursor[oriented[i].first]++] = static_cast<std::uint32_t>(i);
     }
   }
 

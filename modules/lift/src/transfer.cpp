@@ -7,22 +7,22 @@ namespace c2f {
 
 Labeling expand(std::span<const Label> labeling_on_groups, const DensePartition& partition) {
   if (labeling_on_groups.size() != partition.num_groups()) {
-    throw std::invalid_argument("expand: the labeling has " +
-                                std::to_string(labeling_on_groups.size()) +
-                                " entries, the partition has " +
-                                std::to_string(partition.num_groups()) + " groups");
+    throw std::invalid_argument(
+        "expand: the labeling has " + std::to_string(labeling_on_groups.size()) +
+        " entries, the partition has " + std::to_string(partition.num_groups()) + " groups");
   }
   Labeling ground(partition.num_variables());
-  for (std::size_t v = 0; v < ground.size(); ++v) ground[v] = labeling_on_groups[partition.group_of(v)];
+  for (std::size_t v = 0; v < ground.size(); ++v)
+    ground[v] = labeling_on_groups[partition.group_of(v)];
   return ground;
 }
 
 Labeling transfer_labels(std::span<const Label> labeling, const DensePartition& from,
                          const DensePartition& to) {
   if (labeling.size() != from.num_groups()) {
-    throw std::invalid_argument("transfer_labels: the labeling has " +
-                                std::to_string(labeling.size()) + " entries, the source partition has " +
-                                std::to_string(from.num_groups()) + " groups");
+    throw std::invalid_argument(
+        "transfer_labels: the labeling has " + std::to_string(labeling.size()) +
+        " entries, the source partition has " + std::to_string(from.num_groups()) + " groups");
   }
   if (from.num_variables() != to.num_variables()) {
     throw std::invalid_argument("transfer_labels: the partitions cover " +

@@ -7,7 +7,8 @@
 int main() {
   const c2f::GridShape shape{8, 8};
   std::vector<double> unaries(shape.size() * 3);
-  for (std::size_t i = 0; i < unaries.size(); ++i) unaries[i] = static_cast<double>((i * 7919) % 13);
+  for (std::size_t i = 0; i < unaries.size(); ++i)
+    unaries[i] = static_cast<double>((i * 7919) % 13);
   const c2f::PairwiseEnergy energy = c2f::make_grid_energy(
       shape, c2f::Connectivity::four, 3, std::move(unaries), c2f::PairwiseTerm::potts(),
       [](c2f::VariableIndex, c2f::VariableIndex) { return 2.0; });
@@ -17,7 +18,7 @@ int main() {
   const c2f::Summary a = c2f::coarse_to_fine(energy, flat, solver, c2f::Options{});
   const c2f::Summary b = c2f::coarse_to_fine(energy, blocks, solver, c2f::Options{});
   std::cout << "flat " << a.energy << ", coarse-to-fine " << b.energy << "\n";
-  const bool ok = a.energy == energy.evaluate(a.labeling) && b.energy == energy.evaluate(b.labeling) &&
-                  b.levels.size() == 3;
+  const bool ok = a.energy == energy.evaluate(a.labeling) &&
+                  b.energy == energy.evaluate(b.labeling) && b.levels.size() == 3;
   return ok ? 0 : 1;
 }

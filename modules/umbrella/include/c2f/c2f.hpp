@@ -1,6 +1,7 @@
 #pragma once
 // Umbrella header: the whole c2f library.
 
+#include "c2f/adapters/icm.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/grid.hpp"
@@ -10,14 +11,13 @@
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/partition.hpp"
 #include "c2f/core/trace.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/driver/options.hpp"
+#include "c2f/driver/rules.hpp"
+#include "c2f/driver/summary.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/partition_provider.hpp"
 #include "c2f/lift/reduce.hpp"
 #include "c2f/lift/transfer.hpp"
-#include "c2f/driver/coarse_to_fine.hpp"
-#include "c2f/driver/options.hpp"
-#include "c2f/driver/rules.hpp"
-#include "c2f/driver/summary.hpp"
-#include "c2f/adapters/icm.hpp"

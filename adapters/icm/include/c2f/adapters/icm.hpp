@@ -22,7 +22,7 @@ VisitOrder visit_order_from_string(std::string_view text);
 
 struct IcmOptions {
   VisitOrder order = VisitOrder::sequential;
-  std::uint64_t seed = 1;   ///< for VisitOrder::random
+  std::uint64_t seed = 1;  ///< for VisitOrder::random
   /// A variable moves only when its local cost drops by more than
   /// min_improvement * max(1, |local cost|); keeps ties from cycling.
   double min_improvement = 1e-12;

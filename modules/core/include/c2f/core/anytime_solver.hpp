@@ -19,12 +19,12 @@ namespace c2f {
 ///    steps of one binding.
 ///  - `energy()` and `labeling()` report the current (best) labeling and its energy.
 template <class S, class E>
-concept AnytimeSolver =
-    Energy<E> && requires(S& s, const S& cs, const E& e, std::span<const Label> x) {
-      s.bind(e, x);
-      { s.step() } -> std::convertible_to<double>;
-      { cs.energy() } -> std::convertible_to<double>;
-      { cs.labeling() } -> std::convertible_to<std::span<const Label>>;
-    };
+concept AnytimeSolver = Energy<E> &&
+    requires(S& s, const S& cs, const E& e, std::span<const Label> x) {
+  s.bind(e, x);
+  { s.step() } -> std::convertible_to<double>;
+  { cs.energy() } -> std::convertible_to<double>;
+  { cs.labeling() } -> std::convertible_to<std::span<const Label>>;
+};
 
 }  // namespace c2f

@@ -20,7 +20,9 @@ struct energy_traits {
     return e.num_variables();
   }
   template <class T = E>
-  static auto num_labels(const T& e) -> decltype(e.num_labels()) { return e.num_labels(); }
+  static auto num_labels(const T& e) -> decltype(e.num_labels()) {
+    return e.num_labels();
+  }
   template <class T = E>
   static auto unary(const T& e, std::size_t v, Label l) -> decltype(e.unary(v, l)) {
     return e.unary(v, l);

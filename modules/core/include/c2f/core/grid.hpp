@@ -22,8 +22,8 @@ struct GridShape {
 /// The neighbour pairs (u, v) of a grid in raster order of u: for each pixel its right and
 /// down neighbours, then for 8-connectivity its down-right and down-left neighbours.
 /// Throws std::invalid_argument for an empty grid or one too large for VariableIndex.
-std::vector<std::pair<VariableIndex, VariableIndex>> grid_neighbour_pairs(GridShape shape,
-                                                                         Connectivity connectivity);
+std::vector<std::pair<VariableIndex, VariableIndex>> grid_neighbour_pairs(
+    GridShape shape, Connectivity connectivity);
 
 /// A grid energy with one shared term; edge i (in grid_neighbour_pairs order) has weight
 /// edge_weights[i]. Throws std::invalid_argument when the sizes do not match.

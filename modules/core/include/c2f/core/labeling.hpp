@@ -20,7 +20,7 @@ using Labeling = std::vector<Label>;
 
 /// Throws std::invalid_argument, naming `what`, unless `labeling` has exactly `num_variables`
 /// entries and every entry lies in [0, num_labels).
-void validate_labeling(std::span<const Label> labeling, std::size_t num_variables,
-                       int num_labels, std::string_view what = "labeling");
+void validate_labeling(std::span<const Label> labeling, std::size_t num_variables, int num_labels,
+                       std::string_view what = "labeling");
 
 }  // namespace c2f

@@ -70,7 +70,10 @@ class PairwiseTerm {
 
  private:
   PairwiseTerm(TermKind kind, double truncation, int table_labels, std::vector<double> table)
-      : kind_(kind), truncation_(truncation), table_labels_(table_labels), table_(std::move(table)) {}
+      : kind_(kind),
+        truncation_(truncation),
+        table_labels_(table_labels),
+        table_(std::move(table)) {}
 
   TermKind kind_;
   double truncation_;

@@ -19,7 +19,9 @@ struct partition_traits {
     return p.num_variables();
   }
   template <class T = P>
-  static auto num_groups(const T& p) -> decltype(p.num_groups()) { return p.num_groups(); }
+  static auto num_groups(const T& p) -> decltype(p.num_groups()) {
+    return p.num_groups();
+  }
   template <class T = P>
   static auto group_of(const T& p, std::size_t v) -> decltype(p.group_of(v)) {
     return p.group_of(v);

@@ -57,7 +57,8 @@ template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
 Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
                        const Observer& observer = {},
                        InitialLabeling init = InitialLabeling::unary_argmin) {
-  if (rules.empty()) throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
+  if (rules.empty())
+    throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
   detail::RunClock clock;
   Summary summary;
   std::optional<DensePartition> previous;  // partition of the last finished level
@@ -102,16 +103,17 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
         ++summary.total_steps;
       }
       if (observer) {
-        const StepEvent event{clock.elapsed(), level, step, history.back(), stats.num_variables,
-                              at_original, solver.labeling(), group_of};
+        const StepEvent event{
+            clock.elapsed(),   level,   step, history.back(), stats.num_variables, at_original,
+            solver.labeling(), group_of};
         if (clock.off_the_clock([&] { return observer(event); }) == ObserverDecision::stop) {
           summary.reason = TerminationReason::observer;
           finished = true;
           break;
         }
       }
-      const Progress progress{clock.elapsed(), level, at_original, step, summary.total_steps,
-                              history};
+      const Progress progress{clock.elapsed(),     level,  at_original, step,
+                              summary.total_steps, history};
       const Verdict verdict = rules.decide(progress);
       if (verdict.decision == Decision::stop ||
           (verdict.decision == Decision::refine && at_original)) {

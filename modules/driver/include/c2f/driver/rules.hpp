@@ -28,11 +28,11 @@ TerminationReason termination_reason_from_string(std::string_view text);
 
 /// What the rules see after every step (and at step 0 of each level).
 struct Progress {
-  double elapsed_s = 0.0;       ///< run clock
-  int level = 0;                ///< 0 = coarsest
-  bool at_original = false;     ///< this level is the original problem
-  long level_step = 0;          ///< steps done on this level
-  long total_steps = 0;         ///< steps done in the whole run
+  double elapsed_s = 0.0;                  ///< run clock
+  int level = 0;                           ///< 0 = coarsest
+  bool at_original = false;                ///< this level is the original problem
+  long level_step = 0;                     ///< steps done on this level
+  long total_steps = 0;                    ///< steps done in the whole run
   std::span<const double> level_energies;  ///< energy at step 0..level_step of this level
 };
 

@@ -14,16 +14,16 @@ struct LevelSummary {
   int level = 0;
   std::size_t num_variables = 0;  ///< variables (groups) on this level
   long steps = 0;
-  double start_energy = 0.0;      ///< after the transfer from the previous level
+  double start_energy = 0.0;  ///< after the transfer from the previous level
   double final_energy = 0.0;
-  double partition_seconds = 0.0; ///< building this level's partition
-  double setup_seconds = 0.0;     ///< reduction, label transfer and solver binding
-  double solve_seconds = 0.0;     ///< solver steps and rule checks
+  double partition_seconds = 0.0;  ///< building this level's partition
+  double setup_seconds = 0.0;      ///< reduction, label transfer and solver binding
+  double solve_seconds = 0.0;      ///< solver steps and rule checks
 };
 
 struct Summary {
-  Labeling labeling;              ///< final labeling of the original variables
-  double energy = 0.0;            ///< evaluate(labeling) on the original energy
+  Labeling labeling;    ///< final labeling of the original variables
+  double energy = 0.0;  ///< evaluate(labeling) on the original energy
   TerminationReason reason = TerminationReason::converged;
   double seconds = 0.0;           ///< run clock at the end (observer time excluded)
   double observer_seconds = 0.0;  ///< time spent inside the observer, not on the run clock
