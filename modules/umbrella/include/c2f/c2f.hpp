@@ -1,7 +1,12 @@
 #pragma once
 // Umbrella header: the whole c2f library.
 
+#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/expansion.hpp"
 #include "c2f/adapters/icm.hpp"
+#include "c2f/adapters/lbp.hpp"
+#include "c2f/adapters/maxflow.hpp"
+#include "c2f/adapters/swap.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/grid.hpp"

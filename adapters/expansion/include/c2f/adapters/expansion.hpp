@@ -1,0 +1,135 @@
+#pragma once
+// Alpha-expansion (Boykov, Veksler and Zabih) as an AnytimeSolver for PairwiseEnergy, with
+// QPBO for non-submodular moves (as OpenGM's alpha-expansion fusion, which the paper used).
+//
+// One step() = one expansion move for one label alpha: every variable may switch to alpha.
+// Labels are cycled in the configured order, restarting at the first label on every bind().
+// Each move's binary problem goes straight into the max-flow graph when all its pairwise
+// terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
+// QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
+// energy of the new labeling does not increase.
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "c2f/adapters/binary_move.hpp"
+#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/move_order.hpp"
+#include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f {
+
+struct ExpansionOptions {
+  LabelOrder order = LabelOrder::sequential;
+  std::uint64_t seed = 1;  ///< for LabelOrder::random
+  /// A move is accepted when E_new <= E_old - tolerance * max(1, |E_old|); 0 accepts every
+  /// move that does not increase the energy.
+  double tolerance = 0.0;
+
+  /// Empty when usable, else a message naming the field.
+  [[nodiscard]] std::string validate() const;
+};
+
+/// What the last step() did.
+struct ExpansionMoveStats {
+  Label label = 0;            ///< alpha
+  std::size_t changed = 0;    ///< variables that switched to alpha (0 when rejected)
+  std::size_t unlabeled = 0;  ///< variables QPBO left open (kept their label)
+  bool used_qpbo = false;
+  bool accepted = false;
+  double flow_seconds = 0.0;
+};
+
+template <MaxFlow Backend = BoostMaxFlow>
+class ExpansionSolver {
+ public:
+  /// Throws std::invalid_argument when options.validate() reports a problem.
+  explicit ExpansionSolver(ExpansionOptions options = {}) : options_(options) {
+    if (const std::string problem = options_.validate(); !problem.empty()) {
+      throw std::invalid_argument("ExpansionOptions: " + problem);
+    }
+  }
+
+  /// Starts from `start` (validated); builds the move graph of the energy's topology.
+  void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
+    validate_labeling(start, energy.num_variables(), energy.num_labels(),
+                      "ExpansionSolver::bind: start");
+    energy_ = &energy;
+    labeling_.assign(start.begin(), start.end());
+    candidate_.resize(labeling_.size());
+    std::vector<FlowEdge> pairs(energy.edges().size());
+    for (std::size_t e = 0; e < pairs.size(); ++e)
+      pairs[e] = {energy.edges()[e].u, energy.edges()[e].v};
+    moves_.bind(energy.num_variables(), pairs);
+    d_.resize(energy.num_variables());
+    p_.resize(pairs.size());
+    out_.resize(energy.num_variables());
+    std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
+    for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
+    cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
+    energy_value_ = energy.evaluate_unchecked(labeling_);
+    last_ = {};
+  }
+
+  /// One expansion move; returns the energy afterwards (never larger than before).
+  double step() {
+    if (energy_ == nullptr) throw std::logic_error("ExpansionSolver::step: call bind() first");
+    const PairwiseEnergy& energy = *energy_;
+    const Label alpha = cycle_.next();
+    for (std::size_t i = 0; i < d_.size(); ++i)
+      d_[i] = energy.unary(i, alpha) - energy.unary(i, labeling_[i]);
+    std::fill(p_.begin(), p_.end(), 0.0);
+    const auto edges = energy.edges();
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const Edge& edge = edges[e];
+      const Label xu = labeling_[edge.u];
+      const Label xv = labeling_[edge.v];
+      add_binary_term(d_, p_, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
+                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
+                      energy.pairwise_cost(edge, alpha, alpha));
+    }
+    const BinaryMoveStats move = moves_.solve(d_, p_, out_);
+    last_ = ExpansionMoveStats{alpha, 0, move.unlabeled, move.used_qpbo, false, move.flow_seconds};
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < labeling_.size(); ++i) {
+      const bool to_alpha = out_[i] == MoveLabel::one && labeling_[i] != alpha;
+      candidate_[i] = to_alpha ? alpha : labeling_[i];
+      changed += to_alpha;
+    }
+    if (changed == 0) return energy_value_;
+    const double candidate_energy = energy.evaluate_unchecked(candidate_);
+    if (candidate_energy <=
+        energy_value_ - options_.tolerance * std::max(1.0, std::abs(energy_value_))) {
+      labeling_.swap(candidate_);
+      energy_value_ = candidate_energy;
+      last_.changed = changed;
+      last_.accepted = true;
+    }
+    return energy_value_;
+  }
+
+  [[nodiscard]] double energy() const noexcept { return energy_value_; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return labeling_; }
+  [[nodiscard]] const ExpansionMoveStats& last_move() const noexcept { return last_; }
+  /// Moves in one sweep over all labels.
+  [[nodiscard]] std::size_t moves_per_sweep() const noexcept { return cycle_.cycle_length(); }
+
+ private:
+  ExpansionOptions options_;
+  const PairwiseEnergy* energy_ = nullptr;
+  Labeling labeling_, candidate_;
+  double energy_value_ = 0.0;
+  BinaryMoveSolver<Backend> moves_;
+  std::vector<double> d_, p_;
+  std::vector<MoveLabel> out_;
+  MoveCycle<Label> cycle_;
+  ExpansionMoveStats last_;
+};
+
+static_assert(AnytimeSolver<ExpansionSolver<>, PairwiseEnergy>);
+
+}  // namespace c2f

@@ -1,0 +1,50 @@
+#pragma once
+// The order in which graph-cut solvers visit labels (expansion) or label pairs (swap).
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "c2f/core/labeling.hpp"
+
+namespace c2f {
+
+enum class LabelOrder {
+  sequential,  ///< 0, 1, ..., L-1, 0, 1, ... (the reference implementation's order)
+  random,      ///< a fresh random permutation for every cycle, from the seed
+};
+
+std::string_view to_string(LabelOrder order);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+LabelOrder label_order_from_string(std::string_view text);
+
+/// Cycles endlessly through a list of moves (labels or label pairs) in the chosen order.
+template <class Move>
+class MoveCycle {
+ public:
+  MoveCycle() = default;
+  MoveCycle(std::vector<Move> moves, LabelOrder order, std::uint64_t seed)
+      : moves_(std::move(moves)), order_(order), rng_(seed) {}
+
+  /// The next move; starts a new (reshuffled, for LabelOrder::random) cycle when one ends.
+  /// Requires a non-empty move list.
+  const Move& next() {
+    if (position_ == 0 && order_ == LabelOrder::random)
+      std::shuffle(moves_.begin(), moves_.end(), rng_);
+    const Move& move = moves_[position_];
+    position_ = (position_ + 1) % moves_.size();
+    return move;
+  }
+  [[nodiscard]] std::size_t cycle_length() const noexcept { return moves_.size(); }
+
+ private:
+  std::vector<Move> moves_;
+  LabelOrder order_ = LabelOrder::sequential;
+  std::mt19937_64 rng_;
+  std::size_t position_ = 0;
+};
+
+}  // namespace c2f

@@ -1,0 +1,135 @@
+// Alpha-expansion and alpha-beta swap against brute force on tiny models.
+
+#include <catch2/catch.hpp>
+
+#include "c2f/adapters/expansion.hpp"
+#include "c2f/adapters/swap.hpp"
+#include "support/backends.hpp"
+#include "support/tiny_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+namespace {
+
+/// Steps until `sweep` consecutive steps change nothing; checks the energy never increases
+/// and always equals evaluate() of the labeling. Returns the final energy.
+template <class Solver>
+double run_to_convergence(Solver& solver, const PairwiseEnergy& energy, std::size_t sweep) {
+  double previous = solver.energy();
+  std::size_t quiet = 0;
+  for (int step = 0; step < 2000 && quiet < sweep; ++step) {
+    const double now = solver.step();
+    CHECK(now <= previous);
+    CHECK(now == energy.evaluate(solver.labeling()));
+    quiet = now < previous ? 0 : quiet + 1;
+    previous = now;
+  }
+  return previous;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near the optimum",
+                   "[expansion][brute-force]", C2F_MAXFLOW_BACKENDS) {
+  Rng rng(2024);
+  int qpbo_moves = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const int num_labels = 2 + trial % 3;
+    const auto terms = test_terms(rng, num_labels);
+    const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
+    const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
+    ExpansionSolver<TestType> solver(
+        ExpansionOptions{trial % 2 ? LabelOrder::random : LabelOrder::sequential,
+                         static_cast<std::uint64_t>(trial), 0.0});
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
+    double previous = solver.energy();
+    std::size_t quiet = 0;
+    for (int step = 0; step < 500 && quiet < solver.moves_per_sweep(); ++step) {
+      const double now = solver.step();
+      qpbo_moves += solver.last_move().used_qpbo;
+      CHECK(now <= previous);
+      CHECK(now == energy.evaluate(solver.labeling()));
+      quiet = now < previous ? 0 : quiet + 1;
+      previous = now;
+    }
+    const double optimum = brute_force_minimum(energy).energy;
+    INFO("trial " << trial << ", term " << to_string(term.kind()));
+    CHECK(previous >= optimum - 1e-9);
+    if (num_labels == 2 && term.kind() == TermKind::potts) {
+      // Two labels, Potts: one expansion move is the whole (submodular) problem.
+      CHECK(close_relative(previous, optimum, 1e-9));
+    }
+  }
+  // The TSGO step term makes moves non-submodular: QPBO was exercised.
+  CHECK(qpbo_moves > 0);
+}
+
+TEST_CASE("alpha-expansion on Potts is within the factor-2 bound of the optimum",
+          "[expansion][brute-force]") {
+  // Boykov et al.: with a Potts term and non-negative costs, a labeling where no expansion
+  // move helps has energy at most 2 * optimum.
+  Rng rng(9);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int num_labels = 3 + trial % 2;
+    PairwiseEnergy raw = tiny_model(rng, trial % 3, num_labels, PairwiseTerm::potts());
+    std::vector<double> unaries(raw.unaries().begin(), raw.unaries().end());
+    for (double& u : unaries) u += 2.0;  // tiny_model draws unaries in [-2, 4)
+    const PairwiseEnergy energy(raw.num_variables(), num_labels, std::move(unaries),
+                                {PairwiseTerm::potts()},
+                                std::vector<Edge>(raw.edges().begin(), raw.edges().end()));
+    ExpansionSolver<> solver;
+    solver.bind(energy, Labeling(energy.num_variables(), 0));
+    const double converged = run_to_convergence(solver, energy, solver.moves_per_sweep());
+    CHECK(converged <= 2.0 * brute_force_minimum(energy).energy + 1e-9);
+  }
+}
+
+TEST_CASE("alpha-beta swap never increases the energy and solves two-label Potts exactly",
+          "[swap][brute-force]") {
+  Rng rng(55);
+  for (int trial = 0; trial < 120; ++trial) {
+    const int num_labels = 2 + trial % 3;
+    const auto terms = test_terms(rng, num_labels);
+    const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
+    const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
+    SwapSolver<> solver(SwapOptions{trial % 2 ? LabelOrder::random : LabelOrder::sequential, 3});
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
+    const std::size_t pairs = static_cast<std::size_t>(num_labels * (num_labels - 1) / 2);
+    const double converged = run_to_convergence(solver, energy, pairs);
+    const double optimum = brute_force_minimum(energy).energy;
+    CHECK(converged >= optimum - 1e-9);
+    if (num_labels == 2 && term.kind() == TermKind::potts)
+      CHECK(close_relative(converged, optimum, 1e-9));
+  }
+}
+
+TEST_CASE("swap rejects terms that are not semi-metrics", "[swap][validation]") {
+  const std::vector<double> zeros(4, 0.0);
+  const PairwiseEnergy diagonal(2, 2, zeros, {PairwiseTerm::table(2, {1.0, 2.0, 2.0, 0.0})},
+                                {Edge{0, 1, 1.0, 0}});
+  SwapSolver<> solver;
+  CHECK_THROWS_WITH(solver.bind(diagonal, Labeling{0, 0}),
+                    Catch::Contains("term 0 (table) is not a semi-metric: cost(0, 0) != 0"));
+  const PairwiseEnergy asymmetric(2, 2, zeros, {PairwiseTerm::table(2, {0.0, 2.0, 1.0, 0.0})},
+                                  {Edge{0, 1, 1.0, 0}});
+  CHECK_THROWS_WITH(solver.bind(asymmetric, Labeling{0, 0}),
+                    Catch::Contains("cost(0, 1) is negative or asymmetric"));
+  const PairwiseEnergy negative(2, 2, zeros, {PairwiseTerm::potts()}, {Edge{0, 1, -1.0, 0}});
+  CHECK_THROWS_WITH(solver.bind(negative, Labeling{0, 0}),
+                    Catch::Contains("edge 0 has negative weight"));
+  CHECK_THROWS_WITH(solver.step(), Catch::Contains("call bind() first"));
+}
+
+TEST_CASE("expansion validates its options and inputs", "[expansion][validation]") {
+  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{LabelOrder::sequential, 1, -1.0}),
+                    Catch::Contains("tolerance"));
+  ExpansionSolver<> solver;
+  CHECK_THROWS_WITH(solver.step(), Catch::Contains("call bind() first"));
+  const PairwiseEnergy energy(2, 3, std::vector<double>(6, 0.0), {PairwiseTerm::potts()},
+                              {Edge{0, 1, 1.0, 0}});
+  CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 3}),
+                    Catch::Contains("ExpansionSolver::bind: start: label 3"));
+  CHECK(label_order_from_string("random") == LabelOrder::random);
+  CHECK_THROWS_WITH(label_order_from_string("reverse"), Catch::Contains("'reverse'"));
+}
