@@ -16,6 +16,7 @@
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/partition.hpp"
 #include "c2f/core/trace.hpp"
+#include "c2f/core/uai.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/driver/rules.hpp"

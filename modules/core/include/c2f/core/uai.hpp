@@ -1,0 +1,33 @@
+#pragma once
+// Import and export of PairwiseEnergy in the UAI format of the UAI inference competitions
+// (a MARKOV network: variables with cardinalities, factor scopes, then factor tables of
+// non-negative potentials, the last scope variable changing fastest), as read by toulbar2 and
+// other MAP solvers. Costs and potentials are related by cost = -ln(potential).
+
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f {
+
+/// Reads a MARKOV network whose variables all have the same cardinality and whose factors
+/// have one or two variables. Unary factors of a variable are summed; each pairwise factor
+/// becomes an edge of weight 1 with a table term (identical tables share one term). Throws
+/// std::invalid_argument naming `source` and the offending token or factor for a malformed
+/// file, a zero or negative potential (infinite cost), mixed cardinalities or factors of
+/// other arity.
+PairwiseEnergy read_uai(std::istream& in, std::string_view source = "<stream>");
+/// read_uai on a file; throws std::runtime_error naming the path when it cannot be opened.
+PairwiseEnergy read_uai_file(const std::string& path);
+
+/// Writes one unary factor per variable and one pairwise factor per edge (table
+/// weight * cost(a, b)), potentials exp(-cost) with 17 significant digits. Throws
+/// std::invalid_argument when a cost is outside the range a double potential can carry
+/// (about -709 to 745).
+void write_uai(const PairwiseEnergy& energy, std::ostream& out);
+/// write_uai to a file; throws std::runtime_error naming the path on failure.
+void write_uai_file(const PairwiseEnergy& energy, const std::string& path);
+
+}  // namespace c2f

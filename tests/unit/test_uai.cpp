@@ -1,0 +1,92 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "c2f/core/uai.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+TEST_CASE("UAI round trips keep every energy value", "[uai]") {
+  Rng rng(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int num_labels = 1 + trial % 4;
+    const PairwiseEnergy energy = random_energy(rng, 2 + trial % 9, num_labels, 3 * (trial % 5));
+    std::stringstream file;
+    write_uai(energy, file);
+    const PairwiseEnergy back = read_uai(file, "round-trip");
+    REQUIRE(back.num_variables() == energy.num_variables());
+    REQUIRE(back.num_labels() == num_labels);
+    CHECK(back.edges().size() == energy.edges().size());
+    for (int sample = 0; sample < 10; ++sample) {
+      const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
+      CHECK(close_relative(back.evaluate(x), energy.evaluate(x), 1e-12));
+    }
+  }
+}
+
+TEST_CASE("a hand-written UAI file reads as the energy it describes", "[uai]") {
+  // Two binary variables: unaries (0.5, 0.25) on x0 and potential 1 on x1 given twice
+  // (summed), and a pairwise factor that favours equal labels.
+  std::istringstream file(R"(MARKOV
+2
+2 2
+4
+1 0
+1 1
+1 1
+2 0 1
+
+2
+0.5 0.25
+2
+1 1
+2
+1 0.5
+4
+1 0.5
+0.25 1
+)");
+  const PairwiseEnergy energy = read_uai(file, "hand.uai");
+  CHECK(energy.num_variables() == 2);
+  CHECK(energy.unary(0, 0) == Approx(-std::log(0.5)));
+  CHECK(energy.unary(1, 1) == Approx(-std::log(0.5)));
+  // x = (1, 0): -ln 0.25 - ln 1 - ln 1 - ln 0.25
+  CHECK(energy.evaluate(Labeling{1, 0}) == Approx(-2 * std::log(0.25)));
+  CHECK(energy.evaluate(Labeling{0, 1}) == Approx(-std::log(0.5) - std::log(0.5) - std::log(0.5)));
+}
+
+TEST_CASE("malformed UAI files give errors naming the problem", "[uai][validation]") {
+  auto error_of = [](const std::string& text) {
+    std::istringstream in(text);
+    try {
+      (void)read_uai(in, "bad.uai");
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error_of("BAYES 1 2 0"),
+             Catch::Contains("bad.uai: token 1: network type 'BAYES' is not supported"));
+  CHECK_THAT(error_of("MARKOV 2 2 3 0"),
+             Catch::Contains("variable 1 has cardinality 3, variable 0 has 2"));
+  CHECK_THAT(error_of("MARKOV 2 2 2 1 3 0 1 1"), Catch::Contains("factor 0 has 3 variables"));
+  CHECK_THAT(error_of("MARKOV 2 2 2 1 2 0 0"),
+             Catch::Contains("factor 0 joins variable 0 to itself"));
+  CHECK_THAT(error_of("MARKOV 2 2 2 1 1 5"),
+             Catch::Contains("a variable of factor 0 5 is out of range"));
+  CHECK_THAT(error_of("MARKOV 1 2 1 1 0 3 1 1 1"),
+             Catch::Contains("factor 0 has 3 table entries, expected 2"));
+  CHECK_THAT(error_of("MARKOV 1 2 1 1 0 2 1 0"), Catch::Contains("potential 0.000000 is not > 0"));
+  CHECK_THAT(error_of("MARKOV 1 2 1 1 0 2 1 x"),
+             Catch::Contains("expected a potential of factor 0, got 'x'"));
+  CHECK_THAT(error_of("MARKOV 1 2 1 1 0 2 1"), Catch::Contains("unexpected end of file"));
+  CHECK_THROWS_WITH(read_uai_file("/nonexistent.uai"),
+                    Catch::Contains("cannot open UAI file '/nonexistent.uai'"));
+  const PairwiseEnergy huge(1, 2, {0.0, 1000.0}, {}, {});
+  std::ostringstream out;
+  CHECK_THROWS_WITH(write_uai(huge, out),
+                    Catch::Contains("unary of variable 0: cost 1000.000000 cannot be written"));
+}
