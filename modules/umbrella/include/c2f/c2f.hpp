@@ -21,6 +21,8 @@
 #include "c2f/driver/options.hpp"
 #include "c2f/driver/rules.hpp"
 #include "c2f/driver/summary.hpp"
+#include "c2f/vision/absolute_difference_cost.hpp"
+#include "c2f/vision/image_io.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/partition_list.hpp"

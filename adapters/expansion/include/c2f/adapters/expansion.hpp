@@ -7,7 +7,10 @@
 // Each move's binary problem goes straight into the max-flow graph when all its pairwise
 // terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
 // QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
-// energy of the new labeling does not increase.
+// energy of the new labeling is lower than the current one (so the energy never increases,
+// and moves that only trade equal-energy labelings are not taken: a sweep without an
+// accepted move means no move found a lower energy, which for submodular moves means none
+// exists).
 
 #include <cmath>
 #include <cstdint>
@@ -26,8 +29,8 @@ namespace c2f {
 struct ExpansionOptions {
   LabelOrder order = LabelOrder::sequential;
   std::uint64_t seed = 1;  ///< for LabelOrder::random
-  /// A move is accepted when E_new <= E_old - tolerance * max(1, |E_old|); 0 accepts every
-  /// move that does not increase the energy.
+  /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
+  /// that lowers the energy is accepted.
   double tolerance = 0.0;
 
   /// Empty when usable, else a message naming the field.
@@ -102,7 +105,7 @@ class ExpansionSolver {
     }
     if (changed == 0) return energy_value_;
     const double candidate_energy = energy.evaluate_unchecked(candidate_);
-    if (candidate_energy <=
+    if (candidate_energy <
         energy_value_ - options_.tolerance * std::max(1.0, std::abs(energy_value_))) {
       labeling_.swap(candidate_);
       energy_value_ = candidate_energy;

@@ -98,7 +98,7 @@ class SwapSolver {
     }
     if (changed_ == 0) return energy_value_;
     const double candidate_energy = energy.evaluate_unchecked(candidate_);
-    if (candidate_energy <= energy_value_) {
+    if (candidate_energy < energy_value_) {  // strict: no equal-energy churn
       labeling_.swap(candidate_);
       energy_value_ = candidate_energy;
     } else {
