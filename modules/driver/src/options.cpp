@@ -23,6 +23,24 @@ InitialLabeling initial_labeling_from_string(std::string_view text) {
                               "' (expected unary_argmin or zero)");
 }
 
+std::string_view to_string(LevelTransfer transfer) {
+  switch (transfer) {
+    case LevelTransfer::exact:
+      return "exact";
+    case LevelTransfer::majority:
+      return "majority";
+  }
+  return "unknown";
+}
+
+LevelTransfer level_transfer_from_string(std::string_view text) {
+  for (LevelTransfer transfer : {LevelTransfer::exact, LevelTransfer::majority}) {
+    if (to_string(transfer) == text) return transfer;
+  }
+  throw std::invalid_argument("unknown level transfer '" + std::string(text) +
+                              "' (expected exact or majority)");
+}
+
 std::string Options::validate() const {
   for (std::size_t i = 0; i < plateau_steps.size(); ++i) {
     if (plateau_steps[i] < 1) {

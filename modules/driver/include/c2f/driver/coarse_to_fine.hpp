@@ -51,12 +51,17 @@ Labeling initial_labeling(const E& energy, InitialLabeling kind) {
 /// including step 0 of every level, with the energy of the current labeling (equal to the
 /// energy of the ground labeling it stands for, by Theorem 1).
 ///
+/// With LevelTransfer::exact (the default) every level must refine the previous one and the
+/// energy is handed down unchanged; LevelTransfer::majority accepts any level sequence and
+/// hands labels down by majority vote, which can change the energy at a level switch.
+///
 /// Throws std::invalid_argument when a provided partition does not cover the energy's variables
-/// or does not refine the previous level.
+/// or, with LevelTransfer::exact, does not refine the previous level.
 template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
 Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
                        const Observer& observer = {},
-                       InitialLabeling init = InitialLabeling::unary_argmin) {
+                       InitialLabeling init = InitialLabeling::unary_argmin,
+                       LevelTransfer transfer = LevelTransfer::exact) {
   if (rules.empty())
     throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
   detail::RunClock clock;
@@ -85,7 +90,9 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
     } else if (at_original) {
       start = expand(labeling, *previous);
     } else {
-      start = transfer_labels(labeling, *previous, *partition);
+      start = transfer == LevelTransfer::exact
+                  ? transfer_labels(labeling, *previous, *partition)
+                  : transfer_labels_by_majority(labeling, *previous, *partition);
     }
     solver.bind(level_energy, start);
     const double setup_done = clock.elapsed();
@@ -149,8 +156,8 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
 template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
 Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Options& options,
                        const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, solver, options.rules(), observer,
-                        options.initial_labeling);
+  return coarse_to_fine(energy, levels, solver, options.rules(), observer, options.initial_labeling,
+                        options.level_transfer);
 }
 
 }  // namespace c2f

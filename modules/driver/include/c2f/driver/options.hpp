@@ -20,6 +20,16 @@ std::string_view to_string(InitialLabeling init);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.
 InitialLabeling initial_labeling_from_string(std::string_view text);
 
+/// How a labeling is handed to the next level.
+enum class LevelTransfer {
+  exact,     ///< transfer_labels: same energy; every level must refine the previous one
+  majority,  ///< transfer_labels_by_majority: for schedules that do not refine (energy may change)
+};
+
+std::string_view to_string(LevelTransfer transfer);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+LevelTransfer level_transfer_from_string(std::string_view text);
+
 struct Options {
   /// Refine (on the original problem: finish) when the energy has not decreased over the last
   /// k steps; k = plateau_steps[level], the last entry serving deeper levels. Empty: no such rule.
@@ -35,6 +45,9 @@ struct Options {
   /// Stop once the energy is at or below this value.
   std::optional<double> target_energy;
   InitialLabeling initial_labeling = InitialLabeling::unary_argmin;
+  /// exact unless the partition provider was explicitly allowed to produce levels that do not
+  /// refine each other.
+  LevelTransfer level_transfer = LevelTransfer::exact;
 
   /// Empty when the options are usable, else a message naming the offending field. Options
   /// must contain a rule that ends every level (plateau_steps or max_steps_per_level).

@@ -20,3 +20,15 @@ Labeling transfer_labels(std::span<const Label> labeling, const DensePartition& 
                          const DensePartition& to);
 
 }  // namespace c2f
+
+namespace c2f {
+
+/// For level sequences that do not refine each other (allowed only on request): every group of
+/// `to` takes the label most of its variables had under `labeling` on `from` (ties: the lower
+/// label). Equals transfer_labels when `to` refines `from`; otherwise the energy of the
+/// result can differ from the energy of `labeling`. Throws std::invalid_argument on size
+/// mismatch.
+Labeling transfer_labels_by_majority(std::span<const Label> labeling, const DensePartition& from,
+                                     const DensePartition& to);
+
+}  // namespace c2f

@@ -1,0 +1,68 @@
+#pragma once
+// Colour passing (Kersting et al. 2009) adapted to vision energies as in the paper's section
+// 3.3: CP(N_L, N_iter), the partition after N_iter colour-passing iterations with unary split
+// threshold N_L.
+//
+// Factor graph: one unary factor per variable and one pairwise factor per edge, connected to
+// BOTH endpoints (the reference implementation connected only the first endpoint; see
+// local_grouping for what it computed). Initial colours: all variables one colour; a unary
+// factor's colour is the ordered tuple of its N_L lowest-cost labels (ties broken by label
+// index); a pairwise factor's colour is its (term, weight). One iteration: every pairwise
+// factor takes the colour of its signature (own colour, endpoint colours: sorted for
+// symmetric terms, in order for asymmetric ones), then every variable takes the colour of
+// (own colour, own unary factor's colour, multiset of its pairwise factors' colours, with the
+// endpoint position for asymmetric terms). Signatures are compared exactly, so two different
+// signatures never share a colour. Increasing N_L splits every variable (and unary factor)
+// colour by the N_L-th lowest-cost label. Both operations refine the partition.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/lift/dense_partition.hpp"
+
+namespace c2f {
+
+/// The `count` lowest-cost labels of `row` in increasing cost order, ties broken by the lower
+/// label. Requires 1 <= count <= row.size().
+void lowest_cost_labels(std::span<const double> row, std::size_t count, std::span<Label> out);
+
+class ColourPassing {
+ public:
+  /// The state CP(labels, 0): every variable in one group. The energy must outlive this
+  /// object. Throws std::invalid_argument unless 1 <= labels <= num_labels.
+  ColourPassing(const PairwiseEnergy& energy, int labels);
+
+  /// One colour-passing iteration (N_iter + 1). Returns true when the variable partition
+  /// became finer.
+  bool iterate();
+  /// N_L + 1: splits every group by the members' N_L-th lowest-cost label. Throws
+  /// std::logic_error when N_L already equals the number of labels.
+  void increase_labels();
+
+  [[nodiscard]] int labels() const noexcept { return labels_; }
+  [[nodiscard]] int iterations() const noexcept { return iterations_; }
+  [[nodiscard]] std::size_t num_groups() const noexcept { return num_variable_colours_; }
+  [[nodiscard]] std::span<const std::uint32_t> variable_colours() const noexcept {
+    return variable_colour_;
+  }
+  /// The current partition CP(labels(), iterations()).
+  [[nodiscard]] DensePartition partition() const;
+
+ private:
+  const PairwiseEnergy* energy_;
+  int labels_;
+  int iterations_ = 0;
+  std::vector<std::uint32_t> variable_colour_;
+  std::size_t num_variable_colours_ = 1;
+  std::vector<std::uint32_t> unary_colour_;
+  std::vector<std::uint32_t> pair_colour_;
+  std::vector<char> pair_symmetric_;
+  std::vector<Label> last_label_;     // the labels_-th lowest-cost label of every variable
+  std::vector<double> last_cost_;     // and its cost, for finding the next one
+  std::vector<std::size_t> offsets_;  // incident edges of each variable (CSR)
+  std::vector<std::uint32_t> incident_;
+};
+
+}  // namespace c2f

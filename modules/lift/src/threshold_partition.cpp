@@ -1,0 +1,70 @@
+#include "c2f/lift/threshold_partition.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace c2f {
+
+namespace {
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  std::size_t find(std::size_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+}  // namespace
+
+DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape, double tau,
+                                   int radius) {
+  if (energy.num_variables() != shape.size()) {
+    throw std::invalid_argument("threshold_partition: the energy has " +
+                                std::to_string(energy.num_variables()) +
+                                " variables, the grid has " + std::to_string(shape.size()));
+  }
+  if (!(tau >= 0.0)) throw std::invalid_argument("threshold_partition: tau must be >= 0");
+  if (radius < 1) throw std::invalid_argument("threshold_partition: radius must be >= 1");
+  const auto w = static_cast<long>(shape.width), h = static_cast<long>(shape.height);
+  const auto L = static_cast<std::size_t>(energy.num_labels());
+  DisjointSets sets(shape.size());
+  auto within = [&](std::size_t a, std::size_t b) {
+    const double* ra = energy.unaries().data() + a * L;
+    const double* rb = energy.unaries().data() + b * L;
+    double distance = 0.0;
+    for (std::size_t l = 0; l < L && distance <= tau; ++l) distance += std::abs(ra[l] - rb[l]);
+    return distance <= tau;
+  };
+  for (long y = 0; y < h; ++y) {
+    for (long x = 0; x < w; ++x) {
+      const auto v = static_cast<std::size_t>(y * w + x);
+      // The forward half of the window: each unordered pair once.
+      for (long dy = 0; dy <= radius; ++dy) {
+        for (long dx = -radius; dx <= radius; ++dx) {
+          if (dy == 0 && dx <= 0) continue;
+          const long x2 = x + dx, y2 = y + dy;
+          if (x2 < 0 || x2 >= w || y2 >= h) continue;
+          const auto u = static_cast<std::size_t>(y2 * w + x2);
+          if (sets.find(u) != sets.find(v) && within(v, u)) sets.unite(v, u);
+        }
+      }
+    }
+  }
+  std::vector<std::int64_t> roots(shape.size());
+  for (std::size_t v = 0; v < roots.size(); ++v) roots[v] = static_cast<std::int64_t>(sets.find(v));
+  return DensePartition::from_ids(roots);
+}
+
+}  // namespace c2f

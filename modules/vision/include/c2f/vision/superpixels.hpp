@@ -1,0 +1,34 @@
+#pragma once
+// SLIC / SLICO superpixels (OpenCV ximgproc) as partitions.
+
+#include <opencv2/core.hpp>
+#include <string_view>
+
+#include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/schedule.hpp"
+
+namespace c2f::vision {
+
+enum class SlicAlgorithm { slic, slico };
+
+std::string_view to_string(SlicAlgorithm algorithm);
+SlicAlgorithm slic_algorithm_from_string(std::string_view text);
+
+struct SlicOptions {
+  SlicAlgorithm algorithm = SlicAlgorithm::slico;
+  float ruler = 10.0F;  ///< compactness (SLIC only; SLICO adapts it)
+  int iterations = 10;
+  int min_element_percent =
+      25;  ///< enforce connectivity: merge segments smaller than this % of the region
+};
+
+/// Superpixels of an 8-bit colour image with the given region size (pixels per side), as a
+/// partition of its pixels (v = y * width + x). Throws std::invalid_argument for an empty or
+/// non-8-bit-3-channel image or region_size < 2.
+DensePartition slic_partition(const cv::Mat& image, int region_size,
+                              const SlicOptions& options = {});
+
+/// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied.
+SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options = {});
+
+}  // namespace c2f::vision

@@ -1,0 +1,50 @@
+#include "c2f/vision/superpixels.hpp"
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc/slic.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace c2f::vision {
+
+std::string_view to_string(SlicAlgorithm algorithm) {
+  return algorithm == SlicAlgorithm::slic ? "slic" : "slico";
+}
+
+SlicAlgorithm slic_algorithm_from_string(std::string_view text) {
+  if (text == "slic") return SlicAlgorithm::slic;
+  if (text == "slico") return SlicAlgorithm::slico;
+  throw std::invalid_argument("unknown SLIC algorithm '" + std::string(text) +
+                              "' (expected slic or slico)");
+}
+
+DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
+  if (image.empty() || image.type() != CV_8UC3) {
+    throw std::invalid_argument("slic_partition: the image must be non-empty 8-bit 3-channel");
+  }
+  if (region_size < 2) throw std::invalid_argument("slic_partition: region size must be >= 2");
+  cv::Mat lab;
+  cv::cvtColor(image, lab, cv::COLOR_BGR2Lab);
+  const int algorithm =
+      options.algorithm == SlicAlgorithm::slic ? cv::ximgproc::SLIC : cv::ximgproc::SLICO;
+  auto slic = cv::ximgproc::createSuperpixelSLIC(lab, algorithm, region_size, options.ruler);
+  slic->iterate(options.iterations);
+  slic->enforceLabelConnectivity(options.min_element_percent);
+  cv::Mat labels;
+  slic->getLabels(labels);
+  std::vector<std::int64_t> ids(static_cast<std::size_t>(labels.rows) * labels.cols);
+  for (int y = 0; y < labels.rows; ++y) {
+    const int* row = labels.ptr<int>(y);
+    for (int x = 0; x < labels.cols; ++x)
+      ids[static_cast<std::size_t>(y) * labels.cols + x] = row[x];
+  }
+  return DensePartition::from_ids(ids);
+}
+
+SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
+  return [image = image.clone(), options](int region_size) {
+    return slic_partition(image, region_size, options);
+  };
+}
+
+}  // namespace c2f::vision

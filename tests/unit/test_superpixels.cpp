@@ -1,0 +1,70 @@
+#include <catch2/catch.hpp>
+
+#include <opencv2/imgproc.hpp>
+
+#include "c2f/lift/schedule.hpp"
+#include "c2f/vision/partition_image.hpp"
+#include "c2f/vision/superpixels.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+
+namespace {
+cv::Mat quadrants() {
+  cv::Mat image(48, 64, CV_8UC3, cv::Scalar(30, 30, 200));
+  cv::rectangle(image, {32, 0, 32, 24}, cv::Scalar(200, 40, 40), cv::FILLED);
+  cv::rectangle(image, {0, 24, 32, 24}, cv::Scalar(40, 200, 40), cv::FILLED);
+  cv::rectangle(image, {32, 24, 32, 24}, cv::Scalar(220, 220, 220), cv::FILLED);
+  return image;
+}
+}  // namespace
+
+TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[vision][slic]") {
+  const cv::Mat image = quadrants();
+  const DensePartition superpixels = slic_partition(image, 8);
+  CHECK(superpixels.num_variables() == 48 * 64);
+  CHECK(superpixels.num_groups() > 4);
+  CHECK(superpixels == slic_partition(image, 8));  // deterministic
+  // No superpixel straddles two flat quadrants.
+  for (std::size_t g = 0; g < superpixels.num_groups(); ++g) {
+    const auto members = superpixels.members(g);
+    const auto quadrant = [](VariableIndex v) { return (v % 64 >= 32) + 2 * (v / 64 >= 24); };
+    for (const VariableIndex v : members) CHECK(quadrant(v) == quadrant(members[0]));
+  }
+  c2f::test::Rng rng(1);
+  const PairwiseEnergy energy = c2f::test::random_grid_energy(rng, 64, 48, 3);
+  ScheduleProvider provider(Schedule::parse("slic:24 slic:12 slic:6"), {64, 48},
+                            slic_source(image));
+  auto a = provider.next(energy), b = provider.next(energy), c = provider.next(energy);
+  REQUIRE((a && b && c));
+  CHECK(b->is_refinement_of(*a));
+  CHECK(c->is_refinement_of(*b));
+  CHECK(a->num_groups() < c->num_groups());
+  CHECK_THROWS_WITH(slic_partition(image, 1), Catch::Contains("region size must be >= 2"));
+  CHECK_THROWS_WITH(slic_partition(cv::Mat(), 8), Catch::Contains("non-empty 8-bit 3-channel"));
+}
+
+TEST_CASE("partition pictures colour the largest groups and group means", "[vision][render]") {
+  // Groups: 0 has 3 pixels, 1 has 2, 2 has 1 (a 3x2 grid).
+  const DensePartition partition({0, 0, 1, 0, 1, 2}, 3);
+  const cv::Mat largest = render_largest_groups(partition, {3, 2}, 2);
+  REQUIRE(largest.size() == cv::Size(3, 2));
+  const cv::Vec3b first = largest.at<cv::Vec3b>(0, 0), second = largest.at<cv::Vec3b>(0, 2);
+  CHECK(first != cv::Vec3b(0, 0, 0));
+  CHECK(second != cv::Vec3b(0, 0, 0));
+  CHECK(first != second);
+  CHECK(largest.at<cv::Vec3b>(1, 0) == first);
+  CHECK(largest.at<cv::Vec3b>(1, 2) == cv::Vec3b(0, 0, 0));  // group 2 is not among the 2 largest
+
+  cv::Mat image(2, 3, CV_8UC3, cv::Scalar(0, 0, 0));
+  image.at<cv::Vec3b>(0, 0) = {30, 0, 0};
+  image.at<cv::Vec3b>(0, 1) = {60, 0, 0};
+  image.at<cv::Vec3b>(1, 0) = {90, 0, 0};
+  const cv::Mat means = render_group_means(partition, image);
+  CHECK(means.at<cv::Vec3b>(0, 1) == cv::Vec3b(60, 0, 0));  // (30 + 60 + 90) / 3
+  CHECK_THROWS_WITH(render_group_means(partition, cv::Mat(3, 3, CV_8UC3)),
+                    Catch::Contains("the image has 9"));
+  CHECK_THROWS_WITH(write_image("/nonexistent-dir/p.png", means),
+                    Catch::Contains("/nonexistent-dir/p.png"));
+}
