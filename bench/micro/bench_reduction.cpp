@@ -12,28 +12,15 @@
 #include <random>
 
 #include "c2f/c2f.hpp"
+#include "support/stereo_sized_energy.hpp"
 
 namespace {
 
 using namespace c2f;
 
-constexpr GridShape kShape{463, 370};
-constexpr int kLabels = 85;
-
-const PairwiseEnergy& stereo_sized_energy() {
-  static const PairwiseEnergy energy = [] {
-    std::mt19937_64 rng(1);
-    std::uniform_real_distribution<double> cost(0.0, 1.0);
-    std::vector<double> unaries(kShape.size() * kLabels);
-    for (double& u : unaries) u = cost(rng);
-    const double weights[] = {0.3125, 0.15625, 0.125};
-    std::uniform_int_distribution<int> weight_class(0, 2);
-    return make_grid_energy(
-        kShape, Connectivity::four, kLabels, std::move(unaries), PairwiseTerm::tsgo_step(),
-        [&](VariableIndex, VariableIndex) { return weights[weight_class(rng)]; });
-  }();
-  return energy;
-}
+const GridShape kShape = bench::kStereoShape;
+constexpr int kLabels = bench::kStereoLabels;
+using bench::stereo_sized_energy;
 
 std::size_t groups_for(std::int64_t per_mille) {
   return static_cast<std::size_t>(static_cast<double>(kShape.size()) *

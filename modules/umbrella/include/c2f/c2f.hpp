@@ -32,6 +32,7 @@
 #include "c2f/lift/threshold_partition.hpp"
 #include "c2f/lift/transfer.hpp"
 #include "c2f/vision/absolute_difference_cost.hpp"
+#include "c2f/vision/colour_weights.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 #include "c2f/vision/superpixels.hpp"
