@@ -34,9 +34,12 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
                    "[expansion][brute-force]", C2F_MAXFLOW_BACKENDS) {
   Rng rng(2024);
   int qpbo_moves = 0;
-  for (int trial = 0; trial < 120; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     const int num_labels = 2 + trial % 3;
-    const auto terms = test_terms(rng, num_labels);
+    auto terms = test_terms(rng, num_labels);
+    std::vector<double> asymmetric(static_cast<std::size_t>(num_labels * num_labels));
+    for (double& c : asymmetric) c = std::uniform_real_distribution<double>(-1.0, 2.0)(rng);
+    terms.push_back(PairwiseTerm::table(num_labels, asymmetric));  // any table: QPBO handles it
     const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
     const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
     ExpansionSolver<TestType> solver(

@@ -41,6 +41,11 @@ TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[visio
   CHECK(b->is_refinement_of(*a));
   CHECK(c->is_refinement_of(*b));
   CHECK(a->num_groups() < c->num_groups());
+  const auto hierarchy = slic_hierarchy(image, {24, 12, 6});
+  REQUIRE(hierarchy.size() == 3);
+  CHECK(hierarchy[1].is_refinement_of(hierarchy[0]));
+  CHECK(hierarchy[2].is_refinement_of(hierarchy[1]));
+  CHECK_THROWS_WITH(slic_hierarchy(image, {12, 24}), Catch::Contains("region sizes must decrease"));
   CHECK_THROWS_WITH(slic_partition(image, 1), Catch::Contains("region size must be >= 2"));
   CHECK_THROWS_WITH(slic_partition(cv::Mat(), 8), Catch::Contains("non-empty 8-bit 3-channel"));
 }

@@ -41,6 +41,33 @@ DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicO
   return DensePartition::from_ids(ids);
 }
 
+std::vector<DensePartition> slic_hierarchy(const cv::Mat& image, const std::vector<int>& region_sizes,
+                                           const SlicOptions& options) {
+  if (region_sizes.empty()) throw std::invalid_argument("slic_hierarchy: no region sizes");
+  for (std::size_t i = 1; i < region_sizes.size(); ++i) {
+    if (region_sizes[i] >= region_sizes[i - 1]) {
+      throw std::invalid_argument("slic_hierarchy: region sizes must decrease (coarsest first), got " +
+                                  std::to_string(region_sizes[i - 1]) + " then " + std::to_string(region_sizes[i]));
+    }
+  }
+  std::vector<DensePartition> levels;
+  for (const int size : region_sizes) {
+    DensePartition superpixels = slic_partition(image, size, options);
+    if (levels.empty()) {
+      levels.push_back(std::move(superpixels));
+      continue;
+    }
+    const DensePartition& coarser = levels.back();
+    std::vector<std::int64_t> ids(superpixels.num_variables());
+    const auto stride = static_cast<std::int64_t>(superpixels.num_groups());
+    for (std::size_t v = 0; v < ids.size(); ++v) {
+      ids[v] = static_cast<std::int64_t>(coarser.group_of(v)) * stride + superpixels.group_of(v);
+    }
+    levels.push_back(DensePartition::from_ids(ids));
+  }
+  return levels;
+}
+
 SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
   return [image = image.clone(), options](int region_size) {
     return slic_partition(image, region_size, options);

@@ -3,6 +3,7 @@
 
 #include <opencv2/core.hpp>
 #include <string_view>
+#include <vector>
 
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/schedule.hpp"
@@ -27,6 +28,12 @@ struct SlicOptions {
 /// non-8-bit-3-channel image or region_size < 2.
 DensePartition slic_partition(const cv::Mat& image, int region_size,
                               const SlicOptions& options = {});
+
+/// Superpixels for each region size (coarsest first), nested explicitly: every level's group is
+/// (previous level's group, own superpixel), so each level refines the one before it. Throws
+/// std::invalid_argument when the sizes are empty or do not decrease.
+std::vector<DensePartition> slic_hierarchy(const cv::Mat& image, const std::vector<int>& region_sizes,
+                                           const SlicOptions& options = {});
 
 /// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied.
 SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options = {});
