@@ -1,0 +1,42 @@
+#pragma once
+// A stereo cost volume for the left view: cost(x, y, d) for disparities d = 0..L-1, stored
+// pixel-major ((y * width + x) * L + d), the layout PairwiseEnergy takes as unaries. A left
+// pixel (x, y) with disparity d matches the right pixel (x - d, y); (x, d) is "valid" when
+// d <= x.
+
+#include <cstddef>
+#include <vector>
+
+namespace c2f::vision {
+
+class CostVolume {
+ public:
+  /// Throws std::invalid_argument unless width, height and labels are >= 1.
+  CostVolume(std::size_t width, std::size_t height, int labels, double fill = 0.0);
+
+  [[nodiscard]] std::size_t width() const noexcept { return width_; }
+  [[nodiscard]] std::size_t height() const noexcept { return height_; }
+  [[nodiscard]] int labels() const noexcept { return labels_; }
+  [[nodiscard]] bool valid(std::size_t x, int d) const noexcept {
+    return static_cast<std::size_t>(d) <= x;
+  }
+
+  double& at(std::size_t x, std::size_t y, int d) noexcept {
+    return data_[(y * width_ + x) * static_cast<std::size_t>(labels_) +
+                 static_cast<std::size_t>(d)];
+  }
+  [[nodiscard]] double at(std::size_t x, std::size_t y, int d) const noexcept {
+    return data_[(y * width_ + x) * static_cast<std::size_t>(labels_) +
+                 static_cast<std::size_t>(d)];
+  }
+  [[nodiscard]] const std::vector<double>& data() const noexcept { return data_; }
+  /// Moves the costs out (for PairwiseEnergy); the volume is empty afterwards.
+  std::vector<double> release() noexcept { return std::move(data_); }
+
+ private:
+  std::size_t width_, height_;
+  int labels_;
+  std::vector<double> data_;
+};
+
+}  // namespace c2f::vision

@@ -1,0 +1,44 @@
+#pragma once
+// TSGO's "one iteration of message passing on the fully connected MRF": a normalised
+// cross-bilateral filter of every cost slice, guided by the view's colour image, computed on a
+// coarse spatial grid per colour cluster (reference-algorithms.md section 1.3, step 7).
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "c2f/vision/stereo/cost_volume.hpp"
+
+namespace c2f::vision {
+
+struct ColourClusters {
+  std::vector<int> cluster_of;   ///< per pixel (y * width + x)
+  std::vector<cv::Vec3d> means;  ///< per cluster, BGR; clusters without members are empty
+  std::vector<int> sizes;        ///< members per cluster
+};
+
+/// Median-cut colour quantisation into 2^levels clusters: level l splits every cluster at the
+/// median of channel (l + 1) mod 3 (B = 0, G = 1, R = 2: G, R, B, G, ...). The members of a
+/// cluster are ordered by that channel, stably (raster order among equal values), and split
+/// into halves by count, so pixels equal to the median are divided in raster order. Cluster
+/// colour = mean of its members. Throws std::invalid_argument for an empty or non-8-bit
+/// 3-channel image or levels outside [0, 20].
+ColourClusters median_cut_clusters(const cv::Mat& image, int levels);
+
+struct BilateralOptions {
+  int cell = 18;               ///< grid cell size in pixels (spatial sigma = one cell)
+  double colour_sigma = 0.75;  ///< in 8-bit colour units
+  double cutoff_sigmas = 3.0;  ///< clusters farther apart than cutoff * sigma do not mix
+  int cluster_levels = 12;     ///< 2^12 = 4096 clusters (the reference's 4000 rounded up)
+};
+
+/// Filters every cost slice in place: each pixel splats its cost (and a unit weight)
+/// bilinearly into the 4 surrounding grid nodes of its colour cluster; the grids are blurred
+/// along y then x with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2]; within each node, cluster q
+/// gathers the clusters q' with |mu_q - mu_q'| <= cutoff * sigma with weight
+/// exp(-r^2 / (2 sigma^2)), r = round(|mu_q - mu_q'|); each pixel then reads its cluster's
+/// bilinear interpolation back and divides by the interpolated weight. A constant slice stays
+/// constant. Throws std::invalid_argument when the guide does not match the volume.
+void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
+                            const BilateralOptions& options = {});
+
+}  // namespace c2f::vision

@@ -1,0 +1,53 @@
+#pragma once
+// The TSGO stereo energy: step 1 (cost volume) and step 2 (the 4-connected MRF), for the left
+// view. (The reference also solved the right view's MRF every iteration and never used the
+// result; we do not compute it.)
+
+#include <opencv2/core.hpp>
+#include <string_view>
+
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/vision/stereo/cost_volume.hpp"
+#include "c2f/vision/stereo/tsgo_bilateral.hpp"
+
+namespace c2f::vision {
+
+/// The pairwise term of step 2.
+enum class StereoSmoothness {
+  tsgo_step,  ///< w * (0, 1/6, 1) for |a - b| = 0, 1, >= 2: what TSGO and the reference optimise
+  truncated_linear,  ///< w * min(|a - b|, truncation): the paper's wording
+};
+
+std::string_view to_string(StereoSmoothness smoothness);
+StereoSmoothness stereo_smoothness_from_string(std::string_view text);
+
+struct TsgoOptions {
+  int labels = 85;  ///< disparities 0..labels-1
+  double equalise_tolerance = 0.16;
+  double cost_truncation = 360.0;
+  double transform_threshold = 0.00095;
+  BilateralOptions bilateral;              ///< cluster_levels is set from labels unless overridden
+  bool cluster_levels_from_labels = true;  ///< 12 levels (4096 clusters), 11 when labels < 30
+  StereoSmoothness smoothness = StereoSmoothness::tsgo_step;
+  double truncation = 2.0;  ///< for truncated_linear
+
+  /// Empty when usable, else a message naming the field.
+  [[nodiscard]] std::string validate() const;
+};
+
+struct TsgoCost {
+  CostVolume volume;  ///< filtered unaries of the left view, in (0, 1)
+  cv::Mat left;       ///< the (equalised) left image the weights and the filter use
+  bool equalised;     ///< whether photometric equalisation changed the images
+};
+
+/// TSGO step 1 for the left view: equalisation, gradient features, matching cost, robust
+/// transform, border fill and the cross-bilateral filter. Throws std::invalid_argument for
+/// images that are not 8-bit colour of one size, or invalid options.
+TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options = {});
+
+/// TSGO step 2: the 4-connected grid energy with the volume as unaries and weights from the
+/// L1 colour difference classes of the left image (tsgo_edge_weight). Consumes the volume.
+PairwiseEnergy tsgo_energy(TsgoCost cost, const TsgoOptions& options = {});
+
+}  // namespace c2f::vision

@@ -1,0 +1,211 @@
+#include "c2f/vision/stereo/tsgo_bilateral.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace c2f::vision {
+
+ColourClusters median_cut_clusters(const cv::Mat& image, int levels) {
+  if (image.empty() || image.type() != CV_8UC3) {
+    throw std::invalid_argument("median_cut_clusters: the image must be non-empty 8-bit 3-channel");
+  }
+  if (levels < 0 || levels > 20)
+    throw std::invalid_argument("median_cut_clusters: levels must be in [0, 20]");
+  const auto n = static_cast<std::size_t>(image.total());
+  auto channel = [&](int pixel, int c) {
+    return image.at<cv::Vec3b>(pixel / image.cols, pixel % image.cols)[c];
+  };
+  // Clusters as consecutive ranges of one permutation of the pixels (raster order at first).
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::size_t> bounds{0, n};
+  for (int level = 0; level < levels; ++level) {
+    const int c = (level + 1) % 3;
+    std::vector<std::size_t> next{0};
+    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+      const auto begin = order.begin() + static_cast<std::ptrdiff_t>(bounds[k]);
+      const auto end = order.begin() + static_cast<std::ptrdiff_t>(bounds[k + 1]);
+      // Stable by value, raster order among equal values.
+      std::sort(begin, end, [&](int a, int b) {
+        const auto va = channel(a, c), vb = channel(b, c);
+        return va < vb || (va == vb && a < b);
+      });
+      const std::size_t half = bounds[k] + (bounds[k + 1] - bounds[k]) / 2;
+      next.push_back(half);
+      next.push_back(bounds[k + 1]);
+    }
+    bounds = std::move(next);
+  }
+  ColourClusters clusters;
+  const std::size_t count = bounds.size() - 1;
+  clusters.cluster_of.resize(n);
+  clusters.means.assign(count, cv::Vec3d(0, 0, 0));
+  clusters.sizes.assign(count, 0);
+  for (std::size_t k = 0; k < count; ++k) {
+    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) {
+      const int pixel = order[i];
+      clusters.cluster_of[static_cast<std::size_t>(pixel)] = static_cast<int>(k);
+      clusters.means[k] += cv::Vec3d(image.at<cv::Vec3b>(pixel / image.cols, pixel % image.cols));
+      ++clusters.sizes[k];
+    }
+    if (clusters.sizes[k] > 0) clusters.means[k] *= 1.0 / clusters.sizes[k];
+  }
+  return clusters;
+}
+
+namespace {
+
+/// Grid storage: value[(node * clusters) + q], nodes row-major over gw x gh.
+struct Grid {
+  std::size_t gw, gh, clusters;
+  std::vector<double> value;
+  double& at(std::size_t gx, std::size_t gy, std::size_t q) {
+    return value[(gy * gw + gx) * clusters + q];
+  }
+};
+
+struct Splat {
+  std::size_t gx, gy;
+  double fx, fy;
+};
+
+void blur(Grid& grid, std::vector<double>& scratch) {
+  static const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5),
+                                 std::exp(-2.0)};
+  const std::size_t q = grid.clusters;
+  scratch.assign(grid.value.size(), 0.0);
+  for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along y
+    for (int k = -2; k <= 2; ++k) {
+      const long sy = static_cast<long>(gy) + k;
+      if (sy < 0 || sy >= static_cast<long>(grid.gh)) continue;
+      const double tap = taps[k + 2];
+      for (std::size_t gx = 0; gx < grid.gw; ++gx) {
+        const double* in = &grid.value[(static_cast<std::size_t>(sy) * grid.gw + gx) * q];
+        double* out = &scratch[(gy * grid.gw + gx) * q];
+        for (std::size_t c = 0; c < q; ++c) out[c] += tap * in[c];
+      }
+    }
+  }
+  std::fill(grid.value.begin(), grid.value.end(), 0.0);
+  for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along x
+    for (std::size_t gx = 0; gx < grid.gw; ++gx) {
+      double* out = &grid.value[(gy * grid.gw + gx) * q];
+      for (int k = -2; k <= 2; ++k) {
+        const long sx = static_cast<long>(gx) + k;
+        if (sx < 0 || sx >= static_cast<long>(grid.gw)) continue;
+        const double tap = taps[k + 2];
+        const double* in = &scratch[(gy * grid.gw + static_cast<std::size_t>(sx)) * q];
+        for (std::size_t c = 0; c < q; ++c) out[c] += tap * in[c];
+      }
+    }
+  }
+}
+
+struct RangeNeighbour {
+  std::size_t cluster;
+  double weight;
+};
+
+void mix_clusters(Grid& grid, const std::vector<std::vector<RangeNeighbour>>& neighbours,
+                  std::vector<double>& node) {
+  const std::size_t q = grid.clusters;
+  node.resize(q);
+  for (std::size_t n = 0; n < grid.gw * grid.gh; ++n) {
+    double* values = &grid.value[n * q];
+    std::copy(values, values + q, node.begin());
+    for (std::size_t c = 0; c < q; ++c) {
+      double sum = 0.0;
+      for (const RangeNeighbour& other : neighbours[c]) sum += other.weight * node[other.cluster];
+      values[c] = sum;
+    }
+  }
+}
+
+double interpolate(Grid& grid, const Splat& s, std::size_t q) {
+  return (1 - s.fx) * (1 - s.fy) * grid.at(s.gx, s.gy, q) +
+         s.fx * (1 - s.fy) * grid.at(s.gx + 1, s.gy, q) +
+         (1 - s.fx) * s.fy * grid.at(s.gx, s.gy + 1, q) +
+         s.fx * s.fy * grid.at(s.gx + 1, s.gy + 1, q);
+}
+
+void splat(Grid& grid, const Splat& s, std::size_t q, double value) {
+  grid.at(s.gx, s.gy, q) += (1 - s.fx) * (1 - s.fy) * value;
+  grid.at(s.gx + 1, s.gy, q) += s.fx * (1 - s.fy) * value;
+  grid.at(s.gx, s.gy + 1, q) += (1 - s.fx) * s.fy * value;
+  grid.at(s.gx + 1, s.gy + 1, q) += s.fx * s.fy * value;
+}
+
+}  // namespace
+
+void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
+                            const BilateralOptions& options) {
+  if (guide.type() != CV_8UC3 || static_cast<std::size_t>(guide.cols) != volume.width() ||
+      static_cast<std::size_t>(guide.rows) != volume.height()) {
+    throw std::invalid_argument(
+        "cross_bilateral_filter: the guide must be an 8-bit colour image of the volume's size (" +
+        std::to_string(volume.width()) + "x" + std::to_string(volume.height()) + ")");
+  }
+  if (options.cell < 1 || !(options.colour_sigma > 0.0) || !(options.cutoff_sigmas > 0.0)) {
+    throw std::invalid_argument(
+        "cross_bilateral_filter: cell, colour_sigma and cutoff_sigmas must be > 0");
+  }
+  const ColourClusters clusters = median_cut_clusters(guide, options.cluster_levels);
+  const std::size_t q = clusters.means.size();
+  // Range neighbours of every non-empty cluster (including itself, weight 1).
+  std::vector<std::vector<RangeNeighbour>> neighbours(q);
+  const double cutoff = options.cutoff_sigmas * options.colour_sigma;
+  for (std::size_t a = 0; a < q; ++a) {
+    if (clusters.sizes[a] == 0) continue;
+    for (std::size_t b = 0; b < q; ++b) {
+      if (clusters.sizes[b] == 0) continue;
+      const double distance = cv::norm(clusters.means[a] - clusters.means[b]);
+      if (distance > cutoff) continue;
+      const double r = std::round(distance);
+      neighbours[a].push_back(
+          {b, std::exp(-r * r / (2.0 * options.colour_sigma * options.colour_sigma))});
+    }
+  }
+  const auto cell = static_cast<double>(options.cell);
+  const std::size_t w = volume.width(), h = volume.height();
+  const std::size_t gw = (w - 1) / static_cast<std::size_t>(options.cell) + 2;
+  const std::size_t gh = (h - 1) / static_cast<std::size_t>(options.cell) + 2;
+  std::vector<Splat> splats(w * h);
+  for (std::size_t y = 0; y < h; ++y) {
+    for (std::size_t x = 0; x < w; ++x) {
+      const double sx = static_cast<double>(x) / cell, sy = static_cast<double>(y) / cell;
+      const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
+      splats[y * w + x] = {gx, gy, sx - static_cast<double>(gx), sy - static_cast<double>(gy)};
+    }
+  }
+  std::vector<double> scratch, node;
+  Grid weights{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
+  for (std::size_t p = 0; p < w * h; ++p)
+    splat(weights, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]), 1.0);
+  blur(weights, scratch);
+  mix_clusters(weights, neighbours, node);
+  std::vector<double> denominator(w * h);
+  for (std::size_t p = 0; p < w * h; ++p) {
+    denominator[p] =
+        interpolate(weights, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]));
+  }
+  Grid values{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
+  for (int d = 0; d < volume.labels(); ++d) {
+    std::fill(values.value.begin(), values.value.end(), 0.0);
+    for (std::size_t p = 0; p < w * h; ++p) {
+      splat(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]),
+            volume.at(p % w, p / w, d));
+    }
+    blur(values, scratch);
+    mix_clusters(values, neighbours, node);
+    for (std::size_t p = 0; p < w * h; ++p) {
+      volume.at(p % w, p / w, d) =
+          interpolate(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p])) /
+          denominator[p];
+    }
+  }
+}
+
+}  // namespace c2f::vision

@@ -1,0 +1,205 @@
+#include "c2f/vision/stereo/tsgo_cost.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace c2f::vision {
+
+namespace {
+
+void require_colour_pair(const cv::Mat& left, const cv::Mat& right, const char* who) {
+  if (left.type() != CV_8UC3 || right.type() != CV_8UC3) {
+    throw std::invalid_argument(std::string(who) + ": images must be 8-bit 3-channel");
+  }
+  if (left.size() != right.size()) {
+    throw std::invalid_argument(std::string(who) + ": left is " + std::to_string(left.cols) + "x" +
+                                std::to_string(left.rows) + ", right is " +
+                                std::to_string(right.cols) + "x" + std::to_string(right.rows));
+  }
+}
+
+double signed_sqrt(double v) {
+  return v < 0.0 ? -std::sqrt(-v) : std::sqrt(v);
+}
+
+}  // namespace
+
+EqualisedPair equalise_photometry(const cv::Mat& left, const cv::Mat& right, double tolerance) {
+  require_colour_pair(left, right, "equalise_photometry");
+  cv::Scalar m1, s1, m2, s2;
+  cv::meanStdDev(left, m1, s1);
+  cv::meanStdDev(right, m2, s2);
+  auto relative = [](double a, double b) {
+    return a + b > 0.0 ? std::abs(a - b) * 2.0 / (a + b) : 0.0;
+  };
+  bool differ = false;
+  for (int c = 0; c < 3; ++c)
+    differ = differ || relative(m1[c], m2[c]) > tolerance || relative(s1[c], s2[c]) > tolerance;
+  EqualisedPair result{left.clone(), right.clone(), differ};
+  if (!differ) return result;
+  auto remap = [](cv::Mat& image, const cv::Scalar& mean, const cv::Scalar& stddev,
+                  const cv::Scalar& target_mean, const cv::Scalar& target_std) {
+    for (int y = 0; y < image.rows; ++y) {
+      auto* row = image.ptr<cv::Vec3b>(y);
+      for (int x = 0; x < image.cols; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          const double scale = stddev[c] > 0.0 ? target_std[c] / stddev[c] : 1.0;
+          const double value = (row[x][c] - mean[c]) * scale + target_mean[c];
+          row[x][c] =
+              static_cast<uchar>(std::clamp(value, 0.0, 255.0));  // truncation, as the reference
+        }
+      }
+    }
+  };
+  const cv::Scalar mean = (m1 + m2) * 0.5, stddev = (s1 + s2) * 0.5;
+  remap(result.left, m1, s1, mean, stddev);
+  remap(result.right, m2, s2, mean, stddev);
+  return result;
+}
+
+std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image) {
+  if (image.type() != CV_8UC3 || image.empty()) {
+    throw std::invalid_argument(
+        "signed_sqrt_gradients: the image must be non-empty 8-bit 3-channel");
+  }
+  const int w = image.cols, h = image.rows;
+  std::array<cv::Mat, 6> planes;
+  for (auto& plane : planes) plane = cv::Mat(h, w, CV_64F);
+  const double root2 = std::sqrt(2.0);
+  auto at = [&](int x, int y, int c) {
+    return static_cast<double>(
+        image.at<cv::Vec3b>(std::clamp(y, 0, h - 1), std::clamp(x, 0, w - 1))[c]);
+  };
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        const double dx = at(x + 1, y, c) - at(x - 1, y, c);
+        const double dy = at(x, y + 1, c) - at(x, y - 1, c);
+        const double dx1 = (at(x + 1, y - 1, c) - at(x - 1, y + 1, c)) / root2;
+        const double dy1 = (at(x + 1, y + 1, c) - at(x - 1, y - 1, c)) / root2;
+        planes[2 * c].at<double>(y, x) = signed_sqrt(4.0 * (dx + (dx1 + dy1) / root2));
+        planes[2 * c + 1].at<double>(y, x) = signed_sqrt(4.0 * (dy + (dy1 - dx1) / root2));
+      }
+    }
+  }
+  return planes;
+}
+
+double gradient_scale(const cv::Mat& image) {
+  const auto gradients = signed_sqrt_gradients(image);
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(image, mean, stddev);
+  const double sigma_colour =
+      std::sqrt(stddev[0] * stddev[0] + stddev[1] * stddev[1] + stddev[2] * stddev[2]);
+  double squares = 0.0;
+  for (const cv::Mat& plane : gradients) squares += cv::sum(plane.mul(plane))[0];
+  const double sigma_gradient = std::sqrt(squares / static_cast<double>(image.total()));
+  return sigma_gradient > 0.0 ? sigma_colour / sigma_gradient : 1.0;
+}
+
+std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul) {
+  const auto gradients = signed_sqrt_gradients(image);
+  std::array<cv::Mat, 6> planes;
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    planes[p] = cv::Mat(image.rows, image.cols, CV_8U);
+    for (int y = 0; y < image.rows; ++y) {
+      for (int x = 0; x < image.cols; ++x) {
+        planes[p].at<uchar>(y, x) =
+            static_cast<uchar>(std::clamp(mul * gradients[p].at<double>(y, x) + 128.0, 0.0, 255.0));
+      }
+    }
+  }
+  return planes;
+}
+
+CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
+                                  const std::array<cv::Mat, 6>& right, int labels,
+                                  double truncation) {
+  for (std::size_t p = 0; p < 6; ++p) {
+    if (left[p].type() != CV_8U || right[p].type() != CV_8U || left[p].size() != left[0].size() ||
+        right[p].size() != left[0].size()) {
+      throw std::invalid_argument("gradient_matching_cost: planes must be 8-bit and of one size");
+    }
+  }
+  const auto w = static_cast<std::size_t>(left[0].cols), h = static_cast<std::size_t>(left[0].rows);
+  CostVolume volume(w, h, labels, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t y = 0; y < h; ++y) {
+    for (std::size_t x = 0; x < w; ++x) {
+      for (int d = 0; d < labels && volume.valid(x, d); ++d) {
+        int sum = 0;
+        for (std::size_t p = 0; p < 6; ++p) {
+          sum += std::abs(left[p].at<uchar>(static_cast<int>(y), static_cast<int>(x)) -
+                          right[p].at<uchar>(static_cast<int>(y), static_cast<int>(x) - d));
+        }
+        volume.at(x, y, d) = std::min(static_cast<double>(sum), truncation);
+      }
+    }
+  }
+  return volume;
+}
+
+double erf_approximation(double x) {
+  constexpr double p = 0.3275911, a1 = 0.254829592, a2 = -0.284496736, a3 = 1.421413741,
+                   a4 = -1.453152027, a5 = 1.061405429;
+  const double sign = x < 0.0 ? -1.0 : 1.0;
+  x = std::abs(x);
+  const double t = 1.0 / (1.0 + p * x);
+  const double y = 1.0 - (((((a5 * t + a4) * t) + a3) * t + a2) * t + a1) * t * std::exp(-x * x);
+  return sign * y;
+}
+
+RobustTransformParameters robust_transform(CostVolume& volume, double threshold) {
+  const std::size_t pixels = volume.width() * volume.height();
+  double sum_minimum = 0.0, sum_excess = 0.0;
+  std::size_t valid_cells = 0;
+  for (std::size_t y = 0; y < volume.height(); ++y) {
+    for (std::size_t x = 0; x < volume.width(); ++x) {
+      double minimum = std::numeric_limits<double>::infinity();
+      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d)
+        minimum = std::min(minimum, volume.at(x, y, d));
+      sum_minimum += minimum;
+      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
+        sum_excess += volume.at(x, y, d) - minimum;
+        ++valid_cells;
+      }
+    }
+  }
+  RobustTransformParameters parameters{};
+  parameters.mean_minimum = sum_minimum / static_cast<double>(pixels);
+  parameters.mean_excess = sum_excess / static_cast<double>(valid_cells);
+  if (!(parameters.mean_minimum > 0.0)) {
+    throw std::invalid_argument(
+        "robust_transform: the mean per-pixel minimum cost is 0 (every pixel matches "
+        "perfectly), the TSGO transform is undefined");
+  }
+  const double spread = parameters.mean_excess - parameters.mean_minimum;
+  parameters.slope = threshold * spread * spread;
+  if (parameters.slope > 2.5) parameters.slope *= 0.91;
+  const double mm = parameters.mean_minimum;
+  for (std::size_t y = 0; y < volume.height(); ++y) {
+    for (std::size_t x = 0; x < volume.width(); ++x) {
+      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
+        double& cost = volume.at(x, y, d);
+        cost = (1.0 + erf_approximation(parameters.slope * (cost - mm) / mm)) / 2.0;
+      }
+    }
+  }
+  return parameters;
+}
+
+void fill_left_border(CostVolume& volume) {
+  const std::size_t w = volume.width();
+  for (std::size_t y = 0; y < volume.height(); ++y) {
+    for (std::size_t x = 0; x < w; ++x) {
+      for (int d = static_cast<int>(x) + 1; d < volume.labels(); ++d) {
+        const std::size_t source = std::min(static_cast<std::size_t>(d), w - 1);
+        volume.at(x, y, d) = volume.at(source, y, std::min(d, static_cast<int>(source)));
+      }
+    }
+  }
+}
+
+}  // namespace c2f::vision

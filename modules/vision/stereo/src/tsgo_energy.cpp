@@ -1,0 +1,64 @@
+#include "c2f/vision/stereo/tsgo_energy.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "c2f/core/grid.hpp"
+#include "c2f/vision/colour_weights.hpp"
+#include "c2f/vision/stereo/tsgo_cost.hpp"
+
+namespace c2f::vision {
+
+std::string_view to_string(StereoSmoothness smoothness) {
+  return smoothness == StereoSmoothness::tsgo_step ? "tsgo_step" : "truncated_linear";
+}
+
+StereoSmoothness stereo_smoothness_from_string(std::string_view text) {
+  if (text == "tsgo_step") return StereoSmoothness::tsgo_step;
+  if (text == "truncated_linear") return StereoSmoothness::truncated_linear;
+  throw std::invalid_argument("unknown smoothness '" + std::string(text) +
+                              "' (expected tsgo_step or truncated_linear)");
+}
+
+std::string TsgoOptions::validate() const {
+  if (labels < 2) return "labels must be >= 2, got " + std::to_string(labels);
+  if (!(equalise_tolerance >= 0.0)) return "equalise_tolerance must be >= 0";
+  if (!(cost_truncation > 0.0)) return "cost_truncation must be > 0";
+  if (!(transform_threshold > 0.0)) return "transform_threshold must be > 0";
+  if (bilateral.cell < 1) return "bilateral.cell must be >= 1";
+  if (!(bilateral.colour_sigma > 0.0)) return "bilateral.colour_sigma must be > 0";
+  if (!(truncation > 0.0) || !std::isfinite(truncation)) return "truncation must be finite and > 0";
+  return {};
+}
+
+TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options) {
+  if (const std::string problem = options.validate(); !problem.empty()) {
+    throw std::invalid_argument("TSGO options: " + problem);
+  }
+  EqualisedPair pair = equalise_photometry(left, right, options.equalise_tolerance);
+  const double mul = gradient_scale(pair.left);
+  CostVolume volume =
+      gradient_matching_cost(gradient_planes(pair.left, mul), gradient_planes(pair.right, mul),
+                             options.labels, options.cost_truncation);
+  robust_transform(volume, options.transform_threshold);
+  fill_left_border(volume);
+  BilateralOptions bilateral = options.bilateral;
+  if (options.cluster_levels_from_labels) bilateral.cluster_levels = options.labels < 30 ? 11 : 12;
+  cross_bilateral_filter(volume, pair.left, bilateral);
+  return TsgoCost{std::move(volume), pair.left, pair.applied};
+}
+
+PairwiseEnergy tsgo_energy(TsgoCost cost, const TsgoOptions& options) {
+  const GridShape shape{cost.volume.width(), cost.volume.height()};
+  const int labels = cost.volume.labels();
+  const PairwiseTerm term = options.smoothness == StereoSmoothness::tsgo_step
+                                ? PairwiseTerm::tsgo_step()
+                                : PairwiseTerm::truncated_linear(options.truncation);
+  const cv::Mat& image = cost.left;
+  return make_grid_energy(
+      shape, Connectivity::four, labels, cost.volume.release(), term,
+      [&](VariableIndex u, VariableIndex v) { return tsgo_edge_weight(image, u, v); });
+}
+
+}  // namespace c2f::vision

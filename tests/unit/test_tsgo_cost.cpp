@@ -1,0 +1,178 @@
+// TSGO step 1, stage by stage, on tiny images where the expected values follow by hand.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "c2f/vision/stereo/tsgo_bilateral.hpp"
+#include "c2f/vision/stereo/tsgo_cost.hpp"
+#include "c2f/vision/stereo/tsgo_energy.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+
+TEST_CASE("photometric equalisation remaps both images to the average statistics",
+          "[stereo][tsgo]") {
+  // Left: values 90 and 110 in every channel (mean 100, std 10); right: 140 and 160 (mean 150).
+  cv::Mat left(1, 2, CV_8UC3), right(1, 2, CV_8UC3);
+  left.at<cv::Vec3b>(0, 0) = {90, 90, 90};
+  left.at<cv::Vec3b>(0, 1) = {110, 110, 110};
+  right.at<cv::Vec3b>(0, 0) = {140, 140, 140};
+  right.at<cv::Vec3b>(0, 1) = {160, 160, 160};
+  const EqualisedPair pair = equalise_photometry(left, right);
+  CHECK(pair.applied);  // |100 - 150| * 2 / 250 = 0.4 > 0.16
+  // Both map to mean 125, std 10: 115 and 135.
+  CHECK(pair.left.at<cv::Vec3b>(0, 0) == cv::Vec3b(115, 115, 115));
+  CHECK(pair.left.at<cv::Vec3b>(0, 1) == cv::Vec3b(135, 135, 135));
+  CHECK(pair.right.at<cv::Vec3b>(0, 0) == cv::Vec3b(115, 115, 115));
+  CHECK(pair.right.at<cv::Vec3b>(0, 1) == cv::Vec3b(135, 135, 135));
+  // Within tolerance: unchanged.
+  const EqualisedPair same = equalise_photometry(left, left);
+  CHECK_FALSE(same.applied);
+  CHECK(cv::norm(same.left, left, cv::NORM_L1) == 0.0);
+  CHECK_THROWS_WITH(equalise_photometry(left, cv::Mat(1, 3, CV_8UC3)),
+                    Catch::Contains("left is 2x1, right is 3x1"));
+}
+
+TEST_CASE("gradient features of a ramp follow the formula", "[stereo][tsgo]") {
+  // Horizontal ramp I(x) = x in every channel: dx = 2, dy = 0, dx1 = dy1 = 2 / sqrt2, so
+  // gx = 4 (2 + 2) = 16 (signed sqrt 4) and gy = 0 in the interior.
+  cv::Mat ramp(3, 5, CV_8UC3);
+  for (int x = 0; x < 5; ++x) {
+    for (int y = 0; y < 3; ++y) ramp.at<cv::Vec3b>(y, x) = cv::Vec3b(x, x, x);
+  }
+  const auto gradients = signed_sqrt_gradients(ramp);
+  CHECK(gradients[0].at<double>(1, 2) == Approx(4.0));
+  CHECK(gradients[1].at<double>(1, 2) == Approx(0.0).margin(1e-12));
+  CHECK(gradients[4].at<double>(1, 2) == Approx(4.0));  // channel R, x gradient
+  // Clamped borders: at x = 0, dx = I(1) - I(0) = 1, dx1 = dy1 = 1 / sqrt2: gx = 4 (1 + 1) = 8.
+  CHECK(gradients[0].at<double>(1, 0) == Approx(std::sqrt(8.0)));
+  const auto planes = gradient_planes(ramp, 2.0);
+  CHECK(planes[0].at<uchar>(1, 2) == 136);  // 2 * 4 + 128
+  CHECK(planes[1].at<uchar>(1, 2) == 128);
+  const cv::Mat flat(4, 4, CV_8UC3, cv::Scalar(50, 60, 70));
+  CHECK(gradient_scale(flat) == 1.0);  // no gradients: neutral scale
+  for (const cv::Mat& plane : gradient_planes(flat, 3.0))
+    CHECK(cv::countNonZero(plane != 128) == 0);
+}
+
+TEST_CASE("the matching cost sums six plane differences and truncates", "[stereo][tsgo]") {
+  std::array<cv::Mat, 6> left, right;
+  for (std::size_t p = 0; p < 6; ++p) {
+    left[p] = cv::Mat(1, 3, CV_8U, cv::Scalar(100));
+    right[p] = cv::Mat(1, 3, CV_8U, cv::Scalar(100));
+  }
+  left[0].at<uchar>(0, 2) = 130;  // pixel 2 differs by 30 in plane 0 from right pixels 0..2
+  right[3].at<uchar>(0, 1) = 40;  // right pixel 1 differs by 60 in plane 3
+  const CostVolume volume = gradient_matching_cost(left, right, 3, 80.0);
+  CHECK(volume.at(2, 0, 0) == 30.0);  // right pixel 2
+  CHECK(volume.at(2, 0, 1) == 80.0);  // right pixel 1: 30 + 60 = 90, truncated to 80
+  CHECK(volume.at(2, 0, 2) == 30.0);  // right pixel 0
+  CHECK(volume.at(1, 0, 0) == 60.0);
+  CHECK(std::isnan(volume.at(0, 0, 1)));  // leaves the right image
+}
+
+TEST_CASE("the erf approximation is within its published error", "[stereo][tsgo]") {
+  for (double x = -4.0; x <= 4.0; x += 0.01)
+    CHECK(std::abs(erf_approximation(x) - std::erf(x)) < 1.5e-7);
+}
+
+TEST_CASE("the robust transform uses the documented data-driven slope", "[stereo][tsgo]") {
+  // One row, 3 pixels, 2 labels; valid cells: (0,0)=20, (1,0)=10, (1,1)=50, (2,0)=70, (2,1)=30.
+  CostVolume volume(3, 1, 2, std::nan(""));
+  volume.at(0, 0, 0) = 20;
+  volume.at(1, 0, 0) = 10;
+  volume.at(1, 0, 1) = 50;
+  volume.at(2, 0, 0) = 70;
+  volume.at(2, 0, 1) = 30;
+  const RobustTransformParameters p = robust_transform(volume, 0.001);
+  const double mm = (20 + 10 + 30) / 3.0;                // 20
+  const double avmin = (0 + 0 + 40 + 40 + 0) / 5.0;      // 16
+  const double t = 0.001 * (avmin - mm) * (avmin - mm);  // 0.016 (< 2.5: not scaled)
+  CHECK(p.mean_minimum == Approx(mm));
+  CHECK(p.mean_excess == Approx(avmin));
+  CHECK(p.slope == Approx(t));
+  CHECK(volume.at(1, 0, 1) == Approx((1 + erf_approximation(t * (50 - mm) / mm)) / 2));
+  CHECK(volume.at(0, 0, 0) == Approx(0.5));  // cost == mm
+  CHECK(std::isnan(volume.at(0, 0, 1)));
+  CostVolume perfect(2, 1, 1, 0.0);
+  CHECK_THROWS_WITH(robust_transform(perfect), Catch::Contains("mean per-pixel minimum cost is 0"));
+}
+
+TEST_CASE("the left border takes the first valid pixel's cost", "[stereo][tsgo]") {
+  CostVolume volume(3, 1, 4, std::nan(""));
+  for (std::size_t x = 0; x < 3; ++x) {
+    for (int d = 0; d <= static_cast<int>(x); ++d) volume.at(x, 0, d) = 10.0 * x + d;
+  }
+  fill_left_border(volume);
+  CHECK(volume.at(0, 0, 1) == volume.at(1, 0, 1));  // 11
+  CHECK(volume.at(0, 0, 2) == volume.at(2, 0, 2));  // 22
+  CHECK(volume.at(1, 0, 2) == 22.0);
+  CHECK(volume.at(0, 0, 3) == 22.0);  // d = 3 is valid nowhere: last pixel, largest valid d
+  for (double value : volume.data()) CHECK_FALSE(std::isnan(value));
+}
+
+TEST_CASE("median cut splits by G, R, B and divides ties in raster order", "[stereo][tsgo]") {
+  // Four pixels; level 0 splits on G, level 1 on R.
+  cv::Mat image(1, 4, CV_8UC3);
+  image.at<cv::Vec3b>(0, 0) = {0, 10, 200};
+  image.at<cv::Vec3b>(0, 1) = {0, 10, 100};
+  image.at<cv::Vec3b>(0, 2) = {0, 50, 0};
+  image.at<cv::Vec3b>(0, 3) = {0, 50, 30};
+  const ColourClusters clusters = median_cut_clusters(image, 2);
+  REQUIRE(clusters.means.size() == 4);
+  // G splits {0, 1} from {2, 3}; R then orders each half.
+  CHECK(clusters.cluster_of == std::vector<int>{1, 0, 2, 3});
+  CHECK(clusters.means[1] == cv::Vec3d(0, 10, 200));
+  // All pixels equal: halves in raster order.
+  const cv::Mat grey(1, 4, CV_8UC3, cv::Scalar(7, 7, 7));
+  CHECK(median_cut_clusters(grey, 1).cluster_of == std::vector<int>{0, 0, 1, 1});
+}
+
+TEST_CASE("the cross-bilateral filter keeps constants and does not mix distant colours",
+          "[stereo][tsgo]") {
+  // Left half black, right half white; cost 0.2 on black pixels, 0.8 on white ones.
+  cv::Mat guide(20, 40, CV_8UC3, cv::Scalar(0, 0, 0));
+  guide(cv::Rect(20, 0, 20, 20)).setTo(cv::Scalar(255, 255, 255));
+  CostVolume volume(40, 20, 2, 0.0);
+  for (std::size_t y = 0; y < 20; ++y) {
+    for (std::size_t x = 0; x < 40; ++x) {
+      volume.at(x, y, 0) = x < 20 ? 0.2 : 0.8;
+      volume.at(x, y, 1) = 0.5;
+    }
+  }
+  BilateralOptions options;
+  options.cell = 6;
+  options.cluster_levels = 4;
+  cross_bilateral_filter(volume, guide, options);
+  for (std::size_t y = 0; y < 20; ++y) {
+    for (std::size_t x = 0; x < 40; ++x) {
+      CHECK(volume.at(x, y, 0) == Approx(x < 20 ? 0.2 : 0.8).epsilon(1e-12));
+      CHECK(volume.at(x, y, 1) == Approx(0.5).epsilon(1e-12));
+    }
+  }
+  CHECK_THROWS_WITH(cross_bilateral_filter(volume, cv::Mat(5, 5, CV_8UC3), options),
+                    Catch::Contains("(40x20)"));
+}
+
+TEST_CASE("the TSGO energy uses colour weight classes and the chosen smoothness",
+          "[stereo][tsgo]") {
+  cv::Mat left(1, 3, CV_8UC3, cv::Scalar(100, 100, 100));
+  left.at<cv::Vec3b>(0, 1) = {104, 100, 100};  // D = 4 to pixel 0: class 0.3125
+  left.at<cv::Vec3b>(0, 2) = {124, 100, 100};  // D = 20 to pixel 1: class 0.125
+  TsgoCost cost{CostVolume(3, 1, 3, 0.5), left, false};
+  TsgoOptions options;
+  options.labels = 3;
+  const PairwiseEnergy energy = tsgo_energy(cost, options);
+  REQUIRE(energy.edges().size() == 2);
+  CHECK(energy.edges()[0].weight == 0.3125);
+  CHECK(energy.edges()[1].weight == 0.125);
+  CHECK(energy.terms()[0].kind() == TermKind::tsgo_step);
+  options.smoothness = StereoSmoothness::truncated_linear;
+  const PairwiseEnergy linear =
+      tsgo_energy(TsgoCost{CostVolume(3, 1, 3, 0.5), left, false}, options);
+  CHECK(linear.terms()[0].kind() == TermKind::truncated_linear);
+  options.labels = 1;
+  CHECK_THAT(options.validate(), Catch::Contains("labels must be >= 2, got 1"));
+}
