@@ -48,6 +48,7 @@ std::string Options::validate() const {
              std::to_string(plateau_steps[i]);
     }
   }
+  if (plateau_steps_at_original < 0) return "plateau_steps_at_original must be >= 0 (0: plateau_steps applies)";
   if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0.0) {
     return "plateau_tolerance must be finite and >= 0";
   }
@@ -68,7 +69,11 @@ Rules Options::rules() const {
     throw std::invalid_argument("coarse-to-fine options: " + problem);
   }
   Rules rules;
-  if (!plateau_steps.empty()) rules.add(no_decrease(plateau_steps, plateau_tolerance));
+  if (!plateau_steps.empty()) {
+    rules.add(no_decrease(plateau_steps, plateau_tolerance, plateau_steps_at_original));
+  } else if (plateau_steps_at_original > 0) {
+    rules.add(no_decrease({plateau_steps_at_original}, plateau_tolerance));
+  }
   if (max_steps_per_level > 0) rules.add(level_step_limit(max_steps_per_level));
   if (max_total_steps > 0) rules.add(total_step_limit(max_total_steps));
   if (time_limit_seconds > 0.0) rules.add(time_limit(time_limit_seconds));

@@ -36,7 +36,8 @@ TerminationReason termination_reason_from_string(std::string_view text) {
   throw std::invalid_argument("unknown termination reason '" + std::string(text) + "'");
 }
 
-Rule no_decrease(std::vector<int> steps_per_level, double tolerance) {
+Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_at_original) {
+  if (steps_at_original < 0) throw std::invalid_argument("no_decrease: steps_at_original must be >= 0");
   if (steps_per_level.empty()) {
     throw std::invalid_argument("no_decrease: steps_per_level is empty");
   }
@@ -47,9 +48,9 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance) {
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
     throw std::invalid_argument("no_decrease: tolerance must be finite and >= 0");
   }
-  return [ks = std::move(steps_per_level), tolerance](const Progress& p) -> Verdict {
+  return [ks = std::move(steps_per_level), tolerance, steps_at_original](const Progress& p) -> Verdict {
     const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
-    const auto k = static_cast<std::size_t>(ks[index]);
+    const auto k = static_cast<std::size_t>(p.at_original && steps_at_original > 0 ? steps_at_original : ks[index]);
     const auto& history = p.level_energies;
     if (history.size() < k + 1) return {};
     const double before = history[history.size() - 1 - k];

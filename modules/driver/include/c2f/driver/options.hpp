@@ -34,6 +34,9 @@ struct Options {
   /// Refine (on the original problem: finish) when the energy has not decreased over the last
   /// k steps; k = plateau_steps[level], the last entry serving deeper levels. Empty: no such rule.
   std::vector<int> plateau_steps{4};
+  /// On the original problem (the last level) use this k instead (0: plateau_steps applies).
+  /// With single-label moves, one sweep (k = number of labels) is the usual convergence test.
+  int plateau_steps_at_original = 0;
   /// A decrease counts only when larger than plateau_tolerance * max(1, |E|).
   double plateau_tolerance = 0.0;
   /// Refine after this many steps on one level (0: no limit).

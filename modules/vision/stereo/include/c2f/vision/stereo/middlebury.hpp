@@ -1,0 +1,52 @@
+#pragma once
+// Middlebury scenes as laid out in ../shared/data (see its README): left/right views, GT
+// disparity PNGs with a per-year divisor (0 = unknown), official masks (2001/2003), right-view
+// GT (2003/2005/2006) for a left-right occlusion check, and scenes.csv describing them.
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+namespace c2f::vision {
+
+/// One row of scenes.csv.
+struct SceneRow {
+  int year = 0;
+  std::string scene;
+  std::string dir;         ///< relative to the data root
+  int width = 0, height = 0;
+  double gt_divisor = 0.0;
+  std::vector<std::string> files;
+};
+
+/// Reads scenes.csv (header year,scene,dir,width,height,scale,gt_divisor,...,files,...).
+/// Throws std::runtime_error naming the path and line for a missing file or malformed row.
+std::vector<SceneRow> read_scene_table(const std::string& path);
+
+/// A GT disparity PNG divided by `divisor`, as CV_32F; unknown pixels (stored 0) are NaN.
+/// Palette PNGs decode to their grey levels. Throws std::invalid_argument for divisor <= 0 and
+/// std::runtime_error naming the path for an unreadable file.
+cv::Mat load_gt_disparity(const std::string& path, double divisor);
+
+/// Non-occluded pixels by the left-right check: a left pixel with known GT d is occluded when
+/// x - round(d) leaves the image, the right GT there is unknown, or |d - dR(x - round(d))| > 1.
+/// CV_8U, 255 = non-occluded with known GT. Throws std::invalid_argument on size mismatch.
+cv::Mat left_right_nonoccluded(const cv::Mat& gt_left, const cv::Mat& gt_right);
+
+/// An official mask PNG (nonocc.png): 255 = evaluate. CV_8U with values 0 or 255.
+cv::Mat load_mask(const std::string& path);
+
+struct StereoScene {
+  std::string name;
+  cv::Mat left, right;   ///< 8-bit BGR
+  cv::Mat gt;            ///< CV_32F left-view disparity, NaN = unknown; empty without GT
+  cv::Mat nonoccluded;   ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
+  std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
+};
+
+/// Loads a scene row from the data root: views, GT (divisor from the row), and the
+/// non-occluded mask: the official nonocc.png when present, else the left-right check when
+/// disp_right.png is present. Throws naming the missing file.
+StereoScene load_scene(const SceneRow& row, const std::string& data_root);
+
+}  // namespace c2f::vision

@@ -1,0 +1,116 @@
+#include "c2f/vision/stereo/middlebury.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "c2f/vision/image_io.hpp"
+
+namespace c2f::vision {
+
+namespace {
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream stream(line);
+  while (std::getline(stream, field, ',')) fields.push_back(field);
+  return fields;
+}
+}  // namespace
+
+std::vector<SceneRow> read_scene_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open scene table '" + path + "'");
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error("scene table '" + path + "' is empty");
+  const auto header = split_csv(line);
+  auto column = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw std::runtime_error("scene table '" + path + "': no column '" + name + "'");
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  const std::size_t year = column("year"), scene = column("scene"), dir = column("dir"), width = column("width"),
+                    height = column("height"), divisor = column("gt_divisor"), files = column("files");
+  std::vector<SceneRow> rows;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const auto fields = split_csv(line);
+    try {
+      if (fields.size() != header.size()) throw std::runtime_error("has " + std::to_string(fields.size()) + " fields");
+      SceneRow row;
+      row.year = std::stoi(fields[year]);
+      row.scene = fields[scene];
+      row.dir = fields[dir];
+      row.width = std::stoi(fields[width]);
+      row.height = std::stoi(fields[height]);
+      row.gt_divisor = std::stod(fields[divisor]);
+      std::istringstream names(fields[files]);
+      for (std::string name; names >> name;) row.files.push_back(name);
+      rows.push_back(row);
+    } catch (const std::exception& error) {
+      throw std::runtime_error("scene table '" + path + "' line " + std::to_string(number) + ": " + error.what());
+    }
+  }
+  return rows;
+}
+
+cv::Mat load_gt_disparity(const std::string& path, double divisor) {
+  if (!(divisor > 0.0)) throw std::invalid_argument("GT divisor must be > 0, got " + std::to_string(divisor));
+  const cv::Mat raw = load_grey_image(path);
+  cv::Mat gt(raw.size(), CV_32F);
+  for (int y = 0; y < raw.rows; ++y) {
+    for (int x = 0; x < raw.cols; ++x) {
+      const uchar v = raw.at<uchar>(y, x);
+      gt.at<float>(y, x) = v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / divisor);
+    }
+  }
+  return gt;
+}
+
+cv::Mat left_right_nonoccluded(const cv::Mat& gt_left, const cv::Mat& gt_right) {
+  if (gt_left.size() != gt_right.size() || gt_left.type() != CV_32F || gt_right.type() != CV_32F) {
+    throw std::invalid_argument("left_right_nonoccluded: the GT maps must be CV_32F of one size");
+  }
+  cv::Mat mask(gt_left.size(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < gt_left.rows; ++y) {
+    for (int x = 0; x < gt_left.cols; ++x) {
+      const float d = gt_left.at<float>(y, x);
+      if (std::isnan(d)) continue;
+      const int xr = x - static_cast<int>(std::lround(d));
+      if (xr < 0 || xr >= gt_left.cols) continue;
+      const float dr = gt_right.at<float>(y, xr);
+      if (!std::isnan(dr) && std::abs(d - dr) <= 1.0F) mask.at<uchar>(y, x) = 255;
+    }
+  }
+  return mask;
+}
+
+cv::Mat load_mask(const std::string& path) {
+  cv::Mat mask = load_grey_image(path);
+  return mask == 255;
+}
+
+StereoScene load_scene(const SceneRow& row, const std::string& data_root) {
+  const std::filesystem::path dir = std::filesystem::path(data_root) / row.dir;
+  auto has = [&](const std::string& name) { return std::find(row.files.begin(), row.files.end(), name) != row.files.end(); };
+  StereoScene scene;
+  scene.name = row.scene;
+  scene.left = load_colour_image((dir / "left.png").string());
+  scene.right = load_colour_image((dir / "right.png").string());
+  if (has("disp_left.png")) scene.gt = load_gt_disparity((dir / "disp_left.png").string(), row.gt_divisor);
+  scene.nonoccluded_source = "none";
+  if (has("nonocc.png")) {
+    scene.nonoccluded = load_mask((dir / "nonocc.png").string());
+    scene.nonoccluded_source = "official mask";
+  } else if (has("disp_right.png") && !scene.gt.empty()) {
+    scene.nonoccluded = left_right_nonoccluded(scene.gt, load_gt_disparity((dir / "disp_right.png").string(), row.gt_divisor));
+    scene.nonoccluded_source = "left-right check";
+  }
+  return scene;
+}
+
+}  // namespace c2f::vision
