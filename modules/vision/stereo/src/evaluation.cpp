@@ -8,20 +8,30 @@
 namespace c2f::vision {
 
 std::string BadPixelRates::brief() const {
-  char text[160];
-  std::snprintf(text, sizeof text, "bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
-                100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0], 100 * nonoccluded[2],
-                100 * all[2]);
+  char text[200];
+  if (nonoccluded_pixels == 0) {
+    std::snprintf(text, sizeof text,
+                  "bad>1: all %.2f%% (bad>0.5 %.2f%%, bad>2 %.2f%%; no occlusion mask)",
+                  100 * all[1], 100 * all[0], 100 * all[2]);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
+                  100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0],
+                  100 * nonoccluded[2], 100 * all[2]);
+  }
   return text;
 }
 
-BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded) {
+BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
+                              const cv::Mat& nonoccluded) {
   if (disparity.type() != CV_32F || gt.type() != CV_32F || disparity.size() != gt.size()) {
-    throw std::invalid_argument("bad_pixel_rates: disparity and GT must be CV_32F maps of one size");
+    throw std::invalid_argument(
+        "bad_pixel_rates: disparity and GT must be CV_32F maps of one size");
   }
   const bool masked = !nonoccluded.empty();
   if (masked && (nonoccluded.type() != CV_8U || nonoccluded.size() != gt.size())) {
-    throw std::invalid_argument("bad_pixel_rates: the non-occluded mask must be CV_8U of the GT's size");
+    throw std::invalid_argument(
+        "bad_pixel_rates: the non-occluded mask must be CV_8U of the GT's size");
   }
   BadPixelRates rates;
   std::array<std::size_t, 3> bad_all{}, bad_nonocc{};
@@ -44,10 +54,13 @@ BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt, const
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t t = 0; t < 3; ++t) {
-    rates.all[t] = rates.known_pixels ? static_cast<double>(bad_all[t]) / static_cast<double>(rates.known_pixels) : nan;
-    rates.nonoccluded[t] = rates.nonoccluded_pixels
-                               ? static_cast<double>(bad_nonocc[t]) / static_cast<double>(rates.nonoccluded_pixels)
-                               : nan;
+    rates.all[t] = rates.known_pixels
+                       ? static_cast<double>(bad_all[t]) / static_cast<double>(rates.known_pixels)
+                       : nan;
+    rates.nonoccluded[t] =
+        rates.nonoccluded_pixels
+            ? static_cast<double>(bad_nonocc[t]) / static_cast<double>(rates.nonoccluded_pixels)
+            : nan;
   }
   rates.reference_variant = static_cast<double>(reference_bad) / static_cast<double>(gt.total());
   return rates;

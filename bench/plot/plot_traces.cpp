@@ -1,0 +1,140 @@
+// c2f-plot: draws anytime traces (CSV: time_s,level,step,energy,num_vars[,error]) as PNG line
+// plots of energy against time and, when every trace has it, error against time.
+//
+// Usage: c2f-plot -o PLOT.png [--title T] [--column energy|error] NAME=TRACE.csv [NAME=TRACE.csv
+// ...]
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Series {
+  std::string name;
+  std::vector<double> time, value;
+};
+
+Series read_trace(const std::string& name, const std::string& path, const std::string& column) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open trace '" + path + "'");
+  std::string header;
+  std::getline(in, header);
+  std::vector<std::string> columns;
+  std::stringstream hs(header);
+  for (std::string c; std::getline(hs, c, ',');) columns.push_back(c);
+  const auto time_col = std::find(columns.begin(), columns.end(), "time_s") - columns.begin();
+  const auto value_col = std::find(columns.begin(), columns.end(), column) - columns.begin();
+  if (time_col == static_cast<long>(columns.size()) ||
+      value_col == static_cast<long>(columns.size())) {
+    throw std::runtime_error("trace '" + path + "' has no time_s or " + column + " column");
+  }
+  Series series{name, {}, {}};
+  std::string line;
+  for (int number = 2; std::getline(in, line); ++number) {
+    std::stringstream ls(line);
+    std::vector<std::string> fields;
+    for (std::string f; std::getline(ls, f, ',');) fields.push_back(f);
+    if (fields.size() != columns.size()) {
+      throw std::runtime_error("trace '" + path + "' line " + std::to_string(number) + " has " +
+                               std::to_string(fields.size()) + " fields");
+    }
+    series.time.push_back(std::stod(fields[static_cast<std::size_t>(time_col)]));
+    series.value.push_back(std::stod(fields[static_cast<std::size_t>(value_col)]));
+  }
+  if (series.time.empty()) throw std::runtime_error("trace '" + path + "' has no rows");
+  return series;
+}
+
+std::string format(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, std::abs(v) >= 1000 ? "%.0f" : "%.4g", v);
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string out, title = "energy against time", column = "energy";
+  std::vector<std::pair<std::string, std::string>> inputs;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if ((arg == "-o" || arg == "--out") && i + 1 < argc) {
+        out = argv[++i];
+      } else if (arg == "--title" && i + 1 < argc) {
+        title = argv[++i];
+      } else if (arg == "--column" && i + 1 < argc) {
+        column = argv[++i];
+      } else if (arg == "-h" || arg == "--help") {
+        std::cout << "usage: c2f-plot -o PLOT.png [--title T] [--column energy|error] "
+                     "NAME=TRACE.csv ...\n";
+        return 0;
+      } else if (arg.find('=') != std::string::npos) {
+        inputs.emplace_back(arg.substr(0, arg.find('=')), arg.substr(arg.find('=') + 1));
+      } else {
+        throw std::invalid_argument("unexpected argument '" + arg + "' (expected NAME=TRACE.csv)");
+      }
+    }
+    if (out.empty() || inputs.empty())
+      throw std::invalid_argument("need -o PLOT.png and at least one NAME=TRACE.csv");
+    std::vector<Series> series;
+    for (const auto& [name, path] : inputs) series.push_back(read_trace(name, path, column));
+    double t_max = 0, v_min = std::numeric_limits<double>::infinity(), v_max = -v_min;
+    for (const Series& s : series) {
+      t_max = std::max(t_max, s.time.back());
+      for (double v : s.value) v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+    }
+    if (v_max == v_min) v_max = v_min + 1;
+    const int width = 900, height = 560, left = 110, right = 30, top = 50, bottom = 70;
+    cv::Mat plot(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+    auto px = [&](double t) {
+      return left + static_cast<int>((width - left - right) * (t_max > 0 ? t / t_max : 0));
+    };
+    auto py = [&](double v) {
+      return height - bottom -
+             static_cast<int>((height - top - bottom) * (v - v_min) / (v_max - v_min));
+    };
+    const cv::Scalar black(0, 0, 0), grey(210, 210, 210);
+    for (int k = 0; k <= 5; ++k) {
+      const double t = t_max * k / 5, v = v_min + (v_max - v_min) * k / 5;
+      cv::line(plot, {px(t), top}, {px(t), height - bottom}, grey);
+      cv::line(plot, {left, py(v)}, {width - right, py(v)}, grey);
+      cv::putText(plot, format(t), {px(t) - 15, height - bottom + 22}, cv::FONT_HERSHEY_SIMPLEX,
+                  0.45, black);
+      cv::putText(plot, format(v), {8, py(v) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+    }
+    cv::rectangle(plot, {left, top}, {width - right, height - bottom}, black);
+    cv::putText(plot, title, {left, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.7, black, 2);
+    cv::putText(plot, "time (s, run clock)", {width / 2 - 70, height - 20},
+                cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+    cv::putText(plot, column, {8, top - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+    const cv::Scalar colours[] = {
+        {200, 60, 30}, {30, 60, 220}, {40, 160, 40}, {160, 40, 160}, {0, 140, 200}};
+    for (std::size_t s = 0; s < series.size(); ++s) {
+      const cv::Scalar colour = colours[s % 5];
+      std::vector<cv::Point> points;
+      for (std::size_t i = 0; i < series[s].time.size(); ++i)
+        points.emplace_back(px(series[s].time[i]), py(series[s].value[i]));
+      cv::polylines(plot, points, false, colour, 2, cv::LINE_AA);
+      cv::line(plot, {width - right - 200, top + 20 + 22 * static_cast<int>(s)},
+               {width - right - 170, top + 20 + 22 * static_cast<int>(s)}, colour, 3);
+      cv::putText(plot, series[s].name, {width - right - 160, top + 25 + 22 * static_cast<int>(s)},
+                  cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+    }
+    if (!cv::imwrite(out, plot)) throw std::runtime_error("cannot write '" + out + "'");
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-plot: error: " << error.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

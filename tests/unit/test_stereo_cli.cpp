@@ -1,0 +1,91 @@
+// c2f-stereo's command line: errors name the input and give exit code 2; a small run writes
+// its outputs.
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+#include "support/synthetic_stereo.hpp"
+
+namespace {
+
+struct Result {
+  int exit_code;
+  std::string output;
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string(C2F_STEREO_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string output;
+  std::array<char, 512> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+}  // namespace
+
+TEST_CASE("c2f-stereo rejects bad input with clear messages", "[stereo][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli";
+  std::filesystem::create_directories(dir);
+  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 3);
+  const std::string left = (dir / "left.png").string(), right = (dir / "right.png").string();
+  cv::imwrite(left, pair.left);
+  cv::imwrite(right, pair.right);
+  cv::imwrite((dir / "small.png").string(), pair.left(cv::Rect(0, 0, 20, 20)));
+  const std::string out = (dir / "out").string();
+
+  Result r = run((dir / "missing.png").string() + " " + right + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output,
+             Catch::Contains("LEFT: file '") && Catch::Contains("missing.png' does not exist"));
+  r = run(left + " " + (dir / "small.png").string() + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("LEFT is 48x32, RIGHT is 20x20"));
+  r = run(left + " " + right + " -o " + out + " --labels 1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--labels: must be >= 2, got 1"));
+  r = run(left + " " + right + " -o " + out + " --gt " + left + " --gt-divisor 0");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--gt-divisor: must be > 0"));
+  r = run(left + " " + right + " -o " + out + " --schedule cp:1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("level 'cp:1': expected cp:N_L,N_iter"));
+  r = run(left + " " + right + " -o " + out + " --solver magic");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--solver: 'magic' is not one of expansion, swap, lbp"));
+  r = run(left + " " + right);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("-o/--out: an output directory is required"));
+  CHECK_FALSE(std::filesystem::exists(out));  // nothing written by failed runs
+  r = run("--help");
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("Usage: c2f-stereo LEFT RIGHT -o OUTDIR"));
+}
+
+TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-run";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 5);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  cv::Mat gt8;
+  pair.gt.convertTo(gt8, CV_8U, 4.0);
+  cv::imwrite((dir / "gt.png").string(), gt8);
+  const Result r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+                       (dir / "out").string() + " --labels 10 --gt " + (dir / "gt.png").string() +
+                       " --gt-divisor 4 --save-partitions -q");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* file : {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
+                           "trace.csv", "summary.txt", "partition-level0.png"}) {
+    CHECK(std::filesystem::exists(dir / "out" / file));
+  }
+}
