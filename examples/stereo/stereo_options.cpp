@@ -21,7 +21,8 @@ std::string paper_schedule(const std::string& partition) {
   if (partition == "local") return "local:1,1 local:2,1 local:3,1 flat";
   if (partition == "threshold") return "threshold:50 threshold:5 threshold:1 flat";
   if (partition == "slic") return "slic:32 slic:16 slic:8 flat";
-  throw std::invalid_argument("--partition: '" + partition + "' is not one of cp, local, threshold, slic");
+  throw std::invalid_argument("--partition: '" + partition +
+                              "' is not one of cp, local, threshold, slic");
 }
 }  // namespace
 
@@ -32,35 +33,48 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
       "       c2f-stereo --scene NAME [--data DIR] -o OUTDIR [options]\n\n"
-      "Writes disparity.pfm, disparity.png (16-bit, value x 256), disparity-colour.png, trace.csv,\n"
+      "Writes disparity.pfm, disparity.png (16-bit, value x 256), disparity-colour.png, "
+      "trace.csv,\n"
       "summary.txt and, with ground truth, error.png. Progress goes to stderr.\n\nOptions");
-  visible.add_options()
-      ("help,h", "show this help")
-      ("out,o", po::value(&command.out_dir), "output directory (created)")
-      ("scene", po::value(&command.scene), "scene name from DATA/scenes.csv (loads views, GT and masks)")
-      ("data", po::value(&command.data)->default_value("../shared/data"), "data root for --scene")
-      ("labels", po::value(&command.tsgo.labels)->default_value(85), "number of disparity labels (>= 2)")
-      ("schedule", po::value(&command.schedule_text)->default_value("paper"),
-       "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), or levels such as \"cp:2,2 cp:2,3 flat\"")
-      ("partition", po::value(&partition), "partition kind for --schedule paper: cp (default), local, threshold, slic")
-      ("allow-non-refining", po::bool_switch(&command.allow_non_refining),
-       "accept levels that do not refine each other (labels handed down by majority vote)")
-      ("solver", po::value(&command.solver)->default_value("expansion"), "expansion, swap or lbp")
-      ("smoothness", po::value(&smoothness)->default_value("tsgo_step"), "tsgo_step or truncated_linear (the paper's wording)")
-      ("time-limit", po::value(&command.time_limit)->default_value(0.0), "seconds on the run clock (0: none)")
-      ("max-steps", po::value(&command.max_steps)->default_value(0), "solver steps in the whole run (0: none)")
-      ("plateau", po::value(&command.plateau)->default_value(4), "refine after this many steps without decrease")
-      ("final-plateau", po::value(&command.final_plateau)->default_value(0),
-       "stop after this many steps without decrease on the original problem (0: one sweep: labels moves for "
-       "expansion, label pairs for swap, 4 iterations for lbp)")
-      ("trace", po::value(&command.trace), "trace CSV (default OUTDIR/trace.csv)")
-      ("gt", po::value(&command.gt), "ground-truth disparity PNG (0 = unknown)")
-      ("gt-divisor", po::value(&command.gt_divisor)->default_value(1.0), "GT PNG value per disparity pixel")
-      ("gt-right", po::value(&command.gt_right), "right-view GT PNG, for a left-right occlusion mask")
-      ("mask", po::value(&command.mask), "non-occluded mask PNG (255 = evaluate)")
-      ("downscale", po::value(&command.downscale)->default_value(1), "shrink images by this integer factor (GT divided by it)")
-      ("save-partitions", po::bool_switch(&command.save_partitions), "write pictures of each level's partition")
-      ("quiet,q", po::bool_switch(&command.quiet), "no progress on stderr");
+  visible.add_options()("help,h", "show this help")("out,o", po::value(&command.out_dir),
+                                                    "output directory (created)")(
+      "scene", po::value(&command.scene),
+      "scene name from DATA/scenes.csv (loads views, GT and masks)")(
+      "data", po::value(&command.data)->default_value("../shared/data"), "data root for --scene")(
+      "labels", po::value(&command.tsgo.labels)->default_value(85),
+      "number of disparity labels (>= 2)")(
+      "schedule", po::value(&command.schedule_text)->default_value("paper"),
+      "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-cc (the same split into connected "
+      "components), "
+      "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")(
+      "partition", po::value(&partition),
+      "partition kind for --schedule paper: cp (default), local, threshold, slic")(
+      "allow-non-refining", po::bool_switch(&command.allow_non_refining),
+      "accept levels that do not refine each other (labels handed down by majority vote)")(
+      "solver", po::value(&command.solver)->default_value("expansion"), "expansion, swap or lbp")(
+      "smoothness", po::value(&smoothness)->default_value("tsgo_step"),
+      "tsgo_step or truncated_linear (the paper's wording)")(
+      "time-limit", po::value(&command.time_limit)->default_value(0.0),
+      "seconds on the run clock (0: none)")("max-steps",
+                                            po::value(&command.max_steps)->default_value(0),
+                                            "solver steps in the whole run (0: none)")(
+      "plateau", po::value(&command.plateau)->default_value(4),
+      "refine after this many steps without decrease")(
+      "final-plateau", po::value(&command.final_plateau)->default_value(0),
+      "stop after this many steps without decrease on the original problem (0: one sweep: labels "
+      "moves for "
+      "expansion, label pairs for swap, 4 iterations for lbp)")(
+      "trace", po::value(&command.trace), "trace CSV (default OUTDIR/trace.csv)")(
+      "gt", po::value(&command.gt), "ground-truth disparity PNG (0 = unknown)")(
+      "gt-divisor", po::value(&command.gt_divisor)->default_value(1.0),
+      "GT PNG value per disparity pixel")("gt-right", po::value(&command.gt_right),
+                                          "right-view GT PNG, for a left-right occlusion mask")(
+      "mask", po::value(&command.mask), "non-occluded mask PNG (255 = evaluate)")(
+      "downscale", po::value(&command.downscale)->default_value(1),
+      "shrink images by this integer factor (GT divided by it)")(
+      "save-partitions", po::bool_switch(&command.save_partitions),
+      "write pictures of each level's partition")("quiet,q", po::bool_switch(&command.quiet),
+                                                  "no progress on stderr");
   po::options_description hidden;
   hidden.add_options()("images", po::value<std::vector<std::string>>(), "LEFT RIGHT");
   po::options_description all;
@@ -78,9 +92,11 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
     std::cout << visible << "\n";
     return std::nullopt;
   }
-  const auto images = vm.count("images") ? vm["images"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  const auto images =
+      vm.count("images") ? vm["images"].as<std::vector<std::string>>() : std::vector<std::string>{};
   if (command.scene.empty()) {
-    if (images.size() != 2) throw std::invalid_argument("give LEFT and RIGHT images, or --scene NAME (see --help)");
+    if (images.size() != 2)
+      throw std::invalid_argument("give LEFT and RIGHT images, or --scene NAME (see --help)");
     command.left = images[0];
     command.right = images[1];
     require_file(command.left, "LEFT");
@@ -88,8 +104,11 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   } else if (!images.empty()) {
     throw std::invalid_argument("--scene replaces LEFT RIGHT; give one or the other");
   }
-  if (command.out_dir.empty()) throw std::invalid_argument("-o/--out: an output directory is required");
-  if (command.tsgo.labels < 2) throw std::invalid_argument("--labels: must be >= 2, got " + std::to_string(command.tsgo.labels));
+  if (command.out_dir.empty())
+    throw std::invalid_argument("-o/--out: an output directory is required");
+  if (command.tsgo.labels < 2)
+    throw std::invalid_argument("--labels: must be >= 2, got " +
+                                std::to_string(command.tsgo.labels));
   if (command.downscale < 1) throw std::invalid_argument("--downscale: must be >= 1");
   if (!(command.gt_divisor > 0.0)) throw std::invalid_argument("--gt-divisor: must be > 0");
   if (command.time_limit < 0.0) throw std::invalid_argument("--time-limit: must be >= 0");
@@ -97,7 +116,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   if (command.plateau < 1) throw std::invalid_argument("--plateau: must be >= 1");
   if (command.final_plateau < 0) throw std::invalid_argument("--final-plateau: must be >= 0");
   if (command.solver != "expansion" && command.solver != "swap" && command.solver != "lbp") {
-    throw std::invalid_argument("--solver: '" + command.solver + "' is not one of expansion, swap, lbp");
+    throw std::invalid_argument("--solver: '" + command.solver +
+                                "' is not one of expansion, swap, lbp");
   }
   if ((!command.gt_right.empty() || !command.mask.empty()) && command.gt.empty()) {
     throw std::invalid_argument("--gt-right and --mask need --gt");
@@ -111,19 +131,22 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
     throw std::invalid_argument(std::string("--smoothness: ") + error.what());
   }
   if (!partition.empty() && command.schedule_text != "paper") {
-    throw std::invalid_argument("--partition applies to --schedule paper only; write other levels explicitly");
+    throw std::invalid_argument(
+        "--partition applies to --schedule paper only; write other levels explicitly");
   }
-  const std::string text = command.schedule_text == "paper" ? paper_schedule(partition.empty() ? "cp" : partition)
-                                                            : command.schedule_text;
+  const std::string text = command.schedule_text == "paper"
+                               ? paper_schedule(partition.empty() ? "cp" : partition)
+                               : command.schedule_text;
   command.schedule = Schedule::parse(text);  // throws naming the level
   for (const LevelSpec& level : command.schedule.levels) {
     if ((level.kind == LevelKind::colour_passing || level.kind == LevelKind::local_grouping) &&
         level.labels > command.tsgo.labels) {
-      throw std::invalid_argument("--schedule: level " + level.to_string() + " has N_L above --labels " +
-                                  std::to_string(command.tsgo.labels));
+      throw std::invalid_argument("--schedule: level " + level.to_string() +
+                                  " has N_L above --labels " + std::to_string(command.tsgo.labels));
     }
   }
-  if (command.trace.empty()) command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
+  if (command.trace.empty())
+    command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "c2f/lift/block_hierarchy.hpp"
+#include "c2f/lift/connected_components.hpp"
 #include "c2f/lift/local_grouping.hpp"
 #include "c2f/lift/threshold_partition.hpp"
 
@@ -56,6 +57,10 @@ std::string format_number(double value) {
 }  // namespace
 
 std::string LevelSpec::to_string() const {
+  return base_string() + (connected ? "/cc" : "");
+}
+
+std::string LevelSpec::base_string() const {
   switch (kind) {
     case LevelKind::colour_passing:
       return "cp:" + std::to_string(labels) + "," + std::to_string(iterations);
@@ -84,16 +89,23 @@ Schedule Schedule::parse(std::string_view text) {
       if (!last) bad(token, "'flat' (the original problem) can only be the last level");
       continue;
     }
-    if (token == "paper") {
-      if (tokens.size() != 1) bad(token, "'paper' stands alone");
-      return parse("cp:1,1 cp:2,1 cp:3,1 flat");
+    if (token == "paper" || token == "paper-cc") {
+      if (tokens.size() != 1) bad(token, "'" + token + "' stands alone");
+      return parse(token == "paper" ? "cp:1,1 cp:2,1 cp:3,1 flat"
+                                    : "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
     }
-    const auto colon = token.find(':');
-    if (colon == std::string::npos)
-      bad(token, "expected KIND:ARGS (cp, local, threshold, slic, blocks, auto) or flat");
-    const std::string kind = token.substr(0, colon);
-    const auto args = split(std::string_view(token).substr(colon + 1), ',');
     LevelSpec spec;
+    std::string body = token;
+    if (body.size() > 3 && body.compare(body.size() - 3, 3, "/cc") == 0) {
+      spec.connected = true;
+      body.resize(body.size() - 3);
+    }
+    const auto colon = body.find(':');
+    if (colon == std::string::npos) {
+      bad(token, "expected KIND:ARGS (cp, local, threshold, slic, blocks, auto) or flat");
+    }
+    const std::string kind = body.substr(0, colon);
+    const auto args = split(std::string_view(body).substr(colon + 1), ',');
     if (kind == "cp" || kind == "local") {
       if (args.size() != 2) bad(token, "expected " + kind + ":N_L,N_iter");
       spec.kind = kind == "cp" ? LevelKind::colour_passing : LevelKind::local_grouping;
@@ -111,6 +123,7 @@ Schedule Schedule::parse(std::string_view text) {
       spec.kind = kind == "slic" ? LevelKind::slic : LevelKind::blocks;
       spec.size = parse_integer(token, args[0], kind == "slic" ? 2 : 1);
     } else if (kind == "auto") {
+      if (spec.connected) bad(token, "auto levels cannot take /cc");
       if (!(tokens.size() == 1 || (tokens.size() == 2 && tokens[1] == "flat"))) {
         bad(token, "auto:FRACTIONS stands alone (optionally followed by flat)");
       }
@@ -251,6 +264,7 @@ std::optional<DensePartition> ScheduleProvider::next(const PairwiseEnergy& energ
   if (position_ >= schedule_.levels.size()) return std::nullopt;
   const LevelSpec& spec = schedule_.levels[position_];
   DensePartition partition = build(spec, energy);
+  if (spec.connected) partition = connected_components(partition, shape_);
   if (previous_ && !allow_non_refining_ && !partition.is_refinement_of(*previous_)) {
     throw std::invalid_argument(
         "schedule: level " + std::to_string(position_) + " (" + spec.to_string() +

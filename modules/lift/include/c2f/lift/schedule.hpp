@@ -12,6 +12,9 @@
 //                        F1 < F2 < ... of the number of pixels (alone, optionally + flat)
 //   flat                 no coarse level (alone: the flat run)
 //   paper                the paper's stereo schedule: cp:1,1 cp:2,1 cp:3,1 flat
+//   paper-cc             the same levels split into connected components (see below)
+// Any level may end in /cc: its groups are split into 4-connected components
+// (connected_components.hpp), e.g. cp:1,1/cc.
 
 #include <chrono>
 #include <functional>
@@ -31,14 +34,17 @@ enum class LevelKind { colour_passing, local_grouping, threshold, slic, blocks }
 
 struct LevelSpec {
   LevelKind kind = LevelKind::colour_passing;
-  int labels = 1;      ///< N_L (colour passing, local grouping)
-  int iterations = 1;  ///< N_iter (colour passing, local grouping)
-  double tau = 0.0;    ///< threshold
-  int radius = 1;      ///< threshold window
-  int size = 0;        ///< SLIC region size or block size
+  int labels = 1;          ///< N_L (colour passing, local grouping)
+  int iterations = 1;      ///< N_iter (colour passing, local grouping)
+  double tau = 0.0;        ///< threshold
+  int radius = 1;          ///< threshold window
+  int size = 0;            ///< SLIC region size or block size
+  bool connected = false;  ///< split groups into 4-connected components (/cc)
 
-  /// The level in schedule syntax, e.g. "cp:2,1".
+  /// The level in schedule syntax, e.g. "cp:2,1" or "cp:2,1/cc".
   [[nodiscard]] std::string to_string() const;
+  /// The level without the /cc modifier.
+  [[nodiscard]] std::string base_string() const;
   friend bool operator==(const LevelSpec&, const LevelSpec&) = default;
 };
 

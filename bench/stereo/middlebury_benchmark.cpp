@@ -1,0 +1,286 @@
+// c2f-bench-stereo: flat TSGO against C2F-TSGO on Middlebury scenes, with OpenCV's StereoSGBM
+// for reference.
+//
+//   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
+//       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
+//       with the same solver (alpha-expansion, Boost max-flow), options and run clock (which
+//       includes partitions and reductions), and prints one tab-separated result row (header
+//       with --header). Traces go to OUT/SCENE-{flat,c2f}.csv.
+//   c2f-bench-stereo summarize ROWS.tsv
+//       Prints the markdown table of all rows and the medians.
+//
+// Error = bad-pixel rate (|d - gt| > 1) over non-occluded pixels (official masks for 2003,
+// left-right check for 2005/2006). Deadlines: 20 times drawn uniformly (fixed seed) in
+// [0, the slower run's convergence time]; at a deadline each method shows the labeling of its
+// latest step before it.
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "c2f/c2f.hpp"
+#include "c2f/vision/stereo/disparity_io.hpp"
+#include "c2f/vision/stereo/evaluation.hpp"
+#include "c2f/vision/stereo/middlebury.hpp"
+#include "c2f/vision/stereo/tsgo_energy.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+
+namespace {
+
+struct Point {
+  double time, energy, error;
+};
+
+struct Run {
+  std::vector<Point> trace;
+  Summary summary;
+  BadPixelRates rates;
+};
+
+const char* kColumns[] = {"scene",
+                          "pixels",
+                          "flat_energy",
+                          "c2f_energy",
+                          "flat_bad_nonocc",
+                          "c2f_bad_nonocc",
+                          "flat_bad_all",
+                          "c2f_bad_all",
+                          "flat_seconds",
+                          "c2f_seconds",
+                          "c2f_reach_flat_seconds",
+                          "reach_ratio",
+                          "deadline_error_flat",
+                          "deadline_error_c2f",
+                          "deadline_error_reduction",
+                          "sgbm_bad_nonocc",
+                          "sgbm_bad_all",
+                          "sgbm_seconds",
+                          "flat_reason",
+                          "c2f_reason"};
+
+double error_at(const std::vector<Point>& trace, double t) {
+  double error = trace.front().error;
+  for (const Point& p : trace) {
+    if (p.time > t) break;
+    error = p.error;
+  }
+  return error;
+}
+
+Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shape,
+          const std::string& schedule, double time_limit, const std::string& trace_path) {
+  ScheduleProvider provider(Schedule::parse(schedule), shape);
+  ExpansionSolver<> solver;
+  Options options;
+  options.plateau_steps = {4};
+  options.plateau_steps_at_original = energy.num_labels();  // a whole sweep without decrease
+  options.time_limit_seconds = time_limit;
+  Run run;
+  std::ofstream file = open_trace_file(trace_path);
+  TraceWriter writer(file);
+  run.summary = coarse_to_fine(energy, provider, solver, options, [&](const StepEvent& event) {
+    writer(event);
+    const BadPixelRates rates = bad_pixel_rates(labels_to_disparity(event.ground_labeling(), shape),
+                                                scene.gt, scene.nonoccluded);
+    run.trace.push_back({event.time_s, event.energy, rates.nonoccluded[1]});
+    return ObserverDecision::continue_run;
+  });
+  run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, shape), scene.gt,
+                              scene.nonoccluded);
+  return run;
+}
+
+int run_scene(const std::string& name, const std::string& data, const std::string& out,
+              double time_limit, const std::string& schedule, bool header) {
+  const auto rows = read_scene_table(data + "/scenes.csv");
+  const auto row =
+      std::find_if(rows.begin(), rows.end(), [&](const SceneRow& r) { return r.scene == name; });
+  if (row == rows.end())
+    throw std::invalid_argument("no scene '" + name + "' in " + data + "/scenes.csv");
+  const StereoScene scene = load_scene(*row, data);
+  const GridShape shape{static_cast<std::size_t>(scene.left.cols),
+                        static_cast<std::size_t>(scene.left.rows)};
+  TsgoOptions tsgo;
+  const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
+  std::filesystem::create_directories(out);
+  const Run flat = solve(energy, scene, shape, "flat", time_limit, out + "/" + name + "-flat.csv");
+  const Run c2f = solve(energy, scene, shape, schedule, time_limit, out + "/" + name + "-c2f.csv");
+
+  const double flat_final = flat.summary.energy;
+  double reach = std::nan("");
+  for (const Point& p : c2f.trace) {
+    if (p.energy <= flat_final) {
+      reach = p.time;
+      break;
+    }
+  }
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<double> deadline(
+      0.0, std::max(flat.summary.seconds, c2f.summary.seconds));
+  double sum_flat = 0, sum_c2f = 0;
+  for (int i = 0; i < 20; ++i) {
+    const double t = deadline(rng);
+    sum_flat += error_at(flat.trace, t);
+    sum_c2f += error_at(c2f.trace, t);
+  }
+
+  // OpenCV StereoSGBM on the same views. SGBM leaves its leftmost numDisparities columns
+  // undefined, so both views are padded on the left by replication and the result cropped (the
+  // usual practice); pixels it still marks invalid count as bad.
+  const auto sgbm_start = std::chrono::steady_clock::now();
+  constexpr int kSgbmDisparities = 96;
+  auto sgbm = cv::StereoSGBM::create(0, kSgbmDisparities, 5, 8 * 3 * 25, 32 * 3 * 25, 1, 0, 10, 100,
+                                     2, cv::StereoSGBM::MODE_SGBM);
+  cv::Mat padded_left, padded_right, padded_fixed;
+  cv::copyMakeBorder(scene.left, padded_left, 0, 0, kSgbmDisparities, 0, cv::BORDER_REPLICATE);
+  cv::copyMakeBorder(scene.right, padded_right, 0, 0, kSgbmDisparities, 0, cv::BORDER_REPLICATE);
+  sgbm->compute(padded_left, padded_right, padded_fixed);
+  const cv::Mat fixed =
+      padded_fixed(cv::Rect(kSgbmDisparities, 0, scene.left.cols, scene.left.rows));
+  const double sgbm_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sgbm_start).count();
+  cv::Mat sgbm_disparity(fixed.size(), CV_32F);
+  for (int y = 0; y < fixed.rows; ++y) {
+    for (int x = 0; x < fixed.cols; ++x) {
+      const short v = fixed.at<short>(y, x);
+      sgbm_disparity.at<float>(y, x) = v < 0 ? std::numeric_limits<float>::quiet_NaN() : v / 16.0F;
+    }
+  }
+  const BadPixelRates sgbm_rates = bad_pixel_rates(sgbm_disparity, scene.gt, scene.nonoccluded);
+
+  if (header) {
+    for (std::size_t i = 0; i < std::size(kColumns); ++i)
+      std::printf("%s%s", i ? "\t" : "", kColumns[i]);
+    std::printf("\n");
+  }
+  std::printf(
+      "%s\t%zu\t%.6f\t%.6f\t%.5f\t%.5f\t%.5f\t%.5f\t%.3f\t%.3f\t%.3f\t%.4f\t%.5f\t%.5f\t%.4f\t%."
+      "5f\t%.5f\t%.3f\t%s\t%s\n",
+      name.c_str(), shape.size(), flat_final, c2f.summary.energy, flat.rates.nonoccluded[1],
+      c2f.rates.nonoccluded[1], flat.rates.all[1], c2f.rates.all[1], flat.summary.seconds,
+      c2f.summary.seconds, reach, reach / flat.summary.seconds, sum_flat / 20, sum_c2f / 20,
+      1.0 - sum_c2f / sum_flat, sgbm_rates.nonoccluded[1], sgbm_rates.all[1], sgbm_seconds,
+      std::string(to_string(flat.summary.reason)).c_str(),
+      std::string(to_string(c2f.summary.reason)).c_str());
+  return 0;
+}
+
+double median(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
+               values.end());
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+int summarize(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::string line;
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.rfind("scene\t", 0) == 0) continue;
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    for (std::string f; std::getline(stream, f, '\t');) fields.push_back(f);
+    if (fields.size() != std::size(kColumns))
+      throw std::runtime_error("malformed row in '" + path + "': " + line);
+    rows.push_back(fields);
+  }
+  auto number = [](const std::string& s) {
+    return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
+  };
+  std::printf(
+      "| scene | flat E | C2F E | flat bad nonocc / all | C2F bad nonocc / all | flat s | C2F s | "
+      "C2F reaches flat E (s) | ratio | deadline error flat / C2F | reduction | SGBM bad nonocc / "
+      "all | SGBM s |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::vector<double>> columns(std::size(kColumns));
+  for (const auto& r : rows) {
+    for (std::size_t c = 1; c < 18; ++c) columns[c].push_back(number(r[c]));
+    // A run that never reaches flat's final energy is a loss: infinite time, not a missing value.
+    if (std::isnan(number(r[10]))) {
+      columns[10].back() = std::numeric_limits<double>::infinity();
+      columns[11].back() = std::numeric_limits<double>::infinity();
+    }
+    const double reach = number(r[10]);
+    std::printf(
+        "| %s | %.1f | %.1f | %.2f%% / %.2f%% | %.2f%% / %.2f%% | %.1f | %.1f | %s | %s | %.2f%% / "
+        "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f |\n",
+        r[0].c_str(), number(r[2]), number(r[3]), 100 * number(r[4]), 100 * number(r[6]),
+        100 * number(r[5]), 100 * number(r[7]), number(r[8]), number(r[9]),
+        std::isnan(reach) ? "never" : r[10].c_str(), std::isnan(reach) ? "-" : r[11].c_str(),
+        100 * number(r[12]), 100 * number(r[13]), 100 * number(r[14]), 100 * number(r[15]),
+        100 * number(r[16]), number(r[17]));
+  }
+  std::size_t never = 0, wins = 0;
+  for (const auto& r : rows) {
+    never += std::isnan(number(r[10]));
+    wins += number(r[11]) <= 0.5;
+  }
+  std::printf(
+      "| **median** | | | %.2f%% / %.2f%% | %.2f%% / %.2f%% | %.1f | %.1f | %.1f | %.3f | %.2f%% / "
+      "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f |\n",
+      100 * median(columns[4]), 100 * median(columns[6]), 100 * median(columns[5]),
+      100 * median(columns[7]), median(columns[8]), median(columns[9]), median(columns[10]),
+      median(columns[11]), 100 * median(columns[12]), 100 * median(columns[13]),
+      100 * median(columns[14]), 100 * median(columns[15]), 100 * median(columns[16]),
+      median(columns[17]));
+  std::printf(
+      "\n%zu scenes; C2F never reached flat's final energy on %zu (counted as infinite time in the "
+      "medians); "
+      "reached it in at most half of flat's time on %zu.\n",
+      rows.size(), never, wins);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
+    if (argc < 3 || std::string(argv[1]) != "run") {
+      std::cerr << "usage: c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] "
+                   "[--schedule TEXT] [--header]\n"
+                   "       c2f-bench-stereo summarize ROWS.tsv\n";
+      return 2;
+    }
+    std::string data = "../shared/data", out = "out/bench-stereo", schedule = "paper";
+    double time_limit = 600;
+    bool header = false;
+    for (int i = 3; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--data" && i + 1 < argc)
+        data = argv[++i];
+      else if (arg == "--out" && i + 1 < argc)
+        out = argv[++i];
+      else if (arg == "--time-limit" && i + 1 < argc)
+        time_limit = std::stod(argv[++i]);
+      else if (arg == "--schedule" && i + 1 < argc)
+        schedule = argv[++i];
+      else if (arg == "--header")
+        header = true;
+      else
+        throw std::invalid_argument("unknown argument '" + arg + "'");
+    }
+    return run_scene(argv[2], data, out, time_limit, schedule, header);
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-bench-stereo: error: " << error.what() << "\n";
+    return 2;
+  }
+}
