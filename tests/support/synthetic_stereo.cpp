@@ -7,9 +7,10 @@ namespace c2f::test {
 SyntheticPair synthetic_pair(int width, int height, int background_disparity,
                              int foreground_disparity, unsigned seed) {
   cv::RNG rng(seed);
-  // Texture wider than the views so shifted content exists for every pixel.
-  cv::Mat texture(height, width + foreground_disparity, CV_8UC3),
-      foreground(height, width + foreground_disparity, CV_8UC3);
+  // Texture wider than the views so shifted content exists for every pixel: the right view's
+  // background reads column xr + background_disparity + foreground_disparity.
+  cv::Mat texture(height, width + background_disparity + foreground_disparity, CV_8UC3);
+  cv::Mat foreground(height, width + foreground_disparity, CV_8UC3);
   rng.fill(texture, cv::RNG::UNIFORM, 0, 256);
   rng.fill(foreground, cv::RNG::UNIFORM, 0, 256);
   cv::GaussianBlur(texture, texture, {3, 3}, 0.7);

@@ -172,6 +172,22 @@ TEST_CASE("rules compose: the strongest verdict wins", "[driver][rules]") {
   CHECK(per_level.decide(progress).decision == Decision::continue_level);
 }
 
+TEST_CASE("the plateau rule can wait longer on the original problem", "[driver][rules]") {
+  const std::vector<double> two_flat{5.0, 5.0, 5.0};
+  const Rule rule = no_decrease({2}, 0.0, 3);
+  Progress lifted{0.1, 0, false, 2, 2, two_flat};
+  CHECK(rule(lifted).decision == Decision::refine);
+  Progress original{0.1, 1, true, 2, 4, two_flat};
+  CHECK(rule(original).decision == Decision::continue_level);
+  const std::vector<double> three_flat{5.0, 5.0, 5.0, 5.0};
+  original.level_energies = three_flat;
+  CHECK(rule(original).decision == Decision::refine);
+  CHECK_THROWS_WITH(no_decrease({2}, 0.0, -1), Catch::Contains("steps_at_original must be >= 0"));
+  Options options;
+  options.plateau_steps_at_original = -3;
+  CHECK_THAT(options.validate(), Catch::Contains("plateau_steps_at_original must be >= 0"));
+}
+
 TEST_CASE("options and rules validate their fields", "[driver][options][validation]") {
   Options options;
   CHECK(options.validate().empty());

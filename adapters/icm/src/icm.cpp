@@ -43,20 +43,7 @@ void IcmSolver::bind(const PairwiseEnergy& energy, std::span<const Label> start)
   energy_ = &energy;
   labeling_.assign(start.begin(), start.end());
   const std::size_t n = energy.num_variables();
-  const auto edges = energy.edges();
-  offsets_.assign(n + 1, 0);
-  for (const Edge& e : edges) {
-    ++offsets_[e.u + 1];
-    ++offsets_[e.v + 1];
-  }
-  for (std::size_t v = 0; v < n; ++v) offsets_[v + 1] += offsets_[v];
-  incidences_.resize(offsets_[n]);
-  std::vector<std::size_t> cursor(offsets_.begin(), offsets_.end() - 1);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const auto index = static_cast<std::uint32_t>(i);
-    incidences_[cursor[edges[i].u]++] = {index, edges[i].v, true};
-    incidences_[cursor[edges[i].v]++] = {index, edges[i].u, false};
-  }
+  incidence_ = EdgeIncidence(energy);
   order_.resize(n);
   for (std::size_t v = 0; v < n; ++v) order_[v] = static_cast<VariableIndex>(v);
   energy_value_ = energy.evaluate_unchecked(labeling_);
@@ -76,8 +63,7 @@ double IcmSolver::step() {
   for (const VariableIndex v : order_) {
     auto local_cost = [&](Label l) {
       double cost = energy.unary(v, l);
-      for (std::size_t k = offsets_[v]; k < offsets_[v + 1]; ++k) {
-        const Incidence& inc = incidences_[k];
+      for (const Incidence& inc : incidence_.of(v)) {
         const Edge& e = edges[inc.edge];
         const Label other = labeling_[inc.other];
         cost +=

@@ -40,21 +40,8 @@ void LbpSolver::bind(const PairwiseEnergy& energy, std::span<const Label> start)
   validate_labeling(start, energy.num_variables(), energy.num_labels(), "LbpSolver::bind: start");
   energy_ = &energy;
   num_labels_ = static_cast<std::size_t>(energy.num_labels());
-  const std::size_t n = energy.num_variables();
   const auto edges = energy.edges();
-  offsets_.assign(n + 1, 0);
-  for (const Edge& e : edges) {
-    ++offsets_[e.u + 1];
-    ++offsets_[e.v + 1];
-  }
-  for (std::size_t v = 0; v < n; ++v) offsets_[v + 1] += offsets_[v];
-  incidences_.resize(offsets_[n]);
-  std::vector<std::size_t> cursor(offsets_.begin(), offsets_.end() - 1);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const auto index = static_cast<std::uint32_t>(i);
-    incidences_[cursor[edges[i].u]++] = {index, edges[i].v, true};
-    incidences_[cursor[edges[i].v]++] = {index, edges[i].u, false};
-  }
+  incidence_ = EdgeIncidence(energy);
   messages_.assign(2 * edges.size() * num_labels_, 0.0);
   if (options_.schedule == BpSchedule::parallel) next_messages_.assign(messages_.size(), 0.0);
   belief_.resize(num_labels_);
@@ -70,8 +57,7 @@ void LbpSolver::compute_belief(std::size_t v, std::span<const double> messages,
                                std::span<double> belief) const {
   for (std::size_t l = 0; l < num_labels_; ++l)
     belief[l] = energy_->unary(v, static_cast<Label>(l));
-  for (std::size_t k = offsets_[v]; k < offsets_[v + 1]; ++k) {
-    const Incidence& inc = incidences_[k];
+  for (const Incidence& inc : incidence_.of(v)) {
     const double* in = messages.data() + message_index(inc.edge, !inc.is_first);
     for (std::size_t l = 0; l < num_labels_; ++l) belief[l] += in[l];
   }
@@ -127,8 +113,7 @@ double LbpSolver::step() {
   last_change_ = 0.0;
   for (std::size_t v = 0; v < n; ++v) {
     compute_belief(v, messages_, belief_);
-    for (std::size_t k = offsets_[v]; k < offsets_[v + 1]; ++k) {
-      const Incidence& inc = incidences_[k];
+    for (const Incidence& inc : incidence_.of(v)) {
       const double* in = messages_.data() + message_index(inc.edge, !inc.is_first);
       for (std::size_t l = 0; l < num_labels_; ++l) h_[l] = belief_[l] - in[l];
       compute_message(edges[inc.edge], inc.is_first, h_, scratch_);

@@ -81,18 +81,7 @@ ColourPassing::ColourPassing(const PairwiseEnergy& energy, int labels)
     pair_symmetric_[e] = energy.terms()[edges[e].term].is_symmetric();
   }
 
-  offsets_.assign(n + 1, 0);
-  for (const Edge& e : edges) {
-    ++offsets_[e.u + 1];
-    ++offsets_[e.v + 1];
-  }
-  for (std::size_t v = 0; v < n; ++v) offsets_[v + 1] += offsets_[v];
-  incident_.resize(offsets_[n]);
-  std::vector<std::size_t> cursor(offsets_.begin(), offsets_.end() - 1);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    incident_[cursor[edges[e].u]++] = static_cast<std::uint32_t>(e);
-    incident_[cursor[edges[e].v]++] = static_cast<std::uint32_t>(e);
-  }
+  incidence_ = EdgeIncidence(energy);
 }
 
 bool ColourPassing::iterate() {
@@ -116,9 +105,9 @@ bool ColourPassing::iterate() {
   std::vector<char32_t> incoming;
   for (std::size_t v = 0; v < n; ++v) {
     incoming.clear();
-    for (std::size_t k = offsets_[v]; k < offsets_[v + 1]; ++k) {
-      const std::uint32_t e = incident_[k];
-      const std::uint32_t position = pair_symmetric_[e] ? 0 : (edges[e].u == v ? 1 : 2);
+    for (const Incidence& inc : incidence_.of(v)) {
+      const std::uint32_t e = inc.edge;
+      const std::uint32_t position = pair_symmetric_[e] ? 0 : (inc.is_first ? 1 : 2);
       incoming.push_back(static_cast<char32_t>(pair_colour_[e] * 3 + position));
     }
     std::sort(incoming.begin(), incoming.end());

@@ -64,12 +64,9 @@ class ExpansionSolver {
     energy_ = &energy;
     labeling_.assign(start.begin(), start.end());
     candidate_.resize(labeling_.size());
-    std::vector<FlowEdge> pairs(energy.edges().size());
-    for (std::size_t e = 0; e < pairs.size(); ++e)
-      pairs[e] = {energy.edges()[e].u, energy.edges()[e].v};
-    moves_.bind(energy.num_variables(), pairs);
+    moves_.bind(energy);
     d_.resize(energy.num_variables());
-    p_.resize(pairs.size());
+    p_.resize(energy.edges().size());
     out_.resize(energy.num_variables());
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -48,19 +49,12 @@ class IcmSolver {
   [[nodiscard]] std::size_t changed_in_last_step() const noexcept { return changed_; }
 
  private:
-  struct Incidence {
-    std::uint32_t edge;
-    VariableIndex other;
-    bool is_first;  // this variable is the edge's u
-  };
-
   IcmOptions options_;
   const PairwiseEnergy* energy_ = nullptr;
   Labeling labeling_;
   double energy_value_ = 0.0;
   std::size_t changed_ = 0;
-  std::vector<std::size_t> offsets_;
-  std::vector<Incidence> incidences_;
+  EdgeIncidence incidence_;
   std::vector<VariableIndex> order_;
   std::uint64_t rng_state_ = 0;
 };

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -56,12 +57,6 @@ class LbpSolver {
   [[nodiscard]] double last_change() const noexcept { return last_change_; }
 
  private:
-  struct Incidence {
-    std::uint32_t edge;
-    VariableIndex other;
-    bool is_first;  // this variable is the edge's u
-  };
-
   void compute_belief(std::size_t v, std::span<const double> messages,
                       std::span<double> belief) const;
   void compute_message(const Edge& edge, bool from_first, std::span<const double> h,
@@ -73,8 +68,7 @@ class LbpSolver {
   LbpOptions options_;
   const PairwiseEnergy* energy_ = nullptr;
   std::size_t num_labels_ = 0;
-  std::vector<std::size_t> offsets_;
-  std::vector<Incidence> incidences_;
+  EdgeIncidence incidence_;
   std::vector<double> messages_, next_messages_;
   std::vector<double> belief_, h_, scratch_;
   Labeling decoded_, best_;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "c2f/adapters/maxflow.hpp"
+#include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
 
@@ -52,6 +53,15 @@ class BinaryMoveSolver {
     plain_.build(num_nodes, pairs_);
     plain_caps_.resize(num_nodes, pairs_.size());
     qpbo_built_ = false;
+  }
+
+  /// The topology of the moves of a pairwise energy: one binary variable per variable, one
+  /// pair per edge (same order).
+  void bind(const PairwiseEnergy& energy) {
+    std::vector<FlowEdge> pairs(energy.edges().size());
+    for (std::size_t e = 0; e < pairs.size(); ++e)
+      pairs[e] = {energy.edges()[e].u, energy.edges()[e].v};
+    bind(energy.num_variables(), pairs);
   }
 
   /// Minimises the problem above. With every p[e] >= 0 one max-flow gives an exact minimiser

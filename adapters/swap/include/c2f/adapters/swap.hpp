@@ -43,12 +43,9 @@ class SwapSolver {
     energy_ = &energy;
     labeling_.assign(start.begin(), start.end());
     candidate_.resize(labeling_.size());
-    std::vector<FlowEdge> pairs(energy.edges().size());
-    for (std::size_t e = 0; e < pairs.size(); ++e)
-      pairs[e] = {energy.edges()[e].u, energy.edges()[e].v};
-    moves_.bind(energy.num_variables(), pairs);
+    moves_.bind(energy);
     d_.resize(energy.num_variables());
-    p_.resize(pairs.size());
+    p_.resize(energy.edges().size());
     out_.resize(energy.num_variables());
     std::vector<std::pair<Label, Label>> label_pairs;
     for (Label a = 0; a < energy.num_labels(); ++a) {

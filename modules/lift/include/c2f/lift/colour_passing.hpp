@@ -19,6 +19,7 @@
 #include <span>
 #include <vector>
 
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
 
@@ -59,10 +60,9 @@ class ColourPassing {
   std::vector<std::uint32_t> unary_colour_;
   std::vector<std::uint32_t> pair_colour_;
   std::vector<char> pair_symmetric_;
-  std::vector<Label> last_label_;     // the labels_-th lowest-cost label of every variable
-  std::vector<double> last_cost_;     // and its cost, for finding the next one
-  std::vector<std::size_t> offsets_;  // incident edges of each variable (CSR)
-  std::vector<std::uint32_t> incident_;
+  std::vector<Label> last_label_;  // the labels_-th lowest-cost label of every variable
+  std::vector<double> last_cost_;  // and its cost, for finding the next one
+  EdgeIncidence incidence_;
 };
 
 }  // namespace c2f
