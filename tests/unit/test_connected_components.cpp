@@ -40,6 +40,8 @@ TEST_CASE("connected components keep refining sequences nested", "[lift][connect
     }
   }
   CHECK(Schedule::parse("paper-cc").to_string() == "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
+  CHECK(Schedule::parse("regions").to_string() == "local:1,1/cc local:2,1/cc local:3,1/cc flat");
+  CHECK_THROWS_WITH(Schedule::parse("regions flat"), Catch::Contains("'regions' stands alone"));
   CHECK(Schedule::parse("threshold:5/cc blocks:4").levels[0].connected);
   CHECK_THROWS_WITH(Schedule::parse("auto:0.1/cc"), Catch::Contains("auto levels cannot take /cc"));
 }

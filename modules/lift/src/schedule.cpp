@@ -89,10 +89,11 @@ Schedule Schedule::parse(std::string_view text) {
       if (!last) bad(token, "'flat' (the original problem) can only be the last level");
       continue;
     }
-    if (token == "paper" || token == "paper-cc") {
+    if (token == "paper" || token == "paper-cc" || token == "regions") {
       if (tokens.size() != 1) bad(token, "'" + token + "' stands alone");
-      return parse(token == "paper" ? "cp:1,1 cp:2,1 cp:3,1 flat"
-                                    : "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
+      if (token == "paper") return parse("cp:1,1 cp:2,1 cp:3,1 flat");
+      if (token == "paper-cc") return parse("cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
+      return parse("local:1,1/cc local:2,1/cc local:3,1/cc flat");
     }
     LevelSpec spec;
     std::string body = token;
