@@ -2,7 +2,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "c2f/vision/absolute_difference_cost.hpp"
+#include "c2f/vision/stereo/absolute_difference_cost.hpp"
 #include "c2f/vision/image_io.hpp"
 
 using namespace c2f::vision;

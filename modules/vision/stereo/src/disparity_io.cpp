@@ -1,8 +1,8 @@
 #include "c2f/vision/stereo/disparity_io.hpp"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -19,15 +19,17 @@ namespace c2f::vision {
 namespace {
 void require_float(const cv::Mat& disparity, const char* who) {
   if (disparity.type() != CV_32F || disparity.empty()) {
-    throw std::invalid_argument(std::string(who) + ": the disparity map must be a non-empty CV_32F image");
+    throw std::invalid_argument(std::string(who) +
+                                ": the disparity map must be a non-empty CV_32F image");
   }
 }
 }  // namespace
 
 cv::Mat labels_to_disparity(std::span<const Label> labeling, GridShape shape) {
   if (labeling.size() != shape.size()) {
-    throw std::invalid_argument("labels_to_disparity: " + std::to_string(labeling.size()) + " labels for a " +
-                                std::to_string(shape.width) + "x" + std::to_string(shape.height) + " grid");
+    throw std::invalid_argument("labels_to_disparity: " + std::to_string(labeling.size()) +
+                                " labels for a " + std::to_string(shape.width) + "x" +
+                                std::to_string(shape.height) + " grid");
   }
   cv::Mat disparity(static_cast<int>(shape.height), static_cast<int>(shape.width), CV_32F);
   for (std::size_t v = 0; v < labeling.size(); ++v) {
@@ -42,7 +44,8 @@ void write_pfm(const std::string& path, const cv::Mat& disparity) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
   out << "Pf\n" << disparity.cols << ' ' << disparity.rows << "\n-1\n";
-  static_assert(std::endian::native == std::endian::little, "PFM writer assumes a little-endian machine");
+  static_assert(std::endian::native == std::endian::little,
+                "PFM writer assumes a little-endian machine");
   for (int y = disparity.rows - 1; y >= 0; --y) {
     for (int x = 0; x < disparity.cols; ++x) {
       float value = disparity.at<float>(y, x);
@@ -65,19 +68,22 @@ cv::Mat read_pfm(const std::string& path) {
   double scale = 0.0;
   in >> magic >> width >> height >> scale;
   if (magic != "Pf" || width <= 0 || height <= 0 || scale == 0.0 || !in) {
-    throw std::runtime_error("'" + path + "' is not a single-channel PFM file (expected header 'Pf', size, scale)");
+    throw std::runtime_error(
+        "'" + path + "' is not a single-channel PFM file (expected header 'Pf', size, scale)");
   }
-  in.get();  // the single whitespace after the scale
+  in.get();                       // the single whitespace after the scale
   const bool swap = scale > 0.0;  // positive scale: big-endian data
   cv::Mat disparity(height, width, CV_32F);
   for (int y = height - 1; y >= 0; --y) {
     for (int x = 0; x < width; ++x) {
       unsigned char bytes[4];
-      if (!in.read(reinterpret_cast<char*>(bytes), 4)) throw std::runtime_error("'" + path + "' is truncated");
+      if (!in.read(reinterpret_cast<char*>(bytes), 4))
+        throw std::runtime_error("'" + path + "' is truncated");
       if (swap) std::swap(bytes[0], bytes[3]), std::swap(bytes[1], bytes[2]);
       float value;
       std::memcpy(&value, bytes, 4);
-      disparity.at<float>(y, x) = std::isinf(value) ? std::numeric_limits<float>::quiet_NaN() : value;
+      disparity.at<float>(y, x) =
+          std::isinf(value) ? std::numeric_limits<float>::quiet_NaN() : value;
     }
   }
   return disparity;
@@ -90,21 +96,26 @@ void write_disparity_png16(const std::string& path, const cv::Mat& disparity) {
     for (int x = 0; x < disparity.cols; ++x) {
       const float d = disparity.at<float>(y, x);
       scaled.at<std::uint16_t>(y, x) =
-          std::isnan(d) || d <= 0.0F ? 0 : static_cast<std::uint16_t>(std::min(65535.0, std::round(256.0 * d)));
+          std::isnan(d) || d <= 0.0F
+              ? 0
+              : static_cast<std::uint16_t>(std::min(65535.0, std::round(256.0 * d)));
     }
   }
   write_image(path, scaled);
 }
 
 cv::Mat read_disparity_png16(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error("disparity PNG '" + path + "' does not exist");
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error("disparity PNG '" + path + "' does not exist");
   const cv::Mat raw = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (raw.empty() || raw.type() != CV_16U) throw std::runtime_error("'" + path + "' is not a 16-bit single-channel PNG");
+  if (raw.empty() || raw.type() != CV_16U)
+    throw std::runtime_error("'" + path + "' is not a 16-bit single-channel PNG");
   cv::Mat disparity(raw.size(), CV_32F);
   for (int y = 0; y < raw.rows; ++y) {
     for (int x = 0; x < raw.cols; ++x) {
       const std::uint16_t v = raw.at<std::uint16_t>(y, x);
-      disparity.at<float>(y, x) = v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / 256.0);
+      disparity.at<float>(y, x) =
+          v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / 256.0);
     }
   }
   return disparity;
@@ -112,12 +123,14 @@ cv::Mat read_disparity_png16(const std::string& path) {
 
 cv::Mat colourise_disparity(const cv::Mat& disparity, double max_disparity) {
   require_float(disparity, "colourise_disparity");
-  if (!(max_disparity > 0.0)) throw std::invalid_argument("colourise_disparity: max_disparity must be > 0");
+  if (!(max_disparity > 0.0))
+    throw std::invalid_argument("colourise_disparity: max_disparity must be > 0");
   cv::Mat grey(disparity.size(), CV_8U), colour;
   for (int y = 0; y < disparity.rows; ++y) {
     for (int x = 0; x < disparity.cols; ++x) {
       const float d = disparity.at<float>(y, x);
-      grey.at<uchar>(y, x) = std::isnan(d) ? 0 : cv::saturate_cast<uchar>(255.0 * d / max_disparity);
+      grey.at<uchar>(y, x) =
+          std::isnan(d) ? 0 : cv::saturate_cast<uchar>(255.0 * d / max_disparity);
     }
   }
   cv::applyColorMap(grey, colour, cv::COLORMAP_JET);
@@ -129,7 +142,8 @@ cv::Mat colourise_disparity(const cv::Mat& disparity, double max_disparity) {
   return colour;
 }
 
-cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded, double threshold) {
+cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded,
+                  double threshold) {
   require_float(disparity, "error_map");
   if (gt.type() != CV_32F || gt.size() != disparity.size()) {
     throw std::invalid_argument("error_map: the GT must be CV_32F of the disparity's size");

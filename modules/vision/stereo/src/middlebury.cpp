@@ -30,17 +30,20 @@ std::vector<SceneRow> read_scene_table(const std::string& path) {
   const auto header = split_csv(line);
   auto column = [&](const std::string& name) {
     const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end()) throw std::runtime_error("scene table '" + path + "': no column '" + name + "'");
+    if (it == header.end())
+      throw std::runtime_error("scene table '" + path + "': no column '" + name + "'");
     return static_cast<std::size_t>(it - header.begin());
   };
-  const std::size_t year = column("year"), scene = column("scene"), dir = column("dir"), width = column("width"),
-                    height = column("height"), divisor = column("gt_divisor"), files = column("files");
+  const std::size_t year = column("year"), scene = column("scene"), dir = column("dir"),
+                    width = column("width"), height = column("height"),
+                    divisor = column("gt_divisor"), files = column("files");
   std::vector<SceneRow> rows;
   for (int number = 2; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     const auto fields = split_csv(line);
     try {
-      if (fields.size() != header.size()) throw std::runtime_error("has " + std::to_string(fields.size()) + " fields");
+      if (fields.size() != header.size())
+        throw std::runtime_error("has " + std::to_string(fields.size()) + " fields");
       SceneRow row;
       row.year = std::stoi(fields[year]);
       row.scene = fields[scene];
@@ -52,20 +55,23 @@ std::vector<SceneRow> read_scene_table(const std::string& path) {
       for (std::string name; names >> name;) row.files.push_back(name);
       rows.push_back(row);
     } catch (const std::exception& error) {
-      throw std::runtime_error("scene table '" + path + "' line " + std::to_string(number) + ": " + error.what());
+      throw std::runtime_error("scene table '" + path + "' line " + std::to_string(number) + ": " +
+                               error.what());
     }
   }
   return rows;
 }
 
 cv::Mat load_gt_disparity(const std::string& path, double divisor) {
-  if (!(divisor > 0.0)) throw std::invalid_argument("GT divisor must be > 0, got " + std::to_string(divisor));
+  if (!(divisor > 0.0))
+    throw std::invalid_argument("GT divisor must be > 0, got " + std::to_string(divisor));
   const cv::Mat raw = load_grey_image(path);
   cv::Mat gt(raw.size(), CV_32F);
   for (int y = 0; y < raw.rows; ++y) {
     for (int x = 0; x < raw.cols; ++x) {
       const uchar v = raw.at<uchar>(y, x);
-      gt.at<float>(y, x) = v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / divisor);
+      gt.at<float>(y, x) =
+          v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / divisor);
     }
   }
   return gt;
@@ -96,18 +102,22 @@ cv::Mat load_mask(const std::string& path) {
 
 StereoScene load_scene(const SceneRow& row, const std::string& data_root) {
   const std::filesystem::path dir = std::filesystem::path(data_root) / row.dir;
-  auto has = [&](const std::string& name) { return std::find(row.files.begin(), row.files.end(), name) != row.files.end(); };
+  auto has = [&](const std::string& name) {
+    return std::find(row.files.begin(), row.files.end(), name) != row.files.end();
+  };
   StereoScene scene;
   scene.name = row.scene;
   scene.left = load_colour_image((dir / "left.png").string());
   scene.right = load_colour_image((dir / "right.png").string());
-  if (has("disp_left.png")) scene.gt = load_gt_disparity((dir / "disp_left.png").string(), row.gt_divisor);
+  if (has("disp_left.png"))
+    scene.gt = load_gt_disparity((dir / "disp_left.png").string(), row.gt_divisor);
   scene.nonoccluded_source = "none";
   if (has("nonocc.png")) {
     scene.nonoccluded = load_mask((dir / "nonocc.png").string());
     scene.nonoccluded_source = "official mask";
   } else if (has("disp_right.png") && !scene.gt.empty()) {
-    scene.nonoccluded = left_right_nonoccluded(scene.gt, load_gt_disparity((dir / "disp_right.png").string(), row.gt_divisor));
+    scene.nonoccluded = left_right_nonoccluded(
+        scene.gt, load_gt_disparity((dir / "disp_right.png").string(), row.gt_divisor));
     scene.nonoccluded_source = "left-right check";
   }
   return scene;

@@ -1,5 +1,7 @@
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
+#include "stereo_pair_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,17 +12,6 @@ namespace c2f::vision {
 
 namespace {
 
-void require_colour_pair(const cv::Mat& left, const cv::Mat& right, const char* who) {
-  if (left.type() != CV_8UC3 || right.type() != CV_8UC3) {
-    throw std::invalid_argument(std::string(who) + ": images must be 8-bit 3-channel");
-  }
-  if (left.size() != right.size()) {
-    throw std::invalid_argument(std::string(who) + ": left is " + std::to_string(left.cols) + "x" +
-                                std::to_string(left.rows) + ", right is " +
-                                std::to_string(right.cols) + "x" + std::to_string(right.rows));
-  }
-}
-
 double signed_sqrt(double v) {
   return v < 0.0 ? -std::sqrt(-v) : std::sqrt(v);
 }
@@ -28,7 +19,7 @@ double signed_sqrt(double v) {
 }  // namespace
 
 EqualisedPair equalise_photometry(const cv::Mat& left, const cv::Mat& right, double tolerance) {
-  require_colour_pair(left, right, "equalise_photometry");
+  detail::require_colour_pair(left, right, "equalise_photometry");
   cv::Scalar m1, s1, m2, s2;
   cv::meanStdDev(left, m1, s1);
   cv::meanStdDev(right, m2, s2);

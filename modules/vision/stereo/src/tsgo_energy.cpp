@@ -5,7 +5,7 @@
 #include <string>
 
 #include "c2f/core/grid.hpp"
-#include "c2f/vision/colour_weights.hpp"
+#include "c2f/vision/stereo/colour_weights.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
 namespace c2f::vision {

@@ -1,4 +1,4 @@
-#include "c2f/vision/colour_weights.hpp"
+#include "c2f/vision/stereo/colour_weights.hpp"
 
 #include <cstdlib>
 

@@ -1,4 +1,6 @@
-#include "c2f/vision/absolute_difference_cost.hpp"
+#include "c2f/vision/stereo/absolute_difference_cost.hpp"
+
+#include "stereo_pair_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,17 +10,11 @@
 
 namespace c2f::vision {
 
-std::vector<double> absolute_difference_cost(const cv::Mat& left, const cv::Mat& right, int num_labels,
-                                             double truncation) {
-  if (left.type() != CV_8UC3 || right.type() != CV_8UC3) {
-    throw std::invalid_argument("absolute_difference_cost: images must be 8-bit 3-channel");
-  }
-  if (left.size() != right.size()) {
-    throw std::invalid_argument("absolute_difference_cost: left is " + std::to_string(left.cols) + "x" +
-                                std::to_string(left.rows) + ", right is " + std::to_string(right.cols) + "x" +
-                                std::to_string(right.rows));
-  }
-  if (num_labels < 1) throw std::invalid_argument("absolute_difference_cost: num_labels must be >= 1");
+std::vector<double> absolute_difference_cost(const cv::Mat& left, const cv::Mat& right,
+                                             int num_labels, double truncation) {
+  detail::require_colour_pair(left, right, "absolute_difference_cost");
+  if (num_labels < 1)
+    throw std::invalid_argument("absolute_difference_cost: num_labels must be >= 1");
   if (!(truncation > 0.0) || !std::isfinite(truncation)) {
     throw std::invalid_argument("absolute_difference_cost: truncation must be finite and > 0");
   }
