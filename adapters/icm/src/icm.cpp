@@ -1,4 +1,5 @@
 #include "c2f/adapters/icm.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,11 +19,8 @@ std::string_view to_string(VisitOrder order) {
 }
 
 VisitOrder visit_order_from_string(std::string_view text) {
-  for (VisitOrder order : {VisitOrder::sequential, VisitOrder::random}) {
-    if (to_string(order) == text) return order;
-  }
-  throw std::invalid_argument("unknown visit order '" + std::string(text) +
-                              "' (expected sequential or random)");
+  constexpr VisitOrder kAll[] = {VisitOrder::sequential, VisitOrder::random};
+  return enum_from_string(text, kAll, "visit order");
 }
 
 std::string IcmOptions::validate() const {

@@ -1,4 +1,5 @@
 #include "c2f/adapters/lbp.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,11 +19,8 @@ std::string_view to_string(BpSchedule schedule) {
 }
 
 BpSchedule bp_schedule_from_string(std::string_view text) {
-  for (BpSchedule schedule : {BpSchedule::sequential, BpSchedule::parallel}) {
-    if (to_string(schedule) == text) return schedule;
-  }
-  throw std::invalid_argument("unknown BP schedule '" + std::string(text) +
-                              "' (expected sequential or parallel)");
+  constexpr BpSchedule kAll[] = {BpSchedule::sequential, BpSchedule::parallel};
+  return enum_from_string(text, kAll, "BP schedule");
 }
 
 std::string LbpOptions::validate() const {

@@ -1,4 +1,5 @@
 #include "c2f/adapters/maxflow.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -84,11 +85,8 @@ std::string_view to_string(LabelOrder order) {
 }
 
 LabelOrder label_order_from_string(std::string_view text) {
-  for (LabelOrder order : {LabelOrder::sequential, LabelOrder::random}) {
-    if (to_string(order) == text) return order;
-  }
-  throw std::invalid_argument("unknown label order '" + std::string(text) +
-                              "' (expected sequential or random)");
+  constexpr LabelOrder kAll[] = {LabelOrder::sequential, LabelOrder::random};
+  return enum_from_string(text, kAll, "label order");
 }
 
 }  // namespace c2f

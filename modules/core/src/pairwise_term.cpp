@@ -1,15 +1,11 @@
 #include "c2f/core/pairwise_term.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace c2f {
-
-namespace {
-constexpr TermKind kAllKinds[] = {TermKind::potts, TermKind::truncated_linear, TermKind::tsgo_step,
-                                  TermKind::table};
-}
 
 std::string_view to_string(TermKind kind) {
   switch (kind) {
@@ -26,11 +22,9 @@ std::string_view to_string(TermKind kind) {
 }
 
 TermKind term_kind_from_string(std::string_view text) {
-  for (TermKind kind : kAllKinds) {
-    if (to_string(kind) == text) return kind;
-  }
-  throw std::invalid_argument("unknown pairwise term kind '" + std::string(text) +
-                              "' (expected potts, truncated_linear, tsgo_step or table)");
+  constexpr TermKind kAll[] = {TermKind::potts, TermKind::truncated_linear, TermKind::tsgo_step,
+                               TermKind::table};
+  return enum_from_string(text, kAll, "pairwise term kind");
 }
 
 PairwiseTerm PairwiseTerm::potts() {

@@ -1,4 +1,5 @@
 #include "c2f/driver/options.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -16,11 +17,8 @@ std::string_view to_string(InitialLabeling init) {
 }
 
 InitialLabeling initial_labeling_from_string(std::string_view text) {
-  for (InitialLabeling init : {InitialLabeling::unary_argmin, InitialLabeling::zero}) {
-    if (to_string(init) == text) return init;
-  }
-  throw std::invalid_argument("unknown initial labeling '" + std::string(text) +
-                              "' (expected unary_argmin or zero)");
+  constexpr InitialLabeling kAll[] = {InitialLabeling::unary_argmin, InitialLabeling::zero};
+  return enum_from_string(text, kAll, "initial labeling");
 }
 
 std::string_view to_string(LevelTransfer transfer) {
@@ -34,11 +32,8 @@ std::string_view to_string(LevelTransfer transfer) {
 }
 
 LevelTransfer level_transfer_from_string(std::string_view text) {
-  for (LevelTransfer transfer : {LevelTransfer::exact, LevelTransfer::majority}) {
-    if (to_string(transfer) == text) return transfer;
-  }
-  throw std::invalid_argument("unknown level transfer '" + std::string(text) +
-                              "' (expected exact or majority)");
+  constexpr LevelTransfer kAll[] = {LevelTransfer::exact, LevelTransfer::majority};
+  return enum_from_string(text, kAll, "level transfer");
 }
 
 std::string Options::validate() const {
@@ -48,7 +43,8 @@ std::string Options::validate() const {
              std::to_string(plateau_steps[i]);
     }
   }
-  if (plateau_steps_at_original < 0) return "plateau_steps_at_original must be >= 0 (0: plateau_steps applies)";
+  if (plateau_steps_at_original < 0)
+    return "plateau_steps_at_original must be >= 0 (0: plateau_steps applies)";
   if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0.0) {
     return "plateau_tolerance must be finite and >= 0";
   }

@@ -1,4 +1,5 @@
 #include "c2f/driver/rules.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,12 +7,6 @@
 #include <string>
 
 namespace c2f {
-
-namespace {
-constexpr TerminationReason kAllReasons[] = {
-    TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
-    TerminationReason::target_energy, TerminationReason::observer};
-}
 
 std::string_view to_string(TerminationReason reason) {
   switch (reason) {
@@ -30,14 +25,15 @@ std::string_view to_string(TerminationReason reason) {
 }
 
 TerminationReason termination_reason_from_string(std::string_view text) {
-  for (TerminationReason reason : kAllReasons) {
-    if (to_string(reason) == text) return reason;
-  }
-  throw std::invalid_argument("unknown termination reason '" + std::string(text) + "'");
+  constexpr TerminationReason kAll[] = {
+      TerminationReason::converged, TerminationReason::step_limit, TerminationReason::time_limit,
+      TerminationReason::target_energy, TerminationReason::observer};
+  return enum_from_string(text, kAll, "termination reason");
 }
 
 Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_at_original) {
-  if (steps_at_original < 0) throw std::invalid_argument("no_decrease: steps_at_original must be >= 0");
+  if (steps_at_original < 0)
+    throw std::invalid_argument("no_decrease: steps_at_original must be >= 0");
   if (steps_per_level.empty()) {
     throw std::invalid_argument("no_decrease: steps_per_level is empty");
   }
@@ -48,9 +44,11 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
     throw std::invalid_argument("no_decrease: tolerance must be finite and >= 0");
   }
-  return [ks = std::move(steps_per_level), tolerance, steps_at_original](const Progress& p) -> Verdict {
+  return [ks = std::move(steps_per_level), tolerance,
+          steps_at_original](const Progress& p) -> Verdict {
     const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
-    const auto k = static_cast<std::size_t>(p.at_original && steps_at_original > 0 ? steps_at_original : ks[index]);
+    const auto k = static_cast<std::size_t>(
+        p.at_original && steps_at_original > 0 ? steps_at_original : ks[index]);
     const auto& history = p.level_energies;
     if (history.size() < k + 1) return {};
     const double before = history[history.size() - 1 - k];

@@ -1,4 +1,5 @@
 #include "c2f/vision/superpixels.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/slic.hpp>
@@ -12,10 +13,8 @@ std::string_view to_string(SlicAlgorithm algorithm) {
 }
 
 SlicAlgorithm slic_algorithm_from_string(std::string_view text) {
-  if (text == "slic") return SlicAlgorithm::slic;
-  if (text == "slico") return SlicAlgorithm::slico;
-  throw std::invalid_argument("unknown SLIC algorithm '" + std::string(text) +
-                              "' (expected slic or slico)");
+  constexpr SlicAlgorithm kAll[] = {SlicAlgorithm::slic, SlicAlgorithm::slico};
+  return enum_from_string(text, kAll, "SLIC algorithm");
 }
 
 DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
@@ -41,13 +40,15 @@ DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicO
   return DensePartition::from_ids(ids);
 }
 
-std::vector<DensePartition> slic_hierarchy(const cv::Mat& image, const std::vector<int>& region_sizes,
+std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
+                                           const std::vector<int>& region_sizes,
                                            const SlicOptions& options) {
   if (region_sizes.empty()) throw std::invalid_argument("slic_hierarchy: no region sizes");
   for (std::size_t i = 1; i < region_sizes.size(); ++i) {
     if (region_sizes[i] >= region_sizes[i - 1]) {
-      throw std::invalid_argument("slic_hierarchy: region sizes must decrease (coarsest first), got " +
-                                  std::to_string(region_sizes[i - 1]) + " then " + std::to_string(region_sizes[i]));
+      throw std::invalid_argument(
+          "slic_hierarchy: region sizes must decrease (coarsest first), got " +
+          std::to_string(region_sizes[i - 1]) + " then " + std::to_string(region_sizes[i]));
     }
   }
   std::vector<DensePartition> levels;

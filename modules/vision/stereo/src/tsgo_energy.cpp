@@ -1,4 +1,5 @@
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "c2f/core/enum_names.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -15,10 +16,9 @@ std::string_view to_string(StereoSmoothness smoothness) {
 }
 
 StereoSmoothness stereo_smoothness_from_string(std::string_view text) {
-  if (text == "tsgo_step") return StereoSmoothness::tsgo_step;
-  if (text == "truncated_linear") return StereoSmoothness::truncated_linear;
-  throw std::invalid_argument("unknown smoothness '" + std::string(text) +
-                              "' (expected tsgo_step or truncated_linear)");
+  constexpr StereoSmoothness kAll[] = {StereoSmoothness::tsgo_step,
+                                       StereoSmoothness::truncated_linear};
+  return enum_from_string(text, kAll, "smoothness");
 }
 
 std::string TsgoOptions::validate() const {
