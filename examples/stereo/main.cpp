@@ -133,6 +133,7 @@ int main(int argc, char** argv) {
     ScheduleProvider provider(command.schedule, shape, slic_source(guide), command.allow_non_refining);
     Options options;
     options.plateau_steps = {command.plateau};
+    options.plateau_tolerance = command.plateau_tolerance;
     const int sweep = command.solver == "expansion" ? command.tsgo.labels
                       : command.solver == "swap"    ? command.tsgo.labels * (command.tsgo.labels - 1) / 2
                                                     : 4;
@@ -158,9 +159,9 @@ int main(int argc, char** argv) {
                                            }});
     Summary summary;
     if (command.solver == "expansion") {
-      summary = solve(energy, provider, ExpansionSolver<>(), options, observer);
+      summary = solve(energy, provider, ExpansionSolver<>(ExpansionOptions{command.label_order}), options, observer);
     } else if (command.solver == "swap") {
-      summary = solve(energy, provider, SwapSolver<>(), options, observer);
+      summary = solve(energy, provider, SwapSolver<>(SwapOptions{command.label_order}), options, observer);
     } else {
       summary = solve(energy, provider, LbpSolver(), options, observer);
     }

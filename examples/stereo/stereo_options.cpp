@@ -28,7 +28,7 @@ std::string paper_schedule(const std::string& partition) {
 
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
-  std::string partition, smoothness = "tsgo_step";
+  std::string partition, smoothness = "tsgo_step", label_order = "sequential";
   po::options_description visible(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -52,6 +52,9 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "allow-non-refining", po::bool_switch(&command.allow_non_refining),
       "accept levels that do not refine each other (labels handed down by majority vote)")(
       "solver", po::value(&command.solver)->default_value("expansion"), "expansion, swap or lbp")(
+      "label-order", po::value(&label_order)->default_value("sequential"),
+      "order of expansion / swap moves: sequential (0, 1, ...), random, or frequency (labels of "
+      "most variables first, counted when each level starts)")(
       "smoothness", po::value(&smoothness)->default_value("tsgo_step"),
       "tsgo_step or truncated_linear (the paper's wording)")(
       "time-limit", po::value(&command.time_limit)->default_value(0.0),
@@ -60,6 +63,9 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                                             "solver steps in the whole run (0: none)")(
       "plateau", po::value(&command.plateau)->default_value(4),
       "refine after this many steps without decrease")(
+      "plateau-tolerance", po::value(&command.plateau_tolerance)->default_value(0.0),
+      "on coarse levels, a decrease over the --plateau steps counts only when larger than this "
+      "fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps down)")(
       "final-plateau", po::value(&command.final_plateau)->default_value(0),
       "stop after this many steps without decrease on the original problem (0: one sweep: labels "
       "moves for "
@@ -115,6 +121,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   if (command.max_steps < 0) throw std::invalid_argument("--max-steps: must be >= 0");
   if (command.plateau < 1) throw std::invalid_argument("--plateau: must be >= 1");
   if (command.final_plateau < 0) throw std::invalid_argument("--final-plateau: must be >= 0");
+  if (!(command.plateau_tolerance >= 0.0 && command.plateau_tolerance < 1.0))
+    throw std::invalid_argument("--plateau-tolerance: must be in [0, 1)");
   if (command.solver != "expansion" && command.solver != "swap" && command.solver != "lbp") {
     throw std::invalid_argument("--solver: '" + command.solver +
                                 "' is not one of expansion, swap, lbp");
@@ -125,6 +133,11 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   require_file(command.gt, "--gt");
   require_file(command.gt_right, "--gt-right");
   require_file(command.mask, "--mask");
+  try {
+    command.label_order = label_order_from_string(label_order);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(std::string("--label-order: ") + error.what());
+  }
   try {
     command.tsgo.smoothness = vision::stereo_smoothness_from_string(smoothness);
   } catch (const std::invalid_argument& error) {

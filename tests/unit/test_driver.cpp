@@ -188,6 +188,32 @@ TEST_CASE("the plateau rule can wait longer on the original problem", "[driver][
   CHECK_THAT(options.validate(), Catch::Contains("plateau_steps_at_original must be >= 0"));
 }
 
+TEST_CASE("a plateau tolerance leaves creeping coarse levels but not the original problem",
+          "[driver][rules]") {
+  // Decreases of 0.05 per step on an energy of 1000: 2e-4 of |E| over the last 4 steps.
+  const std::vector<double> creeping{1000.0, 999.95, 999.90, 999.85, 999.80};
+  const Rule rule = no_decrease({4}, 3e-4, 0, 0.0);
+  const Progress coarse{0.1, 0, false, 4, 4, creeping};
+  CHECK(rule(coarse).decision == Decision::refine);
+  const Progress original{0.1, 1, true, 4, 8, creeping};
+  CHECK(rule(original).decision == Decision::continue_level);
+  CHECK(no_decrease({4}, 0.0, 0, 3e-4)(original).decision == Decision::refine);
+  CHECK(no_decrease({4}, 1e-4)(coarse).decision == Decision::continue_level);
+
+  Options options;
+  options.plateau_steps = {4};
+  options.plateau_tolerance = 3e-4;
+  CHECK(options.rules().decide(coarse).decision == Decision::refine);
+  CHECK(options.rules().decide(original).decision == Decision::continue_level);
+  options.plateau_tolerance_at_original = 3e-4;
+  CHECK(options.rules().decide(original).decision == Decision::refine);
+  options.plateau_tolerance_at_original = -1.0;
+  CHECK_THAT(options.validate(),
+             Catch::Contains("plateau_tolerance_at_original must be finite and >= 0"));
+  CHECK_THROWS_WITH(no_decrease({4}, 0.0, 0, std::nan("")),
+                    Catch::Contains("tolerance_at_original must be finite and >= 0"));
+}
+
 TEST_CASE("options and rules validate their fields", "[driver][options][validation]") {
   Options options;
   CHECK(options.validate().empty());

@@ -12,6 +12,9 @@ using namespace c2f::test;
 
 namespace {
 
+constexpr LabelOrder kOrders[] = {LabelOrder::sequential, LabelOrder::random,
+                                  LabelOrder::frequency};
+
 /// Steps until `sweep` consecutive steps change nothing; checks the energy never increases
 /// and always equals evaluate() of the labeling. Returns the final energy.
 template <class Solver>
@@ -43,8 +46,7 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
     const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
     const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
     ExpansionSolver<TestType> solver(
-        ExpansionOptions{trial % 2 ? LabelOrder::random : LabelOrder::sequential,
-                         static_cast<std::uint64_t>(trial), 0.0});
+        ExpansionOptions{kOrders[trial % 3], static_cast<std::uint64_t>(trial), 0.0});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = solver.energy();
     std::size_t quiet = 0;
@@ -96,7 +98,7 @@ TEST_CASE("alpha-beta swap never increases the energy and solves two-label Potts
     const auto terms = test_terms(rng, num_labels);
     const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
     const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
-    SwapSolver<> solver(SwapOptions{trial % 2 ? LabelOrder::random : LabelOrder::sequential, 3});
+    SwapSolver<> solver(SwapOptions{kOrders[trial % 3], 3});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     const std::size_t pairs = static_cast<std::size_t>(num_labels * (num_labels - 1) / 2);
     const double converged = run_to_convergence(solver, energy, pairs);
@@ -134,5 +136,38 @@ TEST_CASE("expansion validates its options and inputs", "[expansion][validation]
   CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 3}),
                     Catch::Contains("ExpansionSolver::bind: start: label 3"));
   CHECK(label_order_from_string("random") == LabelOrder::random);
+  CHECK(label_order_from_string("frequency") == LabelOrder::frequency);
   CHECK_THROWS_WITH(label_order_from_string("reverse"), Catch::Contains("'reverse'"));
+}
+
+TEST_CASE("frequency order visits the labels the start labeling uses most first",
+          "[expansion][swap][order]") {
+  // 9 variables in a chain, 4 labels; the start uses label 2 four times, 0 three times, 3
+  // twice and 1 never: expansion visits 2, 0, 3, 1 and then starts over; swap visits the pairs
+  // by the summed use of their labels, ties in (a, b) order.
+  std::vector<Edge> chain;
+  for (VariableIndex i = 0; i + 1 < 9; ++i) chain.push_back(Edge{i, i + 1, 1.0, 0});
+  const PairwiseEnergy energy(9, 4, std::vector<double>(36, 0.0), {PairwiseTerm::potts()}, chain);
+  const Labeling start{2, 0, 2, 3, 0, 2, 3, 0, 2};
+  ExpansionSolver<> expansion(ExpansionOptions{LabelOrder::frequency});
+  expansion.bind(energy, start);
+  std::vector<Label> visited;
+  for (int step = 0; step < 8; ++step) {
+    expansion.step();
+    visited.push_back(expansion.last_move().label);
+  }
+  CHECK(visited == std::vector<Label>{2, 0, 3, 1, 2, 0, 3, 1});
+
+  SwapSolver<> swap(SwapOptions{LabelOrder::frequency});
+  swap.bind(energy, start);
+  std::vector<std::pair<Label, Label>> pairs;
+  for (int step = 0; step < 6; ++step) {
+    swap.step();
+    pairs.push_back(swap.last_pair());
+  }
+  // Uses: 0 -> 3, 1 -> 0, 2 -> 4, 3 -> 2. Sums: (0,2) 7, (2,3) 6, (0,3) 5, (1,2) 4, (0,1) 3,
+  // (1,3) 2.
+  const std::vector<std::pair<Label, Label>> expected{{0, 2}, {2, 3}, {0, 3},
+                                                      {1, 2}, {0, 1}, {1, 3}};
+  CHECK(pairs == expected);
 }

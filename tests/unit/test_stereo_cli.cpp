@@ -60,6 +60,12 @@ TEST_CASE("c2f-stereo rejects bad input with clear messages", "[stereo][cli]") {
   r = run(left + " " + right + " -o " + out + " --solver magic");
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--solver: 'magic' is not one of expansion, swap, lbp"));
+  r = run(left + " " + right + " -o " + out + " --label-order backwards");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--label-order: ") && Catch::Contains("'backwards'"));
+  r = run(left + " " + right + " -o " + out + " --plateau-tolerance -0.1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--plateau-tolerance: must be in [0, 1)"));
   r = run(left + " " + right);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("-o/--out: an output directory is required"));
@@ -81,7 +87,8 @@ TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]"
   cv::imwrite((dir / "gt.png").string(), gt8);
   const Result r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
                        (dir / "out").string() + " --labels 10 --gt " + (dir / "gt.png").string() +
-                       " --gt-divisor 4 --save-partitions -q");
+                       " --gt-divisor 4 --save-partitions --label-order frequency"
+                       " --plateau-tolerance 1e-4 -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* file : {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",

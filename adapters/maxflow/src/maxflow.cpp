@@ -80,12 +80,14 @@ std::string_view to_string(LabelOrder order) {
       return "sequential";
     case LabelOrder::random:
       return "random";
+    case LabelOrder::frequency:
+      return "frequency";
   }
   return "unknown";
 }
 
 LabelOrder label_order_from_string(std::string_view text) {
-  constexpr LabelOrder kAll[] = {LabelOrder::sequential, LabelOrder::random};
+  constexpr LabelOrder kAll[] = {LabelOrder::sequential, LabelOrder::random, LabelOrder::frequency};
   return enum_from_string(text, kAll, "label order");
 }
 

@@ -48,6 +48,9 @@ std::string Options::validate() const {
   if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0.0) {
     return "plateau_tolerance must be finite and >= 0";
   }
+  if (!std::isfinite(plateau_tolerance_at_original) || plateau_tolerance_at_original < 0.0) {
+    return "plateau_tolerance_at_original must be finite and >= 0";
+  }
   if (max_steps_per_level < 0) return "max_steps_per_level must be >= 0 (0: no limit)";
   if (max_total_steps < 0) return "max_total_steps must be >= 0 (0: no limit)";
   if (!std::isfinite(time_limit_seconds) || time_limit_seconds < 0.0) {
@@ -66,9 +69,11 @@ Rules Options::rules() const {
   }
   Rules rules;
   if (!plateau_steps.empty()) {
-    rules.add(no_decrease(plateau_steps, plateau_tolerance, plateau_steps_at_original));
+    rules.add(no_decrease(plateau_steps, plateau_tolerance, plateau_steps_at_original,
+                          plateau_tolerance_at_original));
   } else if (plateau_steps_at_original > 0) {
-    rules.add(no_decrease({plateau_steps_at_original}, plateau_tolerance));
+    rules.add(no_decrease({plateau_steps_at_original}, plateau_tolerance, 0,
+                          plateau_tolerance_at_original));
   }
   if (max_steps_per_level > 0) rules.add(level_step_limit(max_steps_per_level));
   if (max_total_steps > 0) rules.add(total_step_limit(max_total_steps));

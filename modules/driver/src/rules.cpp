@@ -31,7 +31,8 @@ TerminationReason termination_reason_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "termination reason");
 }
 
-Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_at_original) {
+Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_at_original,
+                 double tolerance_at_original) {
   if (steps_at_original < 0)
     throw std::invalid_argument("no_decrease: steps_at_original must be >= 0");
   if (steps_per_level.empty()) {
@@ -44,8 +45,11 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
   if (!std::isfinite(tolerance) || tolerance < 0.0) {
     throw std::invalid_argument("no_decrease: tolerance must be finite and >= 0");
   }
-  return [ks = std::move(steps_per_level), tolerance,
-          steps_at_original](const Progress& p) -> Verdict {
+  if (!std::isfinite(tolerance_at_original) || tolerance_at_original < 0.0) {
+    throw std::invalid_argument("no_decrease: tolerance_at_original must be finite and >= 0");
+  }
+  return [ks = std::move(steps_per_level), tolerance, steps_at_original,
+          tolerance_at_original](const Progress& p) -> Verdict {
     const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
     const auto k = static_cast<std::size_t>(
         p.at_original && steps_at_original > 0 ? steps_at_original : ks[index]);
@@ -53,7 +57,8 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
     if (history.size() < k + 1) return {};
     const double before = history[history.size() - 1 - k];
     const double now = history.back();
-    const double margin = tolerance * std::max(1.0, std::abs(before));
+    const double margin =
+        (p.at_original ? tolerance_at_original : tolerance) * std::max(1.0, std::abs(before));
     if (before - now > margin) return {};
     return {Decision::refine, TerminationReason::converged};
   };

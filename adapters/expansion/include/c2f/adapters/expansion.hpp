@@ -3,7 +3,10 @@
 // QPBO for non-submodular moves (as OpenGM's alpha-expansion fusion, which the paper used).
 //
 // One step() = one expansion move for one label alpha: every variable may switch to alpha.
-// Labels are cycled in the configured order, restarting at the first label on every bind().
+// Labels are cycled in the configured order, restarting at the first label on every bind()
+// (LabelOrder::frequency: the labels the start labeling uses most first, so that on a coarse
+// level handed a labeling, or on the original problem after coarse levels, the moves that
+// matter come first and a plateau rule is not fired by a run of unused labels).
 // Each move's binary problem goes straight into the max-flow graph when all its pairwise
 // terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
 // QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
@@ -12,6 +15,7 @@
 // accepted move means no move found a lower energy, which for submodular moves means none
 // exists).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -70,6 +74,12 @@ class ExpansionSolver {
     out_.resize(energy.num_variables());
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
+    if (options_.order == LabelOrder::frequency) {
+      const std::vector<std::size_t> count = label_counts(labeling_, energy.num_labels());
+      std::stable_sort(labels.begin(), labels.end(), [&](Label a, Label b) {
+        return count[static_cast<std::size_t>(a)] > count[static_cast<std::size_t>(b)];
+      });
+    }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     energy_value_ = energy.evaluate_unchecked(labeling_);
     last_ = {};

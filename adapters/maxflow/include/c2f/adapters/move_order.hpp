@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -15,7 +16,15 @@ namespace c2f {
 enum class LabelOrder {
   sequential,  ///< 0, 1, ..., L-1, 0, 1, ... (the reference implementation's order)
   random,      ///< a fresh random permutation for every cycle, from the seed
+  frequency,   ///< labels used by most variables of the start labeling first (ties: lower label)
 };
+
+/// How many variables take each label 0..num_labels-1 (labels assumed validated).
+inline std::vector<std::size_t> label_counts(std::span<const Label> labeling, int num_labels) {
+  std::vector<std::size_t> count(static_cast<std::size_t>(num_labels), 0);
+  for (const Label l : labeling) ++count[static_cast<std::size_t>(l)];
+  return count;
+}
 
 std::string_view to_string(LabelOrder order);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.

@@ -2,11 +2,13 @@
 // Alpha-beta swap (Boykov, Veksler and Zabih) as an AnytimeSolver for PairwiseEnergy.
 //
 // One step() = one swap move for one label pair (alpha, beta): every variable labelled alpha
-// or beta may take either of the two. Pairs (a < b) are cycled in the configured order. Swap
+// or beta may take either of the two. Pairs (a < b) are cycled in the configured order
+// (LabelOrder::frequency: pairs whose labels the start labeling uses most first). Swap
 // moves are submodular, so one max-flow solves each exactly, when every pairwise term is a
 // semi-metric (cost(a, a) = 0, cost(a, b) = cost(b, a) >= 0) and every weight is >= 0;
 // bind() rejects other energies with a message naming the term or edge.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -50,6 +52,14 @@ class SwapSolver {
     std::vector<std::pair<Label, Label>> label_pairs;
     for (Label a = 0; a < energy.num_labels(); ++a) {
       for (Label b = a + 1; b < energy.num_labels(); ++b) label_pairs.emplace_back(a, b);
+    }
+    if (options_.order == LabelOrder::frequency) {
+      const std::vector<std::size_t> count = label_counts(labeling_, energy.num_labels());
+      std::stable_sort(label_pairs.begin(), label_pairs.end(), [&](const auto& x, const auto& y) {
+        return count[static_cast<std::size_t>(x.first)] +
+                   count[static_cast<std::size_t>(x.second)] >
+               count[static_cast<std::size_t>(y.first)] + count[static_cast<std::size_t>(y.second)];
+      });
     }
     if (label_pairs.empty()) label_pairs.emplace_back(0, 0);  // one label: every move is empty
     cycle_ =

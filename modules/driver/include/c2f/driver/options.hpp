@@ -37,8 +37,12 @@ struct Options {
   /// On the original problem (the last level) use this k instead (0: plateau_steps applies).
   /// With single-label moves, one sweep (k = number of labels) is the usual convergence test.
   int plateau_steps_at_original = 0;
-  /// A decrease counts only when larger than plateau_tolerance * max(1, |E|).
+  /// On coarse levels a decrease over those k steps counts only when larger than
+  /// plateau_tolerance * max(1, |E|): with a tolerance > 0 a level whose energy merely creeps
+  /// down is refined.
   double plateau_tolerance = 0.0;
+  /// The same on the original problem (0: the run converges only on a strict plateau).
+  double plateau_tolerance_at_original = 0.0;
   /// Refine after this many steps on one level (0: no limit).
   long max_steps_per_level = 0;
   /// Stop after this many steps in the whole run (0: no limit).

@@ -47,9 +47,13 @@ using Rule = std::function<Verdict(const Progress&)>;
 
 /// Refine when the energy has not decreased by more than tolerance * max(1, |E|) over the
 /// last k steps of the level; k = steps_per_level[level] (the last entry serves deeper levels),
-/// or steps_at_original on the original problem when that is > 0. Every k must be >= 1
+/// or steps_at_original on the original problem when that is > 0. On the original problem
+/// tolerance_at_original replaces tolerance (0: only a strict plateau ends the run), so a
+/// coarse level can be left while its energy still creeps down without changing when the
+/// run is considered converged. Every k must be >= 1 and both tolerances finite and >= 0
 /// (std::invalid_argument otherwise).
-Rule no_decrease(std::vector<int> steps_per_level, double tolerance = 0.0, int steps_at_original = 0);
+Rule no_decrease(std::vector<int> steps_per_level, double tolerance = 0.0,
+                 int steps_at_original = 0, double tolerance_at_original = 0.0);
 /// Refine after `max_steps` steps on a level.
 Rule level_step_limit(long max_steps);
 /// Stop after `max_steps` steps in the whole run.
