@@ -2,10 +2,14 @@
 // for reference.
 //
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
+//                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
-//       with the same solver (alpha-expansion, Boost max-flow), options and run clock (which
-//       includes partitions and reductions), and prints one tab-separated result row (header
-//       with --header). Traces go to OUT/SCENE-{flat,c2f}.csv.
+//       with the same solver (alpha-expansion with the given label order, Boost max-flow),
+//       options and run clock (which includes partitions and reductions), and prints one
+//       tab-separated result row (header with --header). Coarse levels are refined after 4
+//       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
+//       original problem, in both runs, ends after a whole sweep without decrease. Traces go to
+//       OUT/SCENE-{flat,c2f}.csv.
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
@@ -81,14 +85,22 @@ double error_at(const std::vector<Point>& trace, double t) {
   return error;
 }
 
+struct Settings {
+  std::string schedule = "paper";
+  double time_limit = 600;
+  LabelOrder label_order = LabelOrder::sequential;
+  double coarse_tolerance = 0.0;
+};
+
 Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shape,
-          const std::string& schedule, double time_limit, const std::string& trace_path) {
+          const std::string& schedule, const Settings& settings, const std::string& trace_path) {
   ScheduleProvider provider(Schedule::parse(schedule), shape);
-  ExpansionSolver<> solver;
+  ExpansionSolver<> solver(ExpansionOptions{settings.label_order});
   Options options;
   options.plateau_steps = {4};
+  options.plateau_tolerance = settings.coarse_tolerance;
   options.plateau_steps_at_original = energy.num_labels();  // a whole sweep without decrease
-  options.time_limit_seconds = time_limit;
+  options.time_limit_seconds = settings.time_limit;
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
@@ -105,7 +117,7 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shap
 }
 
 int run_scene(const std::string& name, const std::string& data, const std::string& out,
-              double time_limit, const std::string& schedule, bool header) {
+              const Settings& settings, bool header) {
   const auto rows = read_scene_table(data + "/scenes.csv");
   const auto row =
       std::find_if(rows.begin(), rows.end(), [&](const SceneRow& r) { return r.scene == name; });
@@ -117,8 +129,9 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   TsgoOptions tsgo;
   const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
   std::filesystem::create_directories(out);
-  const Run flat = solve(energy, scene, shape, "flat", time_limit, out + "/" + name + "-flat.csv");
-  const Run c2f = solve(energy, scene, shape, schedule, time_limit, out + "/" + name + "-c2f.csv");
+  const Run flat = solve(energy, scene, shape, "flat", settings, out + "/" + name + "-flat.csv");
+  const Run c2f =
+      solve(energy, scene, shape, settings.schedule, settings, out + "/" + name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -256,12 +269,13 @@ int main(int argc, char** argv) {
     if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
     if (argc < 3 || std::string(argv[1]) != "run") {
       std::cerr << "usage: c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] "
-                   "[--schedule TEXT] [--header]\n"
+                   "[--schedule TEXT]\n"
+                   "           [--label-order ORDER] [--coarse-tolerance T] [--header]\n"
                    "       c2f-bench-stereo summarize ROWS.tsv\n";
       return 2;
     }
-    std::string data = "../shared/data", out = "out/bench-stereo", schedule = "paper";
-    double time_limit = 600;
+    std::string data = "../shared/data", out = "out/bench-stereo";
+    Settings settings;
     bool header = false;
     for (int i = 3; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -270,15 +284,22 @@ int main(int argc, char** argv) {
       else if (arg == "--out" && i + 1 < argc)
         out = argv[++i];
       else if (arg == "--time-limit" && i + 1 < argc)
-        time_limit = std::stod(argv[++i]);
+        settings.time_limit = std::stod(argv[++i]);
       else if (arg == "--schedule" && i + 1 < argc)
-        schedule = argv[++i];
+        settings.schedule = argv[++i];
+      else if (arg == "--label-order" && i + 1 < argc)
+        settings.label_order = label_order_from_string(argv[++i]);
+      else if (arg == "--coarse-tolerance" && i + 1 < argc)
+        settings.coarse_tolerance = std::stod(argv[++i]);
       else if (arg == "--header")
         header = true;
       else
         throw std::invalid_argument("unknown argument '" + arg + "'");
     }
-    return run_scene(argv[2], data, out, time_limit, schedule, header);
+    Schedule::parse(settings.schedule);  // a bad schedule fails before the first solve
+    if (!(settings.coarse_tolerance >= 0.0 && settings.coarse_tolerance < 1.0))
+      throw std::invalid_argument("--coarse-tolerance must be in [0, 1)");
+    return run_scene(argv[2], data, out, settings, header);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-stereo: error: " << error.what() << "\n";
     return 2;
