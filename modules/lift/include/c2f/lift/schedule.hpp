@@ -14,7 +14,7 @@
 //   paper                the paper's stereo schedule: cp:1,1 cp:2,1 cp:3,1 flat
 //   paper-cc             the same levels split into connected components (see below)
 //   regions              local:1,1/cc local:2,1/cc local:3,1/cc flat: connected regions of
-//                        equal best-label tuples (the fastest schedule in docs/results.md)
+//                        equal best-label tuples (docs/results.md)
 // Any level may end in /cc: its groups are split into 4-connected components
 // (connected_components.hpp), e.g. cp:1,1/cc.
 
