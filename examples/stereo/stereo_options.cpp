@@ -45,7 +45,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "number of disparity labels (>= 2)")(
       "schedule", po::value(&command.schedule_text)->default_value("paper"),
       "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-cc (the same split into connected "
-      "components), regions (connected regions of equal best labels; fastest measured: local:1,1/cc with --plateau-tolerance 3e-5), "
+      "components), regions (connected regions of equal best labels; fastest measured: "
+      "local:1,1/cc with --plateau-tolerance 3e-5), "
       "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")(
       "partition", po::value(&partition),
       "partition kind for --schedule paper: cp (default), local, threshold, slic")(
