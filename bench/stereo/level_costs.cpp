@@ -7,7 +7,6 @@
 // Usage: c2f-bench-levels SCENE [--data DIR] [--schedule TEXT]   (defaults: ../shared/data,
 // regions)
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -61,12 +60,7 @@ int main(int argc, char** argv) {
       else
         throw std::invalid_argument("unknown argument '" + arg + "'");
     }
-    const auto rows = read_scene_table(data + "/scenes.csv");
-    const auto row = std::find_if(rows.begin(), rows.end(),
-                                  [&](const SceneRow& r) { return r.scene == argv[1]; });
-    if (row == rows.end())
-      throw std::invalid_argument(std::string("no scene '") + argv[1] + "' in " + data);
-    const StereoScene scene = load_scene(*row, data);
+    const StereoScene scene = load_named_scene(data, argv[1]);
     const GridShape shape{static_cast<std::size_t>(scene.left.cols),
                           static_cast<std::size_t>(scene.left.rows)};
     TsgoOptions tsgo;

@@ -118,12 +118,7 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shap
 
 int run_scene(const std::string& name, const std::string& data, const std::string& out,
               const Settings& settings, bool header) {
-  const auto rows = read_scene_table(data + "/scenes.csv");
-  const auto row =
-      std::find_if(rows.begin(), rows.end(), [&](const SceneRow& r) { return r.scene == name; });
-  if (row == rows.end())
-    throw std::invalid_argument("no scene '" + name + "' in " + data + "/scenes.csv");
-  const StereoScene scene = load_scene(*row, data);
+  const StereoScene scene = load_named_scene(data, name);
   const GridShape shape{static_cast<std::size_t>(scene.left.cols),
                         static_cast<std::size_t>(scene.left.rows)};
   TsgoOptions tsgo;

@@ -25,14 +25,11 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 StereoScene load_input(const examples::StereoCommand& command) {
   StereoScene scene;
   if (!command.scene.empty()) {
-    const auto rows = read_scene_table((std::filesystem::path(command.data) / "scenes.csv").string());
-    for (const SceneRow& row : rows) {
-      if (row.scene == command.scene) return load_scene(row, command.data);
+    try {
+      return load_named_scene(command.data, command.scene);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument(std::string("--scene: ") + error.what());
     }
-    std::string names;
-    for (const SceneRow& row : rows) names += " " + row.scene;
-    throw std::invalid_argument("--scene: no scene '" + command.scene + "' in " + command.data + "/scenes.csv (have:" +
-                                names + ")");
   }
   scene.name = std::filesystem::path(command.left).stem().string();
   scene.left = load_colour_image(command.left);

@@ -109,6 +109,12 @@ TEST_CASE("GT loading, the left-right check and the scene table", "[stereo][midd
   CHECK_THROWS_WITH(read_scene_table((dir / "scenes.csv").string()), Catch::Contains("line 3"));
   CHECK_THROWS_WITH(read_scene_table((dir / "absent.csv").string()),
                     Catch::Contains("cannot open scene table"));
+  std::ofstream good(dir / "scenes.csv");
+  good << "year,scene,dir,width,height,scale,gt_divisor,files\n2003,Toy,toy,4,1,quarter,4,left."
+          "png right.png\n";
+  good.close();
+  CHECK_THROWS_WITH(load_named_scene(dir.string(), "Teddy"),
+                    Catch::Contains("no scene 'Teddy' in ") && Catch::Contains("(have: Toy)"));
 }
 
 TEST_CASE("the shared Middlebury scenes load with their conventions",

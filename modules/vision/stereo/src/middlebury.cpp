@@ -123,4 +123,15 @@ StereoScene load_scene(const SceneRow& row, const std::string& data_root) {
   return scene;
 }
 
+StereoScene load_named_scene(const std::string& data_root, const std::string& name) {
+  const std::string table = (std::filesystem::path(data_root) / "scenes.csv").string();
+  const std::vector<SceneRow> rows = read_scene_table(table);
+  for (const SceneRow& row : rows) {
+    if (row.scene == name) return load_scene(row, data_root);
+  }
+  std::string names;
+  for (const SceneRow& row : rows) names += " " + row.scene;
+  throw std::invalid_argument("no scene '" + name + "' in " + table + " (have:" + names + ")");
+}
+
 }  // namespace c2f::vision

@@ -13,7 +13,7 @@ namespace c2f::vision {
 struct SceneRow {
   int year = 0;
   std::string scene;
-  std::string dir;         ///< relative to the data root
+  std::string dir;  ///< relative to the data root
   int width = 0, height = 0;
   double gt_divisor = 0.0;
   std::vector<std::string> files;
@@ -38,9 +38,9 @@ cv::Mat load_mask(const std::string& path);
 
 struct StereoScene {
   std::string name;
-  cv::Mat left, right;   ///< 8-bit BGR
-  cv::Mat gt;            ///< CV_32F left-view disparity, NaN = unknown; empty without GT
-  cv::Mat nonoccluded;   ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
+  cv::Mat left, right;  ///< 8-bit BGR
+  cv::Mat gt;           ///< CV_32F left-view disparity, NaN = unknown; empty without GT
+  cv::Mat nonoccluded;  ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
   std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
 };
 
@@ -48,5 +48,9 @@ struct StereoScene {
 /// non-occluded mask: the official nonocc.png when present, else the left-right check when
 /// disp_right.png is present. Throws naming the missing file.
 StereoScene load_scene(const SceneRow& row, const std::string& data_root);
+
+/// load_scene for the row of DATA_ROOT/scenes.csv named `name`. Throws std::invalid_argument
+/// naming the scene, the table and the names it has when there is no such row.
+StereoScene load_named_scene(const std::string& data_root, const std::string& name);
 
 }  // namespace c2f::vision
