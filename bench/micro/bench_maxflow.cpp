@@ -32,7 +32,8 @@ const GridFlow& grid_flow(std::size_t side) {
   if (!inserted) return it->second;
   GridFlow& flow = it->second;
   flow.nodes = side * side;
-  for (const auto& [u, v] : grid_neighbour_pairs({side, side}, Connectivity::four)) flow.edges.push_back({u, v});
+  for (const auto& [u, v] : grid_neighbour_pairs({side, side}, Connectivity::four))
+    flow.edges.push_back({u, v});
   flow.caps.resize(flow.nodes, flow.edges.size());
   std::mt19937_64 rng(side);
   std::normal_distribution<double> noise(0.0, 1.0);
@@ -68,11 +69,27 @@ void BM_Solve(benchmark::State& state) {
   state.counters["flow"] = value;
 }
 
-BENCHMARK_TEMPLATE(BM_Build, BoostMaxFlow)->Arg(64)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Solve, BoostMaxFlow)->Arg(64)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Build, BoostMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Solve, BoostMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-BENCHMARK_TEMPLATE(BM_Build, KolmogorovMaxFlow)->Arg(64)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Solve, KolmogorovMaxFlow)->Arg(64)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Build, KolmogorovMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Solve, KolmogorovMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

@@ -46,7 +46,8 @@ void BM_LocalGrouping(benchmark::State& state) {
   const PairwiseEnergy& energy = bench::stereo_sized_energy();
   std::size_t groups = 0;
   for (auto _ : state) {
-    groups = local_grouping(energy, bench::kStereoShape, static_cast<int>(state.range(0)), 1).num_groups();
+    groups = local_grouping(energy, bench::kStereoShape, static_cast<int>(state.range(0)), 1)
+                 .num_groups();
     benchmark::DoNotOptimize(groups);
   }
   state.counters["groups"] = static_cast<double>(groups);

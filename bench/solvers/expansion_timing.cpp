@@ -55,7 +55,8 @@ Result run(const PairwiseEnergy& energy, int max_sweeps) {
     ++result.sweeps;
     const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
     if (sweep == 0) result.first_sweep_s = elapsed;
-    std::fprintf(stderr, "  sweep %d: energy %.3f at %.2f s\n", sweep + 1, solver.energy(), elapsed);
+    std::fprintf(stderr, "  sweep %d: energy %.3f at %.2f s\n", sweep + 1, solver.energy(),
+                 elapsed);
     if (!changed) {
       result.converged = true;
       break;
@@ -69,9 +70,9 @@ Result run(const PairwiseEnergy& energy, int max_sweeps) {
 }
 
 void print_row(const char* term, const char* backend, const Result& r) {
-  std::printf("| %s | %s | %.2f | %.2f | %d%s | %.3f | %.3f | %.0f%% | %.0f%% |\n", term, backend, r.first_sweep_s,
-              r.converge_s, r.sweeps, r.converged ? "" : " (cap)", r.start_energy, r.final_energy, 100 * r.flow_share,
-              100 * r.qpbo_share);
+  std::printf("| %s | %s | %.2f | %.2f | %d%s | %.3f | %.3f | %.0f%% | %.0f%% |\n", term, backend,
+              r.first_sweep_s, r.converge_s, r.sweeps, r.converged ? "" : " (cap)", r.start_energy,
+              r.final_energy, 100 * r.flow_share, 100 * r.qpbo_share);
 }
 
 }  // namespace
@@ -99,10 +100,12 @@ int main(int argc, char** argv) {
     const cv::Mat right = vision::load_colour_image(scene + "/right.png");
     const GridShape shape{static_cast<std::size_t>(left.cols), static_cast<std::size_t>(left.rows)};
     const auto unaries = vision::absolute_difference_cost(left, right, num_labels, 20.0);
-    std::printf("Teddy %zux%zu, %d labels, truncated AD cost (20), 4-connected\n\n", shape.width, shape.height,
-                num_labels);
-    std::printf("| term | backend | first sweep (s) | to convergence (s) | sweeps | start energy | final energy | "
-                "in max-flow | QPBO moves |\n|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("Teddy %zux%zu, %d labels, truncated AD cost (20), 4-connected\n\n", shape.width,
+                shape.height, num_labels);
+    std::printf(
+        "| term | backend | first sweep (s) | to convergence (s) | sweeps | start energy | final "
+        "energy | "
+        "in max-flow | QPBO moves |\n|---|---|---|---|---|---|---|---|---|\n");
     struct TermCase {
       const char* name;
       PairwiseTerm term;
@@ -110,8 +113,9 @@ int main(int argc, char** argv) {
     };
     for (const TermCase& c : {TermCase{"Potts (w=8)", PairwiseTerm::potts(), 8.0},
                               TermCase{"TSGO step (w=16)", PairwiseTerm::tsgo_step(), 16.0}}) {
-      const PairwiseEnergy energy = make_grid_energy(shape, Connectivity::four, num_labels, unaries, c.term,
-                                                     [&](VariableIndex, VariableIndex) { return c.weight; });
+      const PairwiseEnergy energy =
+          make_grid_energy(shape, Connectivity::four, num_labels, unaries, c.term,
+                           [&](VariableIndex, VariableIndex) { return c.weight; });
       std::fprintf(stderr, "%s, Boost:\n", c.name);
       const Result boost = run<BoostMaxFlow>(energy, max_sweeps);
       print_row(c.name, "Boost BK", boost);
@@ -120,7 +124,8 @@ int main(int argc, char** argv) {
       const Result kolmogorov = run<KolmogorovMaxFlow>(energy, max_sweeps);
       print_row(c.name, "libmaxflow", kolmogorov);
       std::printf("| %s | ratio Boost/libmaxflow | %.2f | %.2f | | | | | |\n", c.name,
-                  boost.first_sweep_s / kolmogorov.first_sweep_s, boost.converge_s / kolmogorov.converge_s);
+                  boost.first_sweep_s / kolmogorov.first_sweep_s,
+                  boost.converge_s / kolmogorov.converge_s);
 #endif
       std::fflush(stdout);
     }

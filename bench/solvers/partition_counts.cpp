@@ -41,16 +41,20 @@ int main(int argc, char** argv) {
   try {
     std::filesystem::create_directories(out);
     constexpr int kLabels = 85;
-    std::printf("| scene | pixels | level | genuine CP groups | CP time (ms) | local grouping groups | local time (ms) |\n"
-                "|---|---|---|---|---|---|---|\n");
-    for (const Scene scene : {Scene{"Teddy", "middlebury/2003/Teddy"}, Scene{"Dolls", "middlebury/2005/Dolls"}}) {
+    std::printf(
+        "| scene | pixels | level | genuine CP groups | CP time (ms) | local grouping groups | "
+        "local time (ms) |\n"
+        "|---|---|---|---|---|---|---|\n");
+    for (const Scene scene :
+         {Scene{"Teddy", "middlebury/2003/Teddy"}, Scene{"Dolls", "middlebury/2005/Dolls"}}) {
       const std::string dir = data + "/" + scene.dir;
       const cv::Mat left = vision::load_colour_image(dir + "/left.png");
       const cv::Mat right = vision::load_colour_image(dir + "/right.png");
-      const GridShape shape{static_cast<std::size_t>(left.cols), static_cast<std::size_t>(left.rows)};
+      const GridShape shape{static_cast<std::size_t>(left.cols),
+                            static_cast<std::size_t>(left.rows)};
       const PairwiseEnergy energy = make_grid_energy(
-          shape, Connectivity::four, kLabels, vision::absolute_difference_cost(left, right, kLabels, 20.0),
-          PairwiseTerm::tsgo_step(),
+          shape, Connectivity::four, kLabels,
+          vision::absolute_difference_cost(left, right, kLabels, 20.0), PairwiseTerm::tsgo_step(),
           [&](VariableIndex u, VariableIndex v) { return vision::tsgo_edge_weight(left, u, v); });
       struct Level {
         int labels, iterations;
@@ -64,17 +68,22 @@ int main(int argc, char** argv) {
         const double cp_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
         t0 = Clock::now();
         const DensePartition local = local_grouping(energy, shape, level.labels, level.iterations);
-        const double local_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-        std::printf("| %s | %zu | CP(%d,%d) | %zu (%.2f%%) | %.0f | %zu (%.2f%%) | %.0f |\n", scene.name, shape.size(),
-                    level.labels, level.iterations, genuine.num_groups(),
-                    100.0 * static_cast<double>(genuine.num_groups()) / static_cast<double>(shape.size()), cp_ms,
-                    local.num_groups(), 100.0 * static_cast<double>(local.num_groups()) / static_cast<double>(shape.size()),
-                    local_ms);
+        const double local_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        std::printf(
+            "| %s | %zu | CP(%d,%d) | %zu (%.2f%%) | %.0f | %zu (%.2f%%) | %.0f |\n", scene.name,
+            shape.size(), level.labels, level.iterations, genuine.num_groups(),
+            100.0 * static_cast<double>(genuine.num_groups()) / static_cast<double>(shape.size()),
+            cp_ms, local.num_groups(),
+            100.0 * static_cast<double>(local.num_groups()) / static_cast<double>(shape.size()),
+            local_ms);
         if (level.labels == 1 && level.iterations == 1) {
           const std::string stem = out + "/" + scene.name;
-          vision::write_image(stem + "-cp11-largest10.png", vision::render_largest_groups(genuine, shape, 10));
+          vision::write_image(stem + "-cp11-largest10.png",
+                              vision::render_largest_groups(genuine, shape, 10));
           vision::write_image(stem + "-cp11-means.png", vision::render_group_means(genuine, left));
-          vision::write_image(stem + "-local11-largest10.png", vision::render_largest_groups(local, shape, 10));
+          vision::write_image(stem + "-local11-largest10.png",
+                              vision::render_largest_groups(local, shape, 10));
         }
       }
       std::fflush(stdout);

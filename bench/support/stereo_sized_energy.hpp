@@ -22,8 +22,9 @@ inline const PairwiseEnergy& stereo_sized_energy() {
     const double weights[] = {0.3125, 0.15625, 0.125};
     std::uniform_int_distribution<int> weight_class(0, 2);
     return make_grid_energy(kStereoShape, Connectivity::four, kStereoLabels, std::move(unaries),
-                            PairwiseTerm::tsgo_step(),
-                            [&](VariableIndex, VariableIndex) { return weights[weight_class(rng)]; });
+                            PairwiseTerm::tsgo_step(), [&](VariableIndex, VariableIndex) {
+                              return weights[weight_class(rng)];
+                            });
   }();
   return energy;
 }

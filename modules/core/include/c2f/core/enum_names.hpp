@@ -20,8 +20,8 @@ Enum enum_from_string(std::string_view text, const Enum (&all)[N], std::string_v
     if (i > 0) expected += i + 1 == N ? " or " : ", ";
     expected += to_string(all[i]);
   }
-  throw std::invalid_argument("unknown " + std::string(what) + " '" + std::string(text) + "' (expected " +
-                              expected + ")");
+  throw std::invalid_argument("unknown " + std::string(what) + " '" + std::string(text) +
+                              "' (expected " + expected + ")");
 }
 
 }  // namespace c2f

@@ -32,7 +32,8 @@ DensePartition slic_partition(const cv::Mat& image, int region_size,
 /// Superpixels for each region size (coarsest first), nested explicitly: every level's group is
 /// (previous level's group, own superpixel), so each level refines the one before it. Throws
 /// std::invalid_argument when the sizes are empty or do not decrease.
-std::vector<DensePartition> slic_hierarchy(const cv::Mat& image, const std::vector<int>& region_sizes,
+std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
+                                           const std::vector<int>& region_sizes,
                                            const SlicOptions& options = {});
 
 /// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied.

@@ -12,7 +12,7 @@ namespace c2f::vision {
 /// match leaves the right image. Left pixel (x, y) with disparity d matches right (x - d, y).
 /// Throws std::invalid_argument when the images differ in size or are not 8-bit 3-channel, or
 /// when num_labels < 1 or truncation <= 0.
-std::vector<double> absolute_difference_cost(const cv::Mat& left, const cv::Mat& right, int num_labels,
-                                             double truncation);
+std::vector<double> absolute_difference_cost(const cv::Mat& left, const cv::Mat& right,
+                                             int num_labels, double truncation);
 
 }  // namespace c2f::vision

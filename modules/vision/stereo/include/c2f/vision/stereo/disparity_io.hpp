@@ -32,6 +32,7 @@ cv::Mat colourise_disparity(const cv::Mat& disparity, double max_disparity);
 
 /// Error map: black where GT is unknown, red where |d - gt| > threshold, grey elsewhere
 /// (darker for occluded pixels when a non-occluded mask is given).
-cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded, double threshold = 1.0);
+cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded,
+                  double threshold = 1.0);
 
 }  // namespace c2f::vision

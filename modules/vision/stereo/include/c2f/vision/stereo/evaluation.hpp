@@ -9,9 +9,11 @@ namespace c2f::vision {
 
 struct BadPixelRates {
   static constexpr std::array<double, 3> thresholds{0.5, 1.0, 2.0};
-  std::array<double, 3> nonoccluded{};  ///< fraction of evaluated non-occluded pixels with |d - gt| > t
-  std::array<double, 3> all{};          ///< fraction of pixels with known GT with |d - gt| > t
-  std::size_t nonoccluded_pixels = 0;   ///< 0 when no mask was given (nonoccluded rates are then NaN)
+  std::array<double, 3>
+      nonoccluded{};            ///< fraction of evaluated non-occluded pixels with |d - gt| > t
+  std::array<double, 3> all{};  ///< fraction of pixels with known GT with |d - gt| > t
+  std::size_t nonoccluded_pixels =
+      0;  ///< 0 when no mask was given (nonoccluded rates are then NaN)
   std::size_t known_pixels = 0;
   /// The reference implementation's number: pixels with known GT and |d - gt| > 1, divided by
   /// all pixels (unknown ones included), for comparison with its published errors.
@@ -24,6 +26,7 @@ struct BadPixelRates {
 /// Compares `disparity` (CV_32F) with `gt` (CV_32F, NaN = unknown) over known-GT pixels, and
 /// over `nonoccluded` (CV_8U, 255 = evaluate; may be empty). Throws std::invalid_argument on
 /// type or size mismatch.
-BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded);
+BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
+                              const cv::Mat& nonoccluded);
 
 }  // namespace c2f::vision
