@@ -25,6 +25,7 @@
 #include "c2f/adapters/binary_move.hpp"
 #include "c2f/adapters/boost_maxflow.hpp"
 #include "c2f/adapters/move_order.hpp"
+#include "c2f/adapters/move_state.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -63,79 +64,64 @@ class ExpansionSolver {
 
   /// Starts from `start` (validated); builds the move graph of the energy's topology.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
-    validate_labeling(start, energy.num_variables(), energy.num_labels(),
-                      "ExpansionSolver::bind: start");
-    energy_ = &energy;
-    labeling_.assign(start.begin(), start.end());
-    candidate_.resize(labeling_.size());
-    moves_.bind(energy);
-    d_.resize(energy.num_variables());
-    p_.resize(energy.edges().size());
-    out_.resize(energy.num_variables());
+    state_.bind(energy, start, "ExpansionSolver::bind: start");
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == LabelOrder::frequency) {
-      const std::vector<std::size_t> count = label_counts(labeling_, energy.num_labels());
-      std::stable_sort(labels.begin(), labels.end(), [&](Label a, Label b) {
-        return count[static_cast<std::size_t>(a)] > count[static_cast<std::size_t>(b)];
-      });
+      const std::vector<std::size_t> count = label_counts(state_.labeling, energy.num_labels());
+      sort_most_used_first(labels, [&](Label l) { return count[static_cast<std::size_t>(l)]; });
     }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
-    energy_value_ = energy.evaluate_unchecked(labeling_);
     last_ = {};
   }
 
   /// One expansion move; returns the energy afterwards (never larger than before).
   double step() {
-    if (energy_ == nullptr) throw std::logic_error("ExpansionSolver::step: call bind() first");
-    const PairwiseEnergy& energy = *energy_;
+    if (state_.energy == nullptr)
+      throw std::logic_error("ExpansionSolver::step: call bind() first");
+    const PairwiseEnergy& energy = *state_.energy;
+    const Labeling& labeling = state_.labeling;
+    std::vector<double>& d = state_.d;
+    std::vector<double>& p = state_.p;
     const Label alpha = cycle_.next();
-    for (std::size_t i = 0; i < d_.size(); ++i)
-      d_[i] = energy.unary(i, alpha) - energy.unary(i, labeling_[i]);
-    std::fill(p_.begin(), p_.end(), 0.0);
+    for (std::size_t i = 0; i < d.size(); ++i)
+      d[i] = energy.unary(i, alpha) - energy.unary(i, labeling[i]);
+    std::fill(p.begin(), p.end(), 0.0);
     const auto edges = energy.edges();
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const Edge& edge = edges[e];
-      const Label xu = labeling_[edge.u];
-      const Label xv = labeling_[edge.v];
-      add_binary_term(d_, p_, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
+      const Label xu = labeling[edge.u];
+      const Label xv = labeling[edge.v];
+      add_binary_term(d, p, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
                       energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
                       energy.pairwise_cost(edge, alpha, alpha));
     }
-    const BinaryMoveStats move = moves_.solve(d_, p_, out_);
+    const BinaryMoveStats move = state_.moves.solve(d, p, state_.out);
     last_ = ExpansionMoveStats{alpha, 0, move.unlabeled, move.used_qpbo, false, move.flow_seconds};
     std::size_t changed = 0;
-    for (std::size_t i = 0; i < labeling_.size(); ++i) {
-      const bool to_alpha = out_[i] == MoveLabel::one && labeling_[i] != alpha;
-      candidate_[i] = to_alpha ? alpha : labeling_[i];
+    for (std::size_t i = 0; i < labeling.size(); ++i) {
+      const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;
+      state_.candidate[i] = to_alpha ? alpha : labeling[i];
       changed += to_alpha;
     }
-    if (changed == 0) return energy_value_;
-    const double candidate_energy = energy.evaluate_unchecked(candidate_);
-    if (candidate_energy <
-        energy_value_ - options_.tolerance * std::max(1.0, std::abs(energy_value_))) {
-      labeling_.swap(candidate_);
-      energy_value_ = candidate_energy;
+    if (changed == 0) return state_.value;
+    if (state_.accept_candidate_if_lower(options_.tolerance *
+                                         std::max(1.0, std::abs(state_.value)))) {
       last_.changed = changed;
       last_.accepted = true;
     }
-    return energy_value_;
+    return state_.value;
   }
 
-  [[nodiscard]] double energy() const noexcept { return energy_value_; }
-  [[nodiscard]] std::span<const Label> labeling() const noexcept { return labeling_; }
+  [[nodiscard]] double energy() const noexcept { return state_.value; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
   [[nodiscard]] const ExpansionMoveStats& last_move() const noexcept { return last_; }
   /// Moves in one sweep over all labels.
   [[nodiscard]] std::size_t moves_per_sweep() const noexcept { return cycle_.cycle_length(); }
 
  private:
   ExpansionOptions options_;
-  const PairwiseEnergy* energy_ = nullptr;
-  Labeling labeling_, candidate_;
-  double energy_value_ = 0.0;
-  BinaryMoveSolver<Backend> moves_;
-  std::vector<double> d_, p_;
-  std::vector<MoveLabel> out_;
+  MoveState<Backend> state_;
   MoveCycle<Label> cycle_;
   ExpansionMoveStats last_;
 };

@@ -30,6 +30,13 @@ std::string_view to_string(LabelOrder order);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.
 LabelOrder label_order_from_string(std::string_view text);
 
+/// Stably sorts moves by decreasing use(move): LabelOrder::frequency's order.
+template <class Move, class Use>
+void sort_most_used_first(std::vector<Move>& moves, Use use) {
+  std::stable_sort(moves.begin(), moves.end(),
+                   [&](const Move& a, const Move& b) { return use(a) > use(b); });
+}
+
 /// Cycles endlessly through a list of moves (labels or label pairs) in the chosen order.
 template <class Move>
 class MoveCycle {

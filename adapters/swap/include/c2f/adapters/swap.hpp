@@ -19,6 +19,7 @@
 #include "c2f/adapters/binary_move.hpp"
 #include "c2f/adapters/boost_maxflow.hpp"
 #include "c2f/adapters/move_order.hpp"
+#include "c2f/adapters/move_state.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -39,95 +40,78 @@ class SwapSolver {
   explicit SwapSolver(SwapOptions options = {}) : options_(options) {}
 
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
-    validate_labeling(start, energy.num_variables(), energy.num_labels(),
-                      "SwapSolver::bind: start");
     require_semi_metric(energy, "SwapSolver::bind");
-    energy_ = &energy;
-    labeling_.assign(start.begin(), start.end());
-    candidate_.resize(labeling_.size());
-    moves_.bind(energy);
-    d_.resize(energy.num_variables());
-    p_.resize(energy.edges().size());
-    out_.resize(energy.num_variables());
+    state_.bind(energy, start, "SwapSolver::bind: start");
     std::vector<std::pair<Label, Label>> label_pairs;
     for (Label a = 0; a < energy.num_labels(); ++a) {
       for (Label b = a + 1; b < energy.num_labels(); ++b) label_pairs.emplace_back(a, b);
     }
     if (options_.order == LabelOrder::frequency) {
-      const std::vector<std::size_t> count = label_counts(labeling_, energy.num_labels());
-      std::stable_sort(label_pairs.begin(), label_pairs.end(), [&](const auto& x, const auto& y) {
-        return count[static_cast<std::size_t>(x.first)] +
-                   count[static_cast<std::size_t>(x.second)] >
-               count[static_cast<std::size_t>(y.first)] + count[static_cast<std::size_t>(y.second)];
+      const std::vector<std::size_t> count = label_counts(state_.labeling, energy.num_labels());
+      sort_most_used_first(label_pairs, [&](const std::pair<Label, Label>& pair) {
+        return count[static_cast<std::size_t>(pair.first)] +
+               count[static_cast<std::size_t>(pair.second)];
       });
     }
     if (label_pairs.empty()) label_pairs.emplace_back(0, 0);  // one label: every move is empty
     cycle_ =
         MoveCycle<std::pair<Label, Label>>(std::move(label_pairs), options_.order, options_.seed);
-    energy_value_ = energy.evaluate_unchecked(labeling_);
   }
 
   /// One swap move; returns the energy afterwards (never larger than before).
   double step() {
-    if (energy_ == nullptr) throw std::logic_error("SwapSolver::step: call bind() first");
-    const PairwiseEnergy& energy = *energy_;
+    if (state_.energy == nullptr) throw std::logic_error("SwapSolver::step: call bind() first");
+    const PairwiseEnergy& energy = *state_.energy;
+    const Labeling& labeling = state_.labeling;
+    std::vector<double>& d = state_.d;
+    std::vector<double>& p = state_.p;
     const auto [alpha, beta] = cycle_.next();
     last_pair_ = {alpha, beta};
     auto in_move = [&](Label l) { return l == alpha || l == beta; };
-    for (std::size_t i = 0; i < d_.size(); ++i) {
-      d_[i] = in_move(labeling_[i]) ? energy.unary(i, beta) - energy.unary(i, alpha) : 0.0;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      d[i] = in_move(labeling[i]) ? energy.unary(i, beta) - energy.unary(i, alpha) : 0.0;
     }
-    std::fill(p_.begin(), p_.end(), 0.0);
+    std::fill(p.begin(), p.end(), 0.0);
     const auto edges = energy.edges();
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const Edge& edge = edges[e];
-      const Label xu = labeling_[edge.u];
-      const Label xv = labeling_[edge.v];
+      const Label xu = labeling[edge.u];
+      const Label xv = labeling[edge.v];
       const bool u_in = in_move(xu);
       const bool v_in = in_move(xv);
       if (u_in && v_in) {
-        add_binary_term(d_, p_, e, edge.u, edge.v, energy.pairwise_cost(edge, alpha, alpha),
+        add_binary_term(d, p, e, edge.u, edge.v, energy.pairwise_cost(edge, alpha, alpha),
                         energy.pairwise_cost(edge, alpha, beta),
                         energy.pairwise_cost(edge, beta, alpha),
                         energy.pairwise_cost(edge, beta, beta));
       } else if (u_in) {
-        d_[edge.u] += energy.pairwise_cost(edge, beta, xv) - energy.pairwise_cost(edge, alpha, xv);
+        d[edge.u] += energy.pairwise_cost(edge, beta, xv) - energy.pairwise_cost(edge, alpha, xv);
       } else if (v_in) {
-        d_[edge.v] += energy.pairwise_cost(edge, xu, beta) - energy.pairwise_cost(edge, xu, alpha);
+        d[edge.v] += energy.pairwise_cost(edge, xu, beta) - energy.pairwise_cost(edge, xu, alpha);
       }
     }
-    moves_.solve(d_, p_, out_);
+    state_.moves.solve(d, p, state_.out);
     changed_ = 0;
-    for (std::size_t i = 0; i < labeling_.size(); ++i) {
-      candidate_[i] = labeling_[i];
-      if (in_move(labeling_[i])) candidate_[i] = out_[i] == MoveLabel::one ? beta : alpha;
-      changed_ += candidate_[i] != labeling_[i];
+    for (std::size_t i = 0; i < labeling.size(); ++i) {
+      state_.candidate[i] = labeling[i];
+      if (in_move(labeling[i]))
+        state_.candidate[i] = state_.out[i] == MoveLabel::one ? beta : alpha;
+      changed_ += state_.candidate[i] != labeling[i];
     }
-    if (changed_ == 0) return energy_value_;
-    const double candidate_energy = energy.evaluate_unchecked(candidate_);
-    if (candidate_energy < energy_value_) {  // strict: no equal-energy churn
-      labeling_.swap(candidate_);
-      energy_value_ = candidate_energy;
-    } else {
-      changed_ = 0;
-    }
-    return energy_value_;
+    if (changed_ == 0) return state_.value;
+    if (!state_.accept_candidate_if_lower(0.0)) changed_ = 0;  // strict: no equal-energy churn
+    return state_.value;
   }
 
-  [[nodiscard]] double energy() const noexcept { return energy_value_; }
-  [[nodiscard]] std::span<const Label> labeling() const noexcept { return labeling_; }
+  [[nodiscard]] double energy() const noexcept { return state_.value; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
   /// The pair of the last step and how many variables it changed.
   [[nodiscard]] std::pair<Label, Label> last_pair() const noexcept { return last_pair_; }
   [[nodiscard]] std::size_t changed_in_last_step() const noexcept { return changed_; }
 
  private:
   SwapOptions options_;
-  const PairwiseEnergy* energy_ = nullptr;
-  Labeling labeling_, candidate_;
-  double energy_value_ = 0.0;
-  BinaryMoveSolver<Backend> moves_;
-  std::vector<double> d_, p_;
-  std::vector<MoveLabel> out_;
+  MoveState<Backend> state_;
   MoveCycle<std::pair<Label, Label>> cycle_;
   std::pair<Label, Label> last_pair_{0, 0};
   std::size_t changed_ = 0;
