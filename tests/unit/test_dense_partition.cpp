@@ -93,3 +93,16 @@ TEST_CASE("partition lists must refine and fit the energy", "[lift][partition][v
   CHECK_THROWS_WITH(list.next(five),
                     Catch::Contains("partition 0 covers 4 variables, the energy has 5"));
 }
+
+TEST_CASE("intersect groups variables that share a group in both partitions", "[lift][partition]") {
+  const DensePartition halves({0, 0, 0, 1, 1, 1}, 2);
+  const DensePartition pairs({0, 1, 1, 2, 2, 0}, 3);
+  const DensePartition both = intersect(halves, pairs);
+  CHECK(both == DensePartition({0, 1, 1, 2, 2, 3}, 4));
+  CHECK(both.is_refinement_of(halves));
+  CHECK(both.is_refinement_of(pairs));
+  CHECK(intersect(halves, halves) == halves);
+  CHECK(intersect(halves, DensePartition::identity(6)) == DensePartition::identity(6));
+  CHECK_THROWS_WITH(intersect(halves, DensePartition::identity(5)),
+                    Catch::Contains("intersect: the partitions cover 6 and 5 variables"));
+}

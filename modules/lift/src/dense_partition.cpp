@@ -1,5 +1,6 @@
 #include "c2f/lift/dense_partition.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -86,6 +87,19 @@ bool DensePartition::is_refinement_of(const DensePartition& coarser) const {
     }
   }
   return true;
+}
+
+DensePartition intersect(const DensePartition& a, const DensePartition& b) {
+  if (a.num_variables() != b.num_variables()) {
+    throw std::invalid_argument("intersect: the partitions cover " +
+                                std::to_string(a.num_variables()) + " and " +
+                                std::to_string(b.num_variables()) + " variables");
+  }
+  std::vector<std::int64_t> ids(a.num_variables());
+  const auto stride = static_cast<std::int64_t>(b.num_groups());
+  for (std::size_t v = 0; v < ids.size(); ++v)
+    ids[v] = static_cast<std::int64_t>(a.group_of(v)) * stride + b.group_of(v);
+  return DensePartition::from_ids(ids);
 }
 
 }  // namespace c2f

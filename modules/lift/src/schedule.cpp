@@ -241,13 +241,7 @@ DensePartition ScheduleProvider::build(const LevelSpec& spec, const PairwiseEner
                                     " pixels, the grid has " + std::to_string(shape_.size()));
       }
       if (!previous_) return superpixels;
-      std::vector<std::int64_t> ids(shape_.size());
-      for (std::size_t v = 0; v < ids.size(); ++v) {
-        ids[v] = static_cast<std::int64_t>(previous_->group_of(v)) *
-                     static_cast<std::int64_t>(shape_.size()) +
-                 superpixels.group_of(v);
-      }
-      return DensePartition::from_ids(ids);
+      return intersect(*previous_, superpixels);
     }
   }
   throw std::logic_error("schedule: unknown level kind");

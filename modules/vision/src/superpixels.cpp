@@ -58,13 +58,7 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
       levels.push_back(std::move(superpixels));
       continue;
     }
-    const DensePartition& coarser = levels.back();
-    std::vector<std::int64_t> ids(superpixels.num_variables());
-    const auto stride = static_cast<std::int64_t>(superpixels.num_groups());
-    for (std::size_t v = 0; v < ids.size(); ++v) {
-      ids[v] = static_cast<std::int64_t>(coarser.group_of(v)) * stride + superpixels.group_of(v);
-    }
-    levels.push_back(DensePartition::from_ids(ids));
+    levels.push_back(intersect(levels.back(), superpixels));
   }
   return levels;
 }

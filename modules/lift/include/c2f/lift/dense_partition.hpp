@@ -54,4 +54,9 @@ class DensePartition {
 
 static_assert(Partition<DensePartition>);
 
+/// The coarsest partition that refines both `a` and `b`: two variables share a group exactly
+/// when they share one in `a` and one in `b`. Throws std::invalid_argument when the variable
+/// counts differ. O(N).
+DensePartition intersect(const DensePartition& a, const DensePartition& b);
+
 }  // namespace c2f
