@@ -10,10 +10,10 @@
 #include <map>
 #include <random>
 
-#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "c2f/core/grid.hpp"
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-#include "c2f/adapters/kolmogorov_maxflow.hpp"
+#include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
 #endif
 
 namespace {

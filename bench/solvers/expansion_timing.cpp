@@ -14,7 +14,7 @@
 
 #include "c2f/c2f.hpp"
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-#include "c2f/adapters/kolmogorov_maxflow.hpp"
+#include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
 #endif
 
 namespace {
@@ -45,11 +45,11 @@ Result run(const PairwiseEnergy& energy, int max_sweeps) {
   long moves = 0, qpbo_moves = 0;
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
     bool changed = false;
-    for (std::size_t m = 0; m < solver.moves_per_sweep(); ++m) {
+    for (std::size_t m = 0; m < solver.steps_per_sweep(energy.num_labels()); ++m) {
       solver.step();
-      changed = changed || solver.last_move().accepted;
-      flow_seconds += solver.last_move().flow_seconds;
-      qpbo_moves += solver.last_move().used_qpbo;
+      changed = changed || solver.last_step().improved;
+      flow_seconds += solver.last_step().flow_seconds;
+      qpbo_moves += solver.last_step().used_qpbo;
       ++moves;
     }
     ++result.sweeps;

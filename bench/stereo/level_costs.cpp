@@ -14,6 +14,7 @@
 
 #include "c2f/c2f.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 
 namespace {
@@ -31,8 +32,8 @@ void report(const char* name, const PairwiseEnergy& energy, std::span<const Labe
   const auto t0 = Clock::now();
   for (int m = 0; m < energy.num_labels(); ++m) {
     solver.step();
-    flow += solver.last_move().flow_seconds;
-    qpbo += solver.last_move().used_qpbo;
+    flow += solver.last_step().flow_seconds;
+    qpbo += solver.last_step().used_qpbo;
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("%-14s %9zu %9zu %6.2f %10.1f %8.1f%% %6.1f%% %12.1f %12.1f\n", name,
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
     const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
     std::printf("%-14s %9s %9s %6s %10s %9s %7s %12s %12s\n", "level", "variables", "edges",
                 "degree", "ms/move", "flow", "qpbo", "E start", "E sweep");
-    ScheduleProvider provider(Schedule::parse(schedule_text), shape);
+    ScheduleProvider provider(parse_stereo_schedule(schedule_text), shape);
     while (auto partition = provider.next(energy)) {
       const PairwiseEnergy reduced = reduce(energy, *partition);
       report(provider.reports().back().level.c_str(), reduced,

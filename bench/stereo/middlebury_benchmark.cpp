@@ -38,6 +38,7 @@
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 
 using namespace c2f;
@@ -88,30 +89,30 @@ double error_at(const std::vector<Point>& trace, double t) {
 struct Settings {
   std::string schedule = "paper";
   double time_limit = 600;
-  LabelOrder label_order = LabelOrder::sequential;
+  VisitOrder label_order = VisitOrder::sequential;
   double coarse_tolerance = 0.0;
 };
 
-Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shape,
-          const std::string& schedule, const Settings& settings, const std::string& trace_path) {
-  ScheduleProvider provider(Schedule::parse(schedule), shape);
+Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::string& schedule,
+          const Settings& settings, const std::string& trace_path) {
+  ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape());
   ExpansionSolver<> solver(ExpansionOptions{settings.label_order});
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
-  options.plateau_steps_at_original = energy.num_labels();  // a whole sweep without decrease
+  options.plateau_steps_at_original =  // a whole sweep without decrease
+      static_cast<int>(ExpansionSolver<>::steps_per_sweep(energy.num_labels()));
   options.time_limit_seconds = settings.time_limit;
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
+  const auto error = bad_pixel_error(scene);
   run.summary = coarse_to_fine(energy, provider, solver, options, [&](const StepEvent& event) {
     writer(event);
-    const BadPixelRates rates = bad_pixel_rates(labels_to_disparity(event.ground_labeling(), shape),
-                                                scene.gt, scene.nonoccluded);
-    run.trace.push_back({event.time_s, event.energy, rates.nonoccluded[1]});
+    run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
     return ObserverDecision::continue_run;
   });
-  run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, shape), scene.gt,
+  run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
                               scene.nonoccluded);
   return run;
 }
@@ -119,14 +120,12 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, GridShape shap
 int run_scene(const std::string& name, const std::string& data, const std::string& out,
               const Settings& settings, bool header) {
   const StereoScene scene = load_named_scene(data, name);
-  const GridShape shape{static_cast<std::size_t>(scene.left.cols),
-                        static_cast<std::size_t>(scene.left.rows)};
+  const GridShape shape = scene.shape();
   TsgoOptions tsgo;
   const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
   std::filesystem::create_directories(out);
-  const Run flat = solve(energy, scene, shape, "flat", settings, out + "/" + name + "-flat.csv");
-  const Run c2f =
-      solve(energy, scene, shape, settings.schedule, settings, out + "/" + name + "-c2f.csv");
+  const Run flat = solve(energy, scene, "flat", settings, out + "/" + name + "-flat.csv");
+  const Run c2f = solve(energy, scene, settings.schedule, settings, out + "/" + name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -283,7 +282,7 @@ int main(int argc, char** argv) {
       else if (arg == "--schedule" && i + 1 < argc)
         settings.schedule = argv[++i];
       else if (arg == "--label-order" && i + 1 < argc)
-        settings.label_order = label_order_from_string(argv[++i]);
+        settings.label_order = visit_order_from_string(argv[++i]);
       else if (arg == "--coarse-tolerance" && i + 1 < argc)
         settings.coarse_tolerance = std::stod(argv[++i]);
       else if (arg == "--header")
@@ -291,7 +290,7 @@ int main(int argc, char** argv) {
       else
         throw std::invalid_argument("unknown argument '" + arg + "'");
     }
-    Schedule::parse(settings.schedule);  // a bad schedule fails before the first solve
+    parse_stereo_schedule(settings.schedule);  // a bad schedule fails before the first solve
     if (!(settings.coarse_tolerance >= 0.0 && settings.coarse_tolerance < 1.0))
       throw std::invalid_argument("--coarse-tolerance must be in [0, 1)");
     return run_scene(argv[2], data, out, settings, header);

@@ -7,6 +7,7 @@
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/pairwise_energy.hpp"
+#include "c2f/vision/stereo/colour_weights.hpp"
 
 namespace c2f::bench {
 
@@ -19,12 +20,12 @@ inline const PairwiseEnergy& stereo_sized_energy() {
     std::uniform_real_distribution<double> cost(0.0, 1.0);
     std::vector<double> unaries(kStereoShape.size() * kStereoLabels);
     for (double& u : unaries) u = cost(rng);
-    const double weights[] = {0.3125, 0.15625, 0.125};
     std::uniform_int_distribution<int> weight_class(0, 2);
-    return make_grid_energy(kStereoShape, Connectivity::four, kStereoLabels, std::move(unaries),
-                            PairwiseTerm::tsgo_step(), [&](VariableIndex, VariableIndex) {
-                              return weights[weight_class(rng)];
-                            });
+    return make_grid_energy(
+        kStereoShape, Connectivity::four, kStereoLabels, std::move(unaries),
+        PairwiseTerm::tsgo_step(), [&](VariableIndex, VariableIndex) {
+          return vision::kTsgoWeights[static_cast<std::size_t>(weight_class(rng))];
+        });
   }();
   return energy;
 }

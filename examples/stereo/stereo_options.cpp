@@ -5,6 +5,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "c2f/vision/stereo/stereo_schedules.hpp"
+
 namespace po = boost::program_options;
 
 namespace c2f::examples {
@@ -16,19 +18,12 @@ void require_file(const std::string& path, const char* flag) {
   }
 }
 
-std::string paper_schedule(const std::string& partition) {
-  if (partition == "cp") return "cp:1,1 cp:2,1 cp:3,1 flat";
-  if (partition == "local") return "local:1,1 local:2,1 local:3,1 flat";
-  if (partition == "threshold") return "threshold:50 threshold:5 threshold:1 flat";
-  if (partition == "slic") return "slic:32 slic:16 slic:8 flat";
-  throw std::invalid_argument("--partition: '" + partition +
-                              "' is not one of cp, local, threshold, slic");
-}
 }  // namespace
 
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
-  std::string partition, smoothness = "tsgo_step", label_order = "sequential";
+  std::string schedule = "paper", solver = "expansion", smoothness = "tsgo_step",
+              label_order = "sequential";
   po::options_description visible(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -43,19 +38,18 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "data", po::value(&command.data)->default_value("../shared/data"), "data root for --scene")(
       "labels", po::value(&command.tsgo.labels)->default_value(85),
       "number of disparity labels (>= 2)")(
-      "schedule", po::value(&command.schedule_text)->default_value("paper"),
-      "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-cc (the same split into connected "
+      "schedule", po::value(&schedule)->default_value("paper"),
+      "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic (the "
+      "same three levels with another partition kind), paper-cc (split into connected "
       "components), regions (connected regions of equal best labels; fastest measured: "
       "local:1,1/cc with --plateau-tolerance 3e-5), "
       "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")(
-      "partition", po::value(&partition),
-      "partition kind for --schedule paper: cp (default), local, threshold, slic")(
       "allow-non-refining", po::bool_switch(&command.allow_non_refining),
       "accept levels that do not refine each other (labels handed down by majority vote)")(
-      "solver", po::value(&command.solver)->default_value("expansion"), "expansion, swap or lbp")(
+      "solver", po::value(&solver)->default_value("expansion"), "expansion, swap, lbp or icm")(
       "label-order", po::value(&label_order)->default_value("sequential"),
-      "order of expansion / swap moves: sequential (0, 1, ...), random, or frequency (labels of "
-      "most variables first, counted when each level starts)")(
+      "order of expansion / swap moves (icm: of the pixels): sequential (0, 1, ...), random, or "
+      "frequency (labels of most variables first, counted when each level starts)")(
       "smoothness", po::value(&smoothness)->default_value("tsgo_step"),
       "tsgo_step or truncated_linear (the paper's wording)")(
       "time-limit", po::value(&command.time_limit)->default_value(0.0),
@@ -69,14 +63,13 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps down)")(
       "final-plateau", po::value(&command.final_plateau)->default_value(0),
       "stop after this many steps without decrease on the original problem (0: one sweep: labels "
-      "moves for "
-      "expansion, label pairs for swap, 4 iterations for lbp)")(
+      "moves for expansion, label pairs for swap, 4 iterations for lbp, 1 for icm)")(
       "trace", po::value(&command.trace), "trace CSV (default OUTDIR/trace.csv)")(
-      "gt", po::value(&command.gt), "ground-truth disparity PNG (0 = unknown)")(
-      "gt-divisor", po::value(&command.gt_divisor)->default_value(1.0),
-      "GT PNG value per disparity pixel")("gt-right", po::value(&command.gt_right),
+      "gt", po::value(&command.pair.gt), "ground-truth disparity PNG (0 = unknown)")(
+      "gt-divisor", po::value(&command.pair.gt_divisor)->default_value(1.0),
+      "GT PNG value per disparity pixel")("gt-right", po::value(&command.pair.gt_right),
                                           "right-view GT PNG, for a left-right occlusion mask")(
-      "mask", po::value(&command.mask), "non-occluded mask PNG (255 = evaluate)")(
+      "mask", po::value(&command.pair.mask), "non-occluded mask PNG (255 = evaluate)")(
       "downscale", po::value(&command.downscale)->default_value(1),
       "shrink images by this integer factor (GT divided by it)")(
       "save-partitions", po::bool_switch(&command.save_partitions),
@@ -104,12 +97,17 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   if (command.scene.empty()) {
     if (images.size() != 2)
       throw std::invalid_argument("give LEFT and RIGHT images, or --scene NAME (see --help)");
-    command.left = images[0];
-    command.right = images[1];
-    require_file(command.left, "LEFT");
-    require_file(command.right, "RIGHT");
+    command.pair.left = images[0];
+    command.pair.right = images[1];
+    require_file(command.pair.left, "LEFT");
+    require_file(command.pair.right, "RIGHT");
   } else if (!images.empty()) {
     throw std::invalid_argument("--scene replaces LEFT RIGHT; give one or the other");
+  } else if (!command.pair.gt.empty() || !command.pair.gt_right.empty() ||
+             !command.pair.mask.empty()) {
+    throw std::invalid_argument(
+        "--scene loads the scene's own GT and masks; --gt, --gt-right and --mask go with LEFT "
+        "RIGHT");
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
@@ -117,51 +115,61 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
     throw std::invalid_argument("--labels: must be >= 2, got " +
                                 std::to_string(command.tsgo.labels));
   if (command.downscale < 1) throw std::invalid_argument("--downscale: must be >= 1");
-  if (!(command.gt_divisor > 0.0)) throw std::invalid_argument("--gt-divisor: must be > 0");
+  if (!(command.pair.gt_divisor > 0.0)) throw std::invalid_argument("--gt-divisor: must be > 0");
   if (command.time_limit < 0.0) throw std::invalid_argument("--time-limit: must be >= 0");
   if (command.max_steps < 0) throw std::invalid_argument("--max-steps: must be >= 0");
   if (command.plateau < 1) throw std::invalid_argument("--plateau: must be >= 1");
   if (command.final_plateau < 0) throw std::invalid_argument("--final-plateau: must be >= 0");
   if (!(command.plateau_tolerance >= 0.0 && command.plateau_tolerance < 1.0))
     throw std::invalid_argument("--plateau-tolerance: must be in [0, 1)");
-  if (command.solver != "expansion" && command.solver != "swap" && command.solver != "lbp") {
-    throw std::invalid_argument("--solver: '" + command.solver +
-                                "' is not one of expansion, swap, lbp");
-  }
-  if ((!command.gt_right.empty() || !command.mask.empty()) && command.gt.empty()) {
-    throw std::invalid_argument("--gt-right and --mask need --gt");
-  }
-  require_file(command.gt, "--gt");
-  require_file(command.gt_right, "--gt-right");
-  require_file(command.mask, "--mask");
+  require_file(command.pair.gt, "--gt");
+  require_file(command.pair.gt_right, "--gt-right");
+  require_file(command.pair.mask, "--mask");
   try {
-    command.label_order = label_order_from_string(label_order);
+    command.solver.kind = solver_kind_from_string(solver);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(std::string("--solver: ") + error.what());
+  }
+  try {
+    command.solver.order = visit_order_from_string(label_order);
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("--label-order: ") + error.what());
   }
+  if (const std::string problem = command.solver.validate(); !problem.empty())
+    throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
   try {
     command.tsgo.smoothness = vision::stereo_smoothness_from_string(smoothness);
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("--smoothness: ") + error.what());
   }
-  if (!partition.empty() && command.schedule_text != "paper") {
-    throw std::invalid_argument(
-        "--partition applies to --schedule paper only; write other levels explicitly");
+  try {
+    command.schedule = vision::parse_stereo_schedule(schedule);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(std::string("--schedule: ") + error.what());
   }
-  const std::string text = command.schedule_text == "paper"
-                               ? paper_schedule(partition.empty() ? "cp" : partition)
-                               : command.schedule_text;
-  command.schedule = Schedule::parse(text);  // throws naming the level
-  for (const LevelSpec& level : command.schedule.levels) {
-    if ((level.kind == LevelKind::colour_passing || level.kind == LevelKind::local_grouping) &&
-        level.labels > command.tsgo.labels) {
-      throw std::invalid_argument("--schedule: level " + level.to_string() +
-                                  " has N_L above --labels " + std::to_string(command.tsgo.labels));
-    }
+  if (const std::string problem = command.schedule.validate(command.tsgo.labels);
+      !problem.empty()) {
+    throw std::invalid_argument("--schedule: " + problem + " (--labels " +
+                                std::to_string(command.tsgo.labels) + ")");
   }
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
+}
+
+Options run_options(const StereoCommand& command) {
+  Options options;
+  options.plateau_steps = {command.plateau};
+  options.plateau_tolerance = command.plateau_tolerance;
+  options.plateau_steps_at_original =
+      command.final_plateau > 0
+          ? command.final_plateau
+          : static_cast<int>(steps_per_sweep(command.solver.kind, command.tsgo.labels));
+  options.time_limit_seconds = command.time_limit;
+  options.max_total_steps = command.max_steps;
+  options.level_transfer =
+      command.allow_non_refining ? LevelTransfer::majority : LevelTransfer::exact;
+  return options;
 }
 
 }  // namespace c2f::examples

@@ -4,25 +4,23 @@
 #include <optional>
 #include <string>
 
-#include "c2f/adapters/move_order.hpp"
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/driver/options.hpp"
 #include "c2f/lift/schedule.hpp"
+#include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 
 namespace c2f::examples {
 
 struct StereoCommand {
-  std::string left, right;  ///< image paths (pair mode)
-  std::string scene, data;  ///< scene mode: a scenes.csv row name and the data root
+  vision::StereoPairFiles pair;  ///< pair mode: the views, GT and masks
+  std::string scene, data;       ///< scene mode: a scenes.csv row name and the data root
   std::string out_dir;
-  std::string gt, gt_right, mask;
-  double gt_divisor = 1.0;
   int downscale = 1;
   vision::TsgoOptions tsgo;
   Schedule schedule;
-  std::string schedule_text;
   bool allow_non_refining = false;
-  std::string solver = "expansion";
-  LabelOrder label_order = LabelOrder::sequential;  ///< expansion and swap
+  SolverChoice solver;
   double time_limit = 0.0;
   long max_steps = 0;
   int plateau = 4;
@@ -36,5 +34,9 @@ struct StereoCommand {
 /// Parses argv. Returns std::nullopt after printing --help. Throws std::invalid_argument with a
 /// message naming the flag for anything invalid (missing files included).
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv);
+
+/// The driver options the command asks for: the plateau rules (on the original problem one
+/// sweep of the solver unless --final-plateau says otherwise), limits and level transfer.
+Options run_options(const StereoCommand& command);
 
 }  // namespace c2f::examples

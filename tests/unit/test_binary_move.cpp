@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "c2f/adapters/binary_move.hpp"
-#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;

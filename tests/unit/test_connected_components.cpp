@@ -2,7 +2,8 @@
 
 #include "c2f/lift/colour_passing.hpp"
 #include "c2f/lift/connected_components.hpp"
-#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -20,7 +21,7 @@ TEST_CASE("groups split into their 4-connected components", "[lift][connected]")
   CHECK(cc.group_of(2) == cc.group_of(5));
   CHECK(cc.group_of(3) != cc.group_of(1));
   CHECK(cc.is_refinement_of(p));
-  CHECK_THROWS_WITH(connected_components(p, {2, 2}), Catch::Contains("the grid has 4"));
+  CHECK_THROWS_WITH(connected_components(p, {2, 2}), Catch::Contains("the 2x2 grid has 4 pixels"));
 }
 
 TEST_CASE("connected components keep refining sequences nested", "[lift][connected][property]") {
@@ -31,7 +32,7 @@ TEST_CASE("connected components keep refining sequences nested", "[lift][connect
     const DensePartition fine = random_refinement(rng, coarse, 2);
     CHECK(connected_components(fine, {10, 8})
               .is_refinement_of(connected_components(coarse, {10, 8})));
-    ScheduleProvider provider(Schedule::parse("paper-cc"), {10, 8});
+    ScheduleProvider provider(vision::parse_stereo_schedule("paper-cc"), {10, 8});
     std::optional<DensePartition> previous;
     while (auto level = provider.next(energy)) {
       if (previous) CHECK(level->is_refinement_of(*previous));
@@ -39,9 +40,12 @@ TEST_CASE("connected components keep refining sequences nested", "[lift][connect
       previous = std::move(level);
     }
   }
-  CHECK(Schedule::parse("paper-cc").to_string() == "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
-  CHECK(Schedule::parse("regions").to_string() == "local:1,1/cc local:2,1/cc local:3,1/cc flat");
-  CHECK_THROWS_WITH(Schedule::parse("regions flat"), Catch::Contains("'regions' stands alone"));
+  CHECK(vision::parse_stereo_schedule("paper-cc").to_string() ==
+        "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
+  CHECK(vision::parse_stereo_schedule("regions").to_string() ==
+        "local:1,1/cc local:2,1/cc local:3,1/cc flat");
+  CHECK_THROWS_WITH(vision::parse_stereo_schedule("regions flat"),
+                    Catch::Contains("'regions' stands alone"));
   CHECK(Schedule::parse("threshold:5/cc blocks:4").levels[0].connected);
   CHECK_THROWS_WITH(Schedule::parse("auto:0.1/cc"), Catch::Contains("auto levels cannot take /cc"));
 }

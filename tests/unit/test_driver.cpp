@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "c2f/adapters/icm.hpp"
+#include "c2f/adapters/icm/icm.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/partition_list.hpp"
@@ -146,9 +146,25 @@ TEST_CASE("stopping rules end the run with their reason", "[driver][rules]") {
   }
 }
 
+namespace {
+/// The per-step record the rules read, with the fields they look at.
+StepEvent rule_event(double time_s, int level, bool at_original, long step, long total_steps,
+                     std::span<const double> level_energies) {
+  StepEvent event;
+  event.time_s = time_s;
+  event.level = level;
+  event.at_original = at_original;
+  event.step = step;
+  event.total_steps = total_steps;
+  event.level_energies = level_energies;
+  event.energy = level_energies.empty() ? 0.0 : level_energies.back();
+  return event;
+}
+}  // namespace
+
 TEST_CASE("rules compose: the strongest verdict wins", "[driver][rules]") {
   const std::vector<double> flat_history{5.0, 5.0, 5.0};
-  Progress progress{0.5, 1, false, 2, 10, flat_history};
+  StepEvent progress = rule_event(0.5, 1, false, 2, 10, flat_history);
   Rules rules;
   rules.add(no_decrease({2}));
   CHECK(rules.decide(progress).decision == Decision::refine);
@@ -175,9 +191,9 @@ TEST_CASE("rules compose: the strongest verdict wins", "[driver][rules]") {
 TEST_CASE("the plateau rule can wait longer on the original problem", "[driver][rules]") {
   const std::vector<double> two_flat{5.0, 5.0, 5.0};
   const Rule rule = no_decrease({2}, 0.0, 3);
-  Progress lifted{0.1, 0, false, 2, 2, two_flat};
+  StepEvent lifted = rule_event(0.1, 0, false, 2, 2, two_flat);
   CHECK(rule(lifted).decision == Decision::refine);
-  Progress original{0.1, 1, true, 2, 4, two_flat};
+  StepEvent original = rule_event(0.1, 1, true, 2, 4, two_flat);
   CHECK(rule(original).decision == Decision::continue_level);
   const std::vector<double> three_flat{5.0, 5.0, 5.0, 5.0};
   original.level_energies = three_flat;
@@ -193,9 +209,9 @@ TEST_CASE("a plateau tolerance leaves creeping coarse levels but not the origina
   // Decreases of 0.05 per step on an energy of 1000: 2e-4 of |E| over the last 4 steps.
   const std::vector<double> creeping{1000.0, 999.95, 999.90, 999.85, 999.80};
   const Rule rule = no_decrease({4}, 3e-4, 0, 0.0);
-  const Progress coarse{0.1, 0, false, 4, 4, creeping};
+  const StepEvent coarse = rule_event(0.1, 0, false, 4, 4, creeping);
   CHECK(rule(coarse).decision == Decision::refine);
-  const Progress original{0.1, 1, true, 4, 8, creeping};
+  const StepEvent original = rule_event(0.1, 1, true, 4, 8, creeping);
   CHECK(rule(original).decision == Decision::continue_level);
   CHECK(no_decrease({4}, 0.0, 0, 3e-4)(original).decision == Decision::refine);
   CHECK(no_decrease({4}, 1e-4)(coarse).decision == Decision::continue_level);

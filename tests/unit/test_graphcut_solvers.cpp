@@ -2,8 +2,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "c2f/adapters/expansion.hpp"
-#include "c2f/adapters/swap.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/adapters/graphcut/swap.hpp"
 #include "support/backends.hpp"
 #include "support/tiny_models.hpp"
 
@@ -12,8 +12,8 @@ using namespace c2f::test;
 
 namespace {
 
-constexpr LabelOrder kOrders[] = {LabelOrder::sequential, LabelOrder::random,
-                                  LabelOrder::frequency};
+constexpr VisitOrder kOrders[] = {VisitOrder::sequential, VisitOrder::random,
+                                  VisitOrder::frequency};
 
 /// Steps until `sweep` consecutive steps change nothing; checks the energy never increases
 /// and always equals evaluate() of the labeling. Returns the final energy.
@@ -50,9 +50,9 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = solver.energy();
     std::size_t quiet = 0;
-    for (int step = 0; step < 500 && quiet < solver.moves_per_sweep(); ++step) {
+    for (int step = 0; step < 500 && quiet < solver.steps_per_sweep(energy.num_labels()); ++step) {
       const double now = solver.step();
-      qpbo_moves += solver.last_move().used_qpbo;
+      qpbo_moves += solver.last_step().used_qpbo;
       CHECK(now <= previous);
       CHECK(now == energy.evaluate(solver.labeling()));
       quiet = now < previous ? 0 : quiet + 1;
@@ -85,7 +85,8 @@ TEST_CASE("alpha-expansion on Potts is within the factor-2 bound of the optimum"
                                 std::vector<Edge>(raw.edges().begin(), raw.edges().end()));
     ExpansionSolver<> solver;
     solver.bind(energy, Labeling(energy.num_variables(), 0));
-    const double converged = run_to_convergence(solver, energy, solver.moves_per_sweep());
+    const double converged =
+        run_to_convergence(solver, energy, solver.steps_per_sweep(energy.num_labels()));
     CHECK(converged <= 2.0 * brute_force_minimum(energy).energy + 1e-9);
   }
 }
@@ -127,7 +128,7 @@ TEST_CASE("swap rejects terms that are not semi-metrics", "[swap][validation]") 
 }
 
 TEST_CASE("expansion validates its options and inputs", "[expansion][validation]") {
-  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{LabelOrder::sequential, 1, -1.0}),
+  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{VisitOrder::sequential, 1, -1.0}),
                     Catch::Contains("tolerance"));
   ExpansionSolver<> solver;
   CHECK_THROWS_WITH(solver.step(), Catch::Contains("call bind() first"));
@@ -135,9 +136,9 @@ TEST_CASE("expansion validates its options and inputs", "[expansion][validation]
                               {Edge{0, 1, 1.0, 0}});
   CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 3}),
                     Catch::Contains("ExpansionSolver::bind: start: label 3"));
-  CHECK(label_order_from_string("random") == LabelOrder::random);
-  CHECK(label_order_from_string("frequency") == LabelOrder::frequency);
-  CHECK_THROWS_WITH(label_order_from_string("reverse"), Catch::Contains("'reverse'"));
+  CHECK(visit_order_from_string("random") == VisitOrder::random);
+  CHECK(visit_order_from_string("frequency") == VisitOrder::frequency);
+  CHECK_THROWS_WITH(visit_order_from_string("reverse"), Catch::Contains("'reverse'"));
 }
 
 TEST_CASE("frequency order visits the labels the start labeling uses most first",
@@ -149,21 +150,21 @@ TEST_CASE("frequency order visits the labels the start labeling uses most first"
   for (VariableIndex i = 0; i + 1 < 9; ++i) chain.push_back(Edge{i, i + 1, 1.0, 0});
   const PairwiseEnergy energy(9, 4, std::vector<double>(36, 0.0), {PairwiseTerm::potts()}, chain);
   const Labeling start{2, 0, 2, 3, 0, 2, 3, 0, 2};
-  ExpansionSolver<> expansion(ExpansionOptions{LabelOrder::frequency});
+  ExpansionSolver<> expansion(ExpansionOptions{VisitOrder::frequency});
   expansion.bind(energy, start);
   std::vector<Label> visited;
   for (int step = 0; step < 8; ++step) {
     expansion.step();
-    visited.push_back(expansion.last_move().label);
+    visited.push_back(expansion.last_step().alpha);
   }
   CHECK(visited == std::vector<Label>{2, 0, 3, 1, 2, 0, 3, 1});
 
-  SwapSolver<> swap(SwapOptions{LabelOrder::frequency});
+  SwapSolver<> swap(SwapOptions{VisitOrder::frequency});
   swap.bind(energy, start);
   std::vector<std::pair<Label, Label>> pairs;
   for (int step = 0; step < 6; ++step) {
     swap.step();
-    pairs.push_back(swap.last_pair());
+    pairs.push_back(std::pair{swap.last_step().alpha, swap.last_step().beta});
   }
   // Uses: 0 -> 3, 1 -> 0, 2 -> 4, 3 -> 2. Sums: (0,2) 7, (2,3) 6, (0,3) 5, (1,2) 4, (0,1) 3,
   // (1,3) 2.

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "c2f/adapters/icm.hpp"
+#include "c2f/adapters/icm/icm.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -22,9 +22,9 @@ TEST_CASE("ICM never increases the energy and stops in a single-site local minim
       CHECK(now <= previous + 1e-12 * std::max(1.0, std::abs(previous)));
       CHECK(now == energy.evaluate(solver.labeling()));
       previous = now;
-      if (solver.changed_in_last_step() == 0) break;
+      if (solver.last_step().changed == 0) break;
     }
-    REQUIRE(solver.changed_in_last_step() == 0);
+    REQUIRE(solver.last_step().changed == 0);
     // No single variable can lower the energy by changing its label alone.
     Labeling x(solver.labeling().begin(), solver.labeling().end());
     const double at_minimum = energy.evaluate(x);
@@ -46,7 +46,7 @@ TEST_CASE("ICM reaches the brute-force optimum on a chain with dominant unaries"
                               {Edge{0, 1, 1.0, 0}, Edge{1, 2, 1.0, 0}, Edge{2, 3, 1.0, 0}});
   IcmSolver solver;
   solver.bind(energy, Labeling{2, 2, 1, 1});
-  while (solver.step() > brute_force_minimum(energy).energy && solver.changed_in_last_step() > 0) {
+  while (solver.step() > brute_force_minimum(energy).energy && solver.last_step().changed > 0) {
   }
   CHECK(solver.energy() == brute_force_minimum(energy).energy);
 }
@@ -60,7 +60,7 @@ TEST_CASE("ICM validates its inputs", "[icm][validation]") {
   CHECK_THROWS_WITH(solver.bind(energy, Labeling{0, 5}),
                     Catch::Contains("label 5 of variable 1 is out of range"));
   CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::sequential, 1, -1.0}),
-                    Catch::Contains("min_improvement"));
+                    Catch::Contains("tolerance"));
   CHECK(visit_order_from_string("random") == VisitOrder::random);
   CHECK_THROWS_WITH(visit_order_from_string("spiral"), Catch::Contains("'spiral'"));
 }

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "c2f/adapters/lbp.hpp"
+#include "c2f/adapters/lbp/lbp.hpp"
 #include "support/tiny_models.hpp"
 
 using namespace c2f;
@@ -41,7 +41,7 @@ TEST_CASE("belief propagation is exact on trees", "[lbp][brute-force]") {
     }
     INFO("trial " << trial);
     CHECK(close_relative(previous, brute_force_minimum(energy).energy, 1e-9));
-    CHECK(solver.last_change() < 1e-9);  // converged to the fixed point
+    CHECK(solver.last_step().message_change < 1e-9);  // converged to the fixed point
   }
 }
 

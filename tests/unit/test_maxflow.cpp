@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "support/backends.hpp"
 #include "support/random_models.hpp"
 

@@ -1,17 +1,26 @@
 #include <catch2/catch.hpp>
 
-#include "c2f/adapters/expansion.hpp"
+#include <variant>
+
+#include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
-#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
 using namespace c2f::test;
 
+namespace {
+const SchedulePreset kPresets[] = {{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"},
+                                   {"two", "blocks:4 blocks:2"}};
+}  // namespace
+
 TEST_CASE("schedules parse and print in one vocabulary", "[lift][schedule]") {
-  const Schedule paper = Schedule::parse("paper");
+  const Schedule paper = Schedule::parse("paper", kPresets);
   CHECK(paper.to_string() == "cp:1,1 cp:2,1 cp:3,1 flat");
   CHECK(Schedule::parse(paper.to_string()).levels == paper.levels);
+  CHECK(Schedule::parse("two", kPresets).to_string() == "blocks:4 blocks:2 flat");
+  CHECK(std::get<ColourPassingLevel>(paper.levels[1].partition) == ColourPassingLevel{2, 1});
   CHECK(Schedule::parse("flat").levels.empty());
   const Schedule mixed =
       Schedule::parse("  blocks:16 local:2,2 threshold:5 threshold:0.5,3 slic:12 cp:2,3 ");
@@ -36,7 +45,19 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
   CHECK_THROWS_WITH(Schedule::parse("spiral:3"), Catch::Contains("unknown level kind 'spiral'"));
   CHECK_THROWS_WITH(Schedule::parse("auto:0.2,0.02"), Catch::Contains("fractions must increase"));
   CHECK_THROWS_WITH(Schedule::parse("auto:0.2 cp:1,1"), Catch::Contains("stands alone"));
-  CHECK_THROWS_WITH(Schedule::parse("paper flat"), Catch::Contains("'paper' stands alone"));
+  CHECK_THROWS_WITH(Schedule::parse("paper flat", kPresets),
+                    Catch::Contains("'paper' stands alone"));
+  CHECK_THROWS_WITH(Schedule::parse("cp:1,1 two", kPresets), Catch::Contains("'two' stands alone"));
+  CHECK_THROWS_WITH(Schedule::parse("papr", kPresets),
+                    Catch::Contains("level 'papr': neither a level (KIND:ARGS), flat, nor a preset "
+                                    "(paper, two)"));
+  CHECK_THROWS_WITH(Schedule::parse("paper"), Catch::Contains("expected KIND:ARGS"));
+  CHECK_THROWS_WITH(Schedule::parse("cp:1.5,1"),
+                    Catch::Contains("'1.5' must be a whole number >= 1"));
+  CHECK_THROWS_WITH(Schedule::parse("blocks:4x"), Catch::Contains("'4x' is not a number"));
+  CHECK(Schedule::parse("cp:3,1 local:2,1").validate(3).empty());
+  CHECK(Schedule::parse("cp:3,1 local:4,1").validate(3) ==
+        "level local:4,1 has N_L 4 above the 3 labels");
   CHECK_THROWS_WITH(ScheduleProvider(Schedule::parse("slic:8"), {4, 4}),
                     Catch::Contains("needs superpixels"));
 }
@@ -44,8 +65,8 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
 TEST_CASE("every schedule level refines the previous one", "[lift][schedule][property]") {
   Rng rng(3);
   const GridShape shape{14, 11};
-  for (const char* text : {"paper", "cp:1,1 cp:1,2 cp:2,2 cp:3,3", "blocks:8 blocks:4 cp:1,1",
-                           "threshold:20 threshold:5 threshold:0",
+  for (const char* text : {"cp:1,1 cp:2,1 cp:3,1", "cp:1,1 cp:1,2 cp:2,2 cp:3,3",
+                           "blocks:8 blocks:4 cp:1,1", "threshold:20 threshold:5 threshold:0",
                            "local:1,1 local:1,2 local:2,2 local:3,2", "auto:0.01,0.1,0.5"}) {
     const PairwiseEnergy energy = random_grid_energy(rng, shape.width, shape.height, 4);
     ScheduleProvider provider(Schedule::parse(text), shape);
@@ -69,27 +90,30 @@ TEST_CASE("auto schedules pick colour-passing levels in refining order", "[lift]
   ScheduleProvider provider(Schedule::parse("auto:0.05,0.3,0.8"), {30, 20});
   while (provider.next(energy)) {
   }
-  const auto& levels = provider.schedule().levels;
+  CHECK(provider.schedule().levels.empty());  // the schedule as given stays as given
+  const auto& levels = provider.levels();
   REQUIRE(!levels.empty());
   for (std::size_t i = 1; i < levels.size(); ++i) {
-    CHECK(levels[i].labels >= levels[i - 1].labels);
-    CHECK(levels[i].iterations >= levels[i - 1].iterations);
+    const auto& level = std::get<ColourPassingLevel>(levels[i].partition);
+    const auto& before = std::get<ColourPassingLevel>(levels[i - 1].partition);
+    CHECK(level.labels >= before.labels);
+    CHECK(level.iterations >= before.iterations);
     CHECK(provider.reports()[i].num_groups >= provider.reports()[i - 1].num_groups);
   }
 }
 
-TEST_CASE("non-refining schedules are rejected unless explicitly allowed",
-          "[lift][schedule][validation]") {
-  // The reference's CP(1,2) -> CP(2,1) step (here: local grouping then a fresh cp level).
+TEST_CASE("non-refining schedules are rejected unless labels go down by majority",
+          "[lift][schedule][driver][validation]") {
   Rng rng(23);
   const PairwiseEnergy energy = random_grid_energy(rng, 12, 9, 5);
-  ScheduleProvider strict(Schedule::parse("threshold:0 blocks:4"), {12, 9});
-  strict.next(energy);
-  CHECK_THROWS_WITH(strict.next(energy),
-                    Catch::Contains("level 1 (blocks:4) does not refine level 0 (threshold:0)"));
-
-  ScheduleProvider relaxed(Schedule::parse("threshold:0 blocks:4"), {12, 9}, {}, true);
   ExpansionSolver<> solver;
+  ScheduleProvider strict(Schedule::parse("threshold:0 blocks:4"), {12, 9});
+  CHECK_THROWS_WITH(coarse_to_fine(energy, strict, solver, Options{}),
+                    Catch::Contains("the partition of level 1 (") &&
+                        Catch::Contains("does not refine level 0 (") &&
+                        Catch::Contains("LevelTransfer::majority"));
+
+  ScheduleProvider relaxed(Schedule::parse("threshold:0 blocks:4"), {12, 9});
   Options options;
   options.level_transfer = LevelTransfer::majority;
   const Summary summary = coarse_to_fine(energy, relaxed, solver, options);
@@ -101,7 +125,7 @@ TEST_CASE("non-refining schedules are rejected unless explicitly allowed",
                     Catch::Contains("the energy has 108 variables, the 5x5 grid has 25"));
   ScheduleProvider too_many_labels(Schedule::parse("cp:9,1"), {12, 9});
   CHECK_THROWS_WITH(too_many_labels.next(energy),
-                    Catch::Contains("level cp:9,1: N_L exceeds the 5 labels"));
+                    Catch::Contains("schedule: level cp:9,1 has N_L 9 above the 5 labels"));
 }
 
 TEST_CASE("majority transfer equals the exact transfer on refinements", "[lift][transfer]") {

@@ -59,7 +59,9 @@ TEST_CASE("c2f-stereo rejects bad input with clear messages", "[stereo][cli]") {
   CHECK_THAT(r.output, Catch::Contains("level 'cp:1': expected cp:N_L,N_iter"));
   r = run(left + " " + right + " -o " + out + " --solver magic");
   CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::Contains("--solver: 'magic' is not one of expansion, swap, lbp"));
+  CHECK_THAT(
+      r.output,
+      Catch::Contains("--solver: unknown solver 'magic' (expected expansion, swap, lbp or icm)"));
   r = run(left + " " + right + " -o " + out + " --label-order backwards");
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--label-order: ") && Catch::Contains("'backwards'"));

@@ -2,12 +2,13 @@
 
 #include <catch2/catch.hpp>
 
-#include "c2f/adapters/expansion.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/partition_list.hpp"
-#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/synthetic_stereo.hpp"
 
@@ -28,7 +29,7 @@ TEST_CASE("TSGO recovers a synthetic disparity map, flat and coarse to fine",
   PartitionList flat;
   ExpansionSolver<> flat_solver;
   const Summary flat_summary = coarse_to_fine(energy, flat, flat_solver, options);
-  ScheduleProvider paper(Schedule::parse("paper"), shape);
+  ScheduleProvider paper(vision::parse_stereo_schedule("paper"), shape);
   ExpansionSolver<> c2f_solver;
   const Summary c2f_summary = coarse_to_fine(energy, paper, c2f_solver, options);
 

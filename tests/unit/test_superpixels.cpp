@@ -2,7 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/partition_image.hpp"
 #include "c2f/vision/superpixels.hpp"
 #include "support/random_models.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "c2f/adapters/icm.hpp"
+#include "c2f/adapters/icm/icm.hpp"
 #include "c2f/core/trace.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/block_hierarchy.hpp"

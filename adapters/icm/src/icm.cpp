@@ -1,5 +1,4 @@
-#include "c2f/adapters/icm.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/adapters/icm/icm.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,24 +7,10 @@
 
 namespace c2f {
 
-std::string_view to_string(VisitOrder order) {
-  switch (order) {
-    case VisitOrder::sequential:
-      return "sequential";
-    case VisitOrder::random:
-      return "random";
-  }
-  return "unknown";
-}
-
-VisitOrder visit_order_from_string(std::string_view text) {
-  constexpr VisitOrder kAll[] = {VisitOrder::sequential, VisitOrder::random};
-  return enum_from_string(text, kAll, "visit order");
-}
-
 std::string IcmOptions::validate() const {
-  if (!std::isfinite(min_improvement) || min_improvement < 0.0) {
-    return "min_improvement must be finite and >= 0";
+  if (!std::isfinite(tolerance) || tolerance < 0.0) return "tolerance must be finite and >= 0";
+  if (order == VisitOrder::frequency) {
+    return "order 'frequency' orders labels, and ICM visits variables (use sequential or random)";
   }
   return {};
 }
@@ -45,7 +30,7 @@ void IcmSolver::bind(const PairwiseEnergy& energy, std::span<const Label> start)
   order_.resize(n);
   for (std::size_t v = 0; v < n; ++v) order_[v] = static_cast<VariableIndex>(v);
   energy_value_ = energy.evaluate_unchecked(labeling_);
-  changed_ = 0;
+  last_ = {};
 }
 
 double IcmSolver::step() {
@@ -57,7 +42,7 @@ double IcmSolver::step() {
     std::mt19937_64 rng(rng_state_++);
     std::shuffle(order_.begin(), order_.end(), rng);
   }
-  changed_ = 0;
+  std::size_t changed = 0;
   for (const VariableIndex v : order_) {
     auto local_cost = [&](Label l) {
       double cost = energy.unary(v, l);
@@ -81,15 +66,18 @@ double IcmSolver::step() {
         best = l;
       }
     }
-    const double margin = options_.min_improvement * std::max(1.0, std::abs(current_cost));
+    const double margin = options_.tolerance * std::max(1.0, std::abs(current_cost));
     if (best != current && current_cost - best_cost > margin) {
       labeling_[v] = best;
-      ++changed_;
+      ++changed;
     }
   }
   // Recomputed exactly (O(N + E), small next to the sweep): every accepted move lowered the
   // energy, so this never exceeds the previous value beyond summation rounding.
+  const double before = energy_value_;
   energy_value_ = energy.evaluate_unchecked(labeling_);
+  last_.changed = changed;
+  last_.improved = energy_value_ < before;
   return energy_value_;
 }
 

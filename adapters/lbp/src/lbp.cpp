@@ -1,4 +1,4 @@
-#include "c2f/adapters/lbp.hpp"
+#include "c2f/adapters/lbp/lbp.hpp"
 #include "c2f/core/enum_names.hpp"
 
 #include <algorithm>
@@ -48,7 +48,7 @@ void LbpSolver::bind(const PairwiseEnergy& energy, std::span<const Label> start)
   best_.assign(start.begin(), start.end());
   decoded_ = best_;
   best_energy_ = energy.evaluate_unchecked(best_);
-  last_change_ = 0.0;
+  last_ = {};
 }
 
 void LbpSolver::compute_belief(std::size_t v, std::span<const double> messages,
@@ -108,7 +108,7 @@ double LbpSolver::step() {
   const bool parallel = options_.schedule == BpSchedule::parallel;
   std::vector<double>& target = parallel ? next_messages_ : messages_;
   const double damping = options_.damping;
-  last_change_ = 0.0;
+  double message_change = 0.0;
   for (std::size_t v = 0; v < n; ++v) {
     compute_belief(v, messages_, belief_);
     for (const Incidence& inc : incidence_.of(v)) {
@@ -119,7 +119,7 @@ double LbpSolver::step() {
       const double* old = messages_.data() + message_index(inc.edge, inc.is_first);
       for (std::size_t l = 0; l < num_labels_; ++l) {
         const double value = (1.0 - damping) * scratch_[l] + damping * old[l];
-        last_change_ = std::max(last_change_, std::abs(value - old[l]));
+        message_change = std::max(message_change, std::abs(value - old[l]));
         out[l] = value;
       }
     }
@@ -131,7 +131,11 @@ double LbpSolver::step() {
         static_cast<Label>(std::min_element(belief_.begin(), belief_.end()) - belief_.begin());
   }
   const double decoded_energy = energy_->evaluate_unchecked(decoded_);
+  last_ = {};
+  last_.message_change = message_change;
   if (decoded_energy < best_energy_) {
+    for (std::size_t v = 0; v < n; ++v) last_.changed += decoded_[v] != best_[v];
+    last_.improved = true;
     best_energy_ = decoded_energy;
     best_ = decoded_;
   }

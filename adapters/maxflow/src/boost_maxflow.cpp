@@ -1,4 +1,4 @@
-#include "c2f/adapters/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
 
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <boost/graph/compressed_sparse_row_graph.hpp>

@@ -1,5 +1,4 @@
-#include "c2f/adapters/maxflow.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/adapters/maxflow/maxflow.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -66,29 +65,6 @@ void check_topology(std::size_t num_nodes, std::span<const FlowEdge> edges, cons
                                   ") must join two different nodes < " + std::to_string(num_nodes));
     }
   }
-}
-
-}  // namespace c2f
-
-#include "c2f/adapters/move_order.hpp"
-
-namespace c2f {
-
-std::string_view to_string(LabelOrder order) {
-  switch (order) {
-    case LabelOrder::sequential:
-      return "sequential";
-    case LabelOrder::random:
-      return "random";
-    case LabelOrder::frequency:
-      return "frequency";
-  }
-  return "unknown";
-}
-
-LabelOrder label_order_from_string(std::string_view text) {
-  constexpr LabelOrder kAll[] = {LabelOrder::sequential, LabelOrder::random, LabelOrder::frequency};
-  return enum_from_string(text, kAll, "label order");
 }
 
 }  // namespace c2f

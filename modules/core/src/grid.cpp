@@ -6,6 +6,15 @@
 
 namespace c2f {
 
+void require_grid_size(std::size_t num_variables, GridShape shape, std::string_view who,
+                       std::string_view what) {
+  if (num_variables == shape.size()) return;
+  throw std::invalid_argument(std::string(who) + ": the " + std::string(what) + " has " +
+                              std::to_string(num_variables) + " variables, the " +
+                              std::to_string(shape.width) + "x" + std::to_string(shape.height) +
+                              " grid has " + std::to_string(shape.size()) + " pixels");
+}
+
 std::vector<std::pair<VariableIndex, VariableIndex>> grid_neighbour_pairs(
     GridShape shape, Connectivity connectivity) {
   if (shape.width == 0 || shape.height == 0) {

@@ -1,10 +1,13 @@
 #include "c2f/core/uai.hpp"
 
+#include "c2f/core/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <istream>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -26,33 +29,20 @@ class TokenReader {
 
   long integer(const std::string& what, long min, long max) {
     const std::string token = word(what);
-    std::size_t used = 0;
-    long value = 0;
-    try {
-      value = std::stol(token, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != token.size()) fail("expected " + what + ", got '" + token + "'");
-    if (value < min || value > max) {
+    const std::optional<long long> value = parse_integer(token);
+    if (!value) fail("expected " + what + ", got '" + token + "'");
+    if (*value < min || *value > max) {
       fail(what + " " + token + " is out of range [" + std::to_string(min) + ", " +
            std::to_string(max) + "]");
     }
-    return value;
+    return static_cast<long>(*value);
   }
 
   double real(const std::string& what) {
     const std::string token = word(what);
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-      value = std::stod(token, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != token.size() || !std::isfinite(value))
-      fail("expected " + what + ", got '" + token + "'");
-    return value;
+    const std::optional<double> value = parse_real(token);
+    if (!value) fail("expected " + what + ", got '" + token + "'");
+    return *value;
   }
 
   [[noreturn]] void fail(const std::string& message) const {

@@ -49,7 +49,7 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
     throw std::invalid_argument("no_decrease: tolerance_at_original must be finite and >= 0");
   }
   return [ks = std::move(steps_per_level), tolerance, steps_at_original,
-          tolerance_at_original](const Progress& p) -> Verdict {
+          tolerance_at_original](const StepEvent& p) -> Verdict {
     const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
     const auto k = static_cast<std::size_t>(
         p.at_original && steps_at_original > 0 ? steps_at_original : ks[index]);
@@ -66,15 +66,15 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
 
 Rule level_step_limit(long max_steps) {
   if (max_steps < 1) throw std::invalid_argument("level_step_limit: max_steps must be >= 1");
-  return [max_steps](const Progress& p) -> Verdict {
-    if (p.level_step >= max_steps) return {Decision::refine, TerminationReason::step_limit};
+  return [max_steps](const StepEvent& p) -> Verdict {
+    if (p.step >= max_steps) return {Decision::refine, TerminationReason::step_limit};
     return {};
   };
 }
 
 Rule total_step_limit(long max_steps) {
   if (max_steps < 1) throw std::invalid_argument("total_step_limit: max_steps must be >= 1");
-  return [max_steps](const Progress& p) -> Verdict {
+  return [max_steps](const StepEvent& p) -> Verdict {
     if (p.total_steps >= max_steps) return {Decision::stop, TerminationReason::step_limit};
     return {};
   };
@@ -82,15 +82,15 @@ Rule total_step_limit(long max_steps) {
 
 Rule time_limit(double seconds) {
   if (!(seconds > 0.0)) throw std::invalid_argument("time_limit: seconds must be > 0");
-  return [seconds](const Progress& p) -> Verdict {
-    if (p.elapsed_s >= seconds) return {Decision::stop, TerminationReason::time_limit};
+  return [seconds](const StepEvent& p) -> Verdict {
+    if (p.time_s >= seconds) return {Decision::stop, TerminationReason::time_limit};
     return {};
   };
 }
 
 Rule target_energy(double target) {
   if (!std::isfinite(target)) throw std::invalid_argument("target_energy: target must be finite");
-  return [target](const Progress& p) -> Verdict {
+  return [target](const StepEvent& p) -> Verdict {
     if (!p.level_energies.empty() && p.level_energies.back() <= target) {
       return {Decision::stop, TerminationReason::target_energy};
     }
@@ -104,10 +104,10 @@ Rules& Rules::add(Rule rule) {
   return *this;
 }
 
-Verdict Rules::decide(const Progress& progress) const {
+Verdict Rules::decide(const StepEvent& event) const {
   Verdict strongest;
   for (const Rule& rule : rules_) {
-    const Verdict verdict = rule(progress);
+    const Verdict verdict = rule(event);
     if (static_cast<int>(verdict.decision) > static_cast<int>(strongest.decision))
       strongest = verdict;
   }

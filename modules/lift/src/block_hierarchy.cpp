@@ -41,12 +41,7 @@ BlockHierarchy::BlockHierarchy(GridShape shape, std::vector<std::size_t> block_s
 }
 
 void BlockHierarchy::check_size(std::size_t num_variables) const {
-  if (num_variables != shape_.size()) {
-    throw std::invalid_argument("BlockHierarchy: the energy has " + std::to_string(num_variables) +
-                                " variables, the " + std::to_string(shape_.width) + "x" +
-                                std::to_string(shape_.height) + " grid has " +
-                                std::to_string(shape_.size()) + " pixels");
-  }
+  require_grid_size(num_variables, shape_, "BlockHierarchy");
 }
 
 }  // namespace c2f

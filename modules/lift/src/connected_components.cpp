@@ -8,11 +8,7 @@
 namespace c2f {
 
 DensePartition connected_components(const DensePartition& partition, GridShape shape) {
-  if (partition.num_variables() != shape.size()) {
-    throw std::invalid_argument("connected_components: the partition covers " +
-                                std::to_string(partition.num_variables()) +
-                                " pixels, the grid has " + std::to_string(shape.size()));
-  }
+  require_grid_size(partition.num_variables(), shape, "connected_components", "partition");
   std::vector<std::size_t> parent(shape.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](std::size_t x) {

@@ -13,12 +13,7 @@ namespace c2f {
 
 DensePartition local_grouping(const PairwiseEnergy& energy, GridShape shape, int labels,
                               int iterations) {
-  if (energy.num_variables() != shape.size()) {
-    throw std::invalid_argument("local_grouping: the energy has " +
-                                std::to_string(energy.num_variables()) + " variables, the " +
-                                std::to_string(shape.width) + "x" + std::to_string(shape.height) +
-                                " grid has " + std::to_string(shape.size()));
-  }
+  require_grid_size(energy.num_variables(), shape, "local_grouping");
   if (labels < 1 || labels > energy.num_labels()) {
     throw std::invalid_argument("local_grouping: N_L must be in [1, " +
                                 std::to_string(energy.num_labels()) + "]");

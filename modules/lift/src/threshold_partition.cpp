@@ -30,11 +30,7 @@ class DisjointSets {
 
 DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape, double tau,
                                    int radius) {
-  if (energy.num_variables() != shape.size()) {
-    throw std::invalid_argument("threshold_partition: the energy has " +
-                                std::to_string(energy.num_variables()) +
-                                " variables, the grid has " + std::to_string(shape.size()));
-  }
+  require_grid_size(energy.num_variables(), shape, "threshold_partition");
   if (!(tau >= 0.0)) throw std::invalid_argument("threshold_partition: tau must be >= 0");
   if (radius < 1) throw std::invalid_argument("threshold_partition: radius must be >= 1");
   const auto w = static_cast<long>(shape.width), h = static_cast<long>(shape.height);

@@ -164,4 +164,18 @@ cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& no
   return map;
 }
 
+std::optional<BadPixelRates> write_disparity_outputs(const std::string& dir,
+                                                     std::span<const Label> labeling,
+                                                     const StereoScene& scene, int num_labels) {
+  const std::filesystem::path out(dir);
+  const cv::Mat disparity = labels_to_disparity(labeling, scene.shape());
+  write_pfm((out / "disparity.pfm").string(), disparity);
+  write_disparity_png16((out / "disparity.png").string(), disparity);
+  write_image((out / "disparity-colour.png").string(),
+              colourise_disparity(disparity, num_labels - 1));
+  if (scene.gt.empty()) return std::nullopt;
+  write_image((out / "error.png").string(), error_map(disparity, scene.gt, scene.nonoccluded));
+  return bad_pixel_rates(disparity, scene.gt, scene.nonoccluded);
+}
+
 }  // namespace c2f::vision

@@ -1,5 +1,7 @@
 #include "c2f/vision/stereo/evaluation.hpp"
 
+#include "c2f/vision/stereo/disparity_io.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -64,6 +66,15 @@ BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
   }
   rates.reference_variant = static_cast<double>(reference_bad) / static_cast<double>(gt.total());
   return rates;
+}
+
+std::function<double(std::span<const Label>)> bad_pixel_error(const StereoScene& scene) {
+  if (scene.gt.empty()) throw std::invalid_argument("bad_pixel_error: the scene has no GT");
+  return [&scene, shape = scene.shape()](std::span<const Label> labeling) {
+    const BadPixelRates rates =
+        bad_pixel_rates(labels_to_disparity(labeling, shape), scene.gt, scene.nonoccluded);
+    return scene.nonoccluded.empty() ? rates.all[1] : rates.nonoccluded[1];
+  };
 }
 
 }  // namespace c2f::vision

@@ -2,12 +2,20 @@
 // The AnytimeSolver concept: a solver that improves a labeling in small units of work.
 
 #include <concepts>
+#include <cstddef>
 #include <span>
 
 #include "c2f/core/energy.hpp"
 #include "c2f/core/labeling.hpp"
 
 namespace c2f {
+
+/// What every shipped solver's `last_step()` reports about its last step (solvers extend it
+/// with what is particular to them: the label of an expansion move, the message change of BP).
+struct StepOutcome {
+  std::size_t changed = 0;  ///< variables whose label the step changed (0 unless improved)
+  bool improved = false;    ///< the step lowered the energy
+};
 
 /// A solver S that minimises energies of type E one unit of work at a time.
 /// Contract:

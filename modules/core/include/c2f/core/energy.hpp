@@ -10,9 +10,19 @@
 
 namespace c2f {
 
+namespace detail {
+/// The reduction of e by partition p as found by argument-dependent lookup (the free function
+/// `reduce` next to the energy type, e.g. c2f::reduce for PairwiseEnergy).
+template <class E, class P>
+auto reduce_by_adl(const E& e, const P& p) -> decltype(reduce(e, p)) {
+  return reduce(e, p);
+}
+}  // namespace detail
+
 /// How the library reads an energy type. The default forwards to member functions
-/// `num_variables()`, `num_labels()`, `unary(v, l)` and `evaluate(labeling)`; a foreign type
-/// opts in by specialising energy_traits instead of changing the type.
+/// `num_variables()`, `num_labels()`, `unary(v, l)` and `evaluate(labeling)`, and `reduce(e, p)`
+/// to the free function `reduce` declared beside the energy type; a foreign type opts in by
+/// specialising energy_traits instead of changing the type.
 template <class E>
 struct energy_traits {
   template <class T = E>
@@ -30,6 +40,11 @@ struct energy_traits {
   template <class T = E>
   static auto evaluate(const T& e, std::span<const Label> x) -> decltype(e.evaluate(x)) {
     return e.evaluate(x);
+  }
+  template <class T = E, class P>
+  static auto reduce(const T& e, const P& partition)
+      -> decltype(detail::reduce_by_adl(e, partition)) {
+    return detail::reduce_by_adl(e, partition);
   }
 };
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <span>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct GridShape {
   std::size_t height = 0;
   [[nodiscard]] std::size_t size() const noexcept { return width * height; }
 };
+
+/// Throws std::invalid_argument "<who>: the <what> has N variables, the WxH grid has M pixels"
+/// unless num_variables == shape.size(): the one check of anything laid on a grid.
+void require_grid_size(std::size_t num_variables, GridShape shape, std::string_view who,
+                       std::string_view what = "energy");
 
 /// The neighbour pairs (u, v) of a grid in raster order of u: for each pixel its right and
 /// down neighbours, then for 8-connectivity its down-right and down-left neighbours.

@@ -1,5 +1,6 @@
 #pragma once
-// What a coarse-to-fine run (or any anytime loop) reports after every step.
+// What a coarse-to-fine run (or any anytime loop) reports after every step, and the observers
+// that watch it.
 
 #include <cstddef>
 #include <functional>
@@ -11,18 +12,20 @@
 
 namespace c2f {
 
-/// One observation: the state after `step` steps on `level` (step 0 = the level's start
-/// labeling, right after the transfer from the previous level).
+/// The record of one step of a run, seen by the observer and by the refinement and stopping
+/// rules alike: the state after `step` steps on `level` (step 0 = the level's start labeling,
+/// right after the transfer from the previous level).
 struct StepEvent {
-  double time_s = 0.0;  ///< run-clock seconds since the run started (observer time excluded)
-  int level = 0;        ///< 0 = coarsest
-  long step = 0;        ///< steps done on this level
-  double energy = 0.0;  ///< energy of the ground (original) labeling
-  std::size_t num_variables = 0;          ///< variables at this level
-  bool at_original = false;               ///< true on the last level (the original problem)
-  std::span<const Label> level_labeling;  ///< current labeling of the level's variables
-  std::span<const VariableIndex>
-      group_of;  ///< pixel -> level variable; empty at the original level
+  double time_s = 0.0;            ///< run-clock seconds since the run started (observer excluded)
+  int level = 0;                  ///< 0 = coarsest
+  long step = 0;                  ///< steps done on this level
+  long total_steps = 0;           ///< steps done in the whole run
+  double energy = 0.0;            ///< energy of the ground (original) labeling
+  std::size_t num_variables = 0;  ///< variables at this level
+  bool at_original = false;       ///< true on the last level (the original problem)
+  std::span<const double> level_energies;   ///< energy after steps 0..step of this level
+  std::span<const Label> level_labeling;    ///< current labeling of the level's variables
+  std::span<const VariableIndex> group_of;  ///< pixel -> level variable; empty at the original
 
   /// The labeling of the original variables that this step's labeling stands for. O(N).
   [[nodiscard]] Labeling ground_labeling() const;

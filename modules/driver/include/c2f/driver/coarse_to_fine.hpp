@@ -5,6 +5,8 @@
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "c2f/core/anytime_solver.hpp"
@@ -55,6 +57,7 @@ Labeling initial_labeling(const E& energy, InitialLabeling kind) {
 /// energy is handed down unchanged; LevelTransfer::majority accepts any level sequence and
 /// hands labels down by majority vote, which can change the energy at a level switch.
 ///
+/// Levels may come as any Partition type (converted with to_dense_partition, on the clock).
 /// Throws std::invalid_argument when a provided partition does not cover the energy's variables
 /// or, with LevelTransfer::exact, does not refine the previous level.
 template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
@@ -75,13 +78,24 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
     LevelSummary stats;
     stats.level = level;
     const double level_start = clock.elapsed();
-    std::optional<DensePartition> partition = levels.next(energy);
+    std::optional<DensePartition> partition;
+    if (auto provided = levels.next(energy))
+      partition.emplace(to_dense_partition(std::move(*provided)));
     const double partition_done = clock.elapsed();
     stats.partition_seconds = partition_done - level_start;
 
     const bool at_original = !partition.has_value();
+    if (!at_original && previous && transfer == LevelTransfer::exact &&
+        !partition->is_refinement_of(*previous)) {
+      throw std::invalid_argument(
+          "coarse_to_fine: the partition of level " + std::to_string(level) + " (" +
+          std::to_string(partition->num_groups()) + " groups) does not refine level " +
+          std::to_string(level - 1) + " (" + std::to_string(previous->num_groups()) +
+          " groups), so labels cannot be handed down with the same energy; order the levels "
+          "coarse to fine, or hand labels down by majority (LevelTransfer::majority)");
+    }
     std::optional<E> reduced;
-    if (!at_original) reduced.emplace(reduce(energy, *partition));
+    if (!at_original) reduced.emplace(energy_traits<E>::reduce(energy, *partition));
     const E& level_energy = at_original ? energy : *reduced;
 
     Labeling start;
@@ -109,19 +123,16 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
         history.push_back(solver.step());
         ++summary.total_steps;
       }
-      if (observer) {
-        const StepEvent event{
-            clock.elapsed(),   level,   step, history.back(), stats.num_variables, at_original,
-            solver.labeling(), group_of};
-        if (clock.off_the_clock([&] { return observer(event); }) == ObserverDecision::stop) {
-          summary.reason = TerminationReason::observer;
-          finished = true;
-          break;
-        }
+      const StepEvent event{
+          clock.elapsed(),     level,       step,    summary.total_steps, history.back(),
+          stats.num_variables, at_original, history, solver.labeling(),   group_of};
+      if (observer &&
+          clock.off_the_clock([&] { return observer(event); }) == ObserverDecision::stop) {
+        summary.reason = TerminationReason::observer;
+        finished = true;
+        break;
       }
-      const Progress progress{clock.elapsed(),     level,  at_original, step,
-                              summary.total_steps, history};
-      const Verdict verdict = rules.decide(progress);
+      const Verdict verdict = rules.decide(event);
       if (verdict.decision == Decision::stop ||
           (verdict.decision == Decision::refine && at_original)) {
         summary.reason = verdict.reason;

@@ -5,9 +5,10 @@
 
 #include <functional>
 #include <optional>
-#include <span>
 #include <string_view>
 #include <vector>
+
+#include "c2f/core/observer.hpp"
 
 namespace c2f {
 
@@ -26,16 +27,6 @@ std::string_view to_string(TerminationReason reason);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.
 TerminationReason termination_reason_from_string(std::string_view text);
 
-/// What the rules see after every step (and at step 0 of each level).
-struct Progress {
-  double elapsed_s = 0.0;                  ///< run clock
-  int level = 0;                           ///< 0 = coarsest
-  bool at_original = false;                ///< this level is the original problem
-  long level_step = 0;                     ///< steps done on this level
-  long total_steps = 0;                    ///< steps done in the whole run
-  std::span<const double> level_energies;  ///< energy at step 0..level_step of this level
-};
-
 /// A rule's answer; `reason` says why the run ends if this verdict ends it (a refine on the
 /// original problem, or a stop).
 struct Verdict {
@@ -43,7 +34,8 @@ struct Verdict {
   TerminationReason reason = TerminationReason::converged;
 };
 
-using Rule = std::function<Verdict(const Progress&)>;
+/// A rule reads the same per-step record the observer sees (StepEvent, c2f/core/observer.hpp).
+using Rule = std::function<Verdict(const StepEvent&)>;
 
 /// Refine when the energy has not decreased by more than tolerance * max(1, |E|) over the
 /// last k steps of the level; k = steps_per_level[level] (the last entry serves deeper levels),
@@ -69,7 +61,7 @@ class Rules {
  public:
   Rules() = default;
   Rules& add(Rule rule);
-  [[nodiscard]] Verdict decide(const Progress& progress) const;
+  [[nodiscard]] Verdict decide(const StepEvent& event) const;
   [[nodiscard]] bool empty() const noexcept { return rules_.empty(); }
 
  private:

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "c2f/core/labeling.hpp"
@@ -53,6 +54,20 @@ class DensePartition {
 };
 
 static_assert(Partition<DensePartition>);
+
+/// Any Partition as a DensePartition (read through partition_traits): what the driver, reduce
+/// and the transfers work on. O(N) for a foreign type; a DensePartition is passed through.
+template <Partition P>
+DensePartition to_dense_partition(const P& partition) {
+  using Traits = partition_traits<P>;
+  std::vector<VariableIndex> group_of(Traits::num_variables(partition));
+  for (std::size_t v = 0; v < group_of.size(); ++v)
+    group_of[v] = static_cast<VariableIndex>(Traits::group_of(partition, v));
+  return DensePartition(std::move(group_of), Traits::num_groups(partition));
+}
+inline DensePartition to_dense_partition(DensePartition partition) {
+  return partition;
+}
 
 /// The coarsest partition that refines both `a` and `b`: two variables share a group exactly
 /// when they share one in `a` and one in `b`. Throws std::invalid_argument when the variable

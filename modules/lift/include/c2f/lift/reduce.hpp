@@ -22,11 +22,11 @@ namespace c2f {
 /// has a different number of variables than the energy.
 PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partition);
 
-/// An energy type whose reduction by a DensePartition is an energy of the same type, so one
-/// solver type serves every level of a coarse-to-fine run.
+/// An energy type whose reduction by a DensePartition (energy_traits<E>::reduce) is an energy
+/// of the same type, so one solver type serves every level of a coarse-to-fine run.
 template <class E>
 concept ReducibleEnergy = Energy<E> && requires(const E& e, const DensePartition& p) {
-  { reduce(e, p) } -> std::same_as<E>;
+  { energy_traits<E>::reduce(e, p) } -> std::same_as<E>;
 };
 
 static_assert(ReducibleEnergy<PairwiseEnergy>);

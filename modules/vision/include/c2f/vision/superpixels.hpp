@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "c2f/lift/dense_partition.hpp"
-#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
 
 namespace c2f::vision {
 

@@ -4,11 +4,14 @@
 // that cannot be completed is removed rather than left half written.
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <span>
 #include <string>
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/labeling.hpp"
+#include "c2f/vision/stereo/evaluation.hpp"
+#include "c2f/vision/stereo/stereo_scene.hpp"
 
 namespace c2f::vision {
 
@@ -34,5 +37,12 @@ cv::Mat colourise_disparity(const cv::Mat& disparity, double max_disparity);
 /// (darker for occluded pixels when a non-occluded mask is given).
 cv::Mat error_map(const cv::Mat& disparity, const cv::Mat& gt, const cv::Mat& nonoccluded,
                   double threshold = 1.0);
+
+/// Writes the pictures of a result into the folder `dir`: disparity.pfm, disparity.png
+/// (16-bit), disparity-colour.png (colours over [0, num_labels - 1]) and, when the scene has
+/// GT, error.png. Returns the bad-pixel rates against the GT (nullopt without GT).
+std::optional<BadPixelRates> write_disparity_outputs(const std::string& dir,
+                                                     std::span<const Label> labeling,
+                                                     const StereoScene& scene, int num_labels);
 
 }  // namespace c2f::vision

@@ -2,8 +2,13 @@
 // Bad-pixel rates of a disparity map against Middlebury ground truth.
 
 #include <array>
+#include <functional>
 #include <opencv2/core.hpp>
+#include <span>
 #include <string>
+
+#include "c2f/core/labeling.hpp"
+#include "c2f/vision/stereo/stereo_scene.hpp"
 
 namespace c2f::vision {
 
@@ -28,5 +33,11 @@ struct BadPixelRates {
 /// type or size mismatch.
 BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
                               const cv::Mat& nonoccluded);
+
+/// The error a trace records for a labeling of `scene` (labels = disparities): the bad-pixel
+/// rate (|d - gt| > 1) over the non-occluded pixels when the scene has a mask, else over all
+/// pixels with known GT. Serves TraceWriter's error column and the benchmarks' deadlines.
+/// Throws std::invalid_argument when the scene has no GT.
+std::function<double(std::span<const Label>)> bad_pixel_error(const StereoScene& scene);
 
 }  // namespace c2f::vision

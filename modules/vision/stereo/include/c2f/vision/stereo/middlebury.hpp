@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "c2f/vision/stereo/stereo_scene.hpp"
+
 namespace c2f::vision {
 
 /// One row of scenes.csv.
@@ -35,14 +37,6 @@ cv::Mat left_right_nonoccluded(const cv::Mat& gt_left, const cv::Mat& gt_right);
 
 /// An official mask PNG (nonocc.png): 255 = evaluate. CV_8U with values 0 or 255.
 cv::Mat load_mask(const std::string& path);
-
-struct StereoScene {
-  std::string name;
-  cv::Mat left, right;  ///< 8-bit BGR
-  cv::Mat gt;           ///< CV_32F left-view disparity, NaN = unknown; empty without GT
-  cv::Mat nonoccluded;  ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
-  std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
-};
 
 /// Loads a scene row from the data root: views, GT (divisor from the row), and the
 /// non-occluded mask: the official nonocc.png when present, else the left-right check when

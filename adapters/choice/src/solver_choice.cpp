@@ -1,0 +1,52 @@
+#include "c2f/adapters/solver_choice.hpp"
+
+#include "c2f/core/enum_names.hpp"
+
+namespace c2f {
+
+std::string_view to_string(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::expansion:
+      return "expansion";
+    case SolverKind::swap:
+      return "swap";
+    case SolverKind::lbp:
+      return "lbp";
+    case SolverKind::icm:
+      return "icm";
+  }
+  return "unknown";
+}
+
+SolverKind solver_kind_from_string(std::string_view text) {
+  constexpr SolverKind kAll[] = {SolverKind::expansion, SolverKind::swap, SolverKind::lbp,
+                                 SolverKind::icm};
+  return enum_from_string(text, kAll, "solver");
+}
+
+std::string SolverChoice::validate() const {
+  if (kind == SolverKind::lbp && order != VisitOrder::sequential) {
+    return "lbp visits every message in every step; the order '" + std::string(to_string(order)) +
+           "' applies to expansion, swap and icm";
+  }
+  if (kind == SolverKind::icm && order == VisitOrder::frequency) {
+    return "the order 'frequency' orders labels (expansion, swap); icm visits variables";
+  }
+  return {};
+}
+
+std::size_t steps_per_sweep(SolverKind kind, int num_labels) {
+  switch (kind) {
+    case SolverKind::expansion:
+      return ExpansionSolver<>::steps_per_sweep(num_labels);
+    case SolverKind::swap:
+      return SwapSolver<>::steps_per_sweep(num_labels);
+    case SolverKind::lbp:
+      return LbpSolver::steps_per_sweep(num_labels);
+    case SolverKind::icm:
+      return IcmSolver::steps_per_sweep(num_labels);
+  }
+  return 1;
+}
+
+}  // namespace c2f

@@ -1,0 +1,56 @@
+#pragma once
+// Internal to the graph-cut solvers (expansion, swap): the state both carry between steps.
+// Installed only because the solver templates include it; not part of the API.
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/core/labeling.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f::detail {
+
+/// The current labeling and its exact energy, the binary problem of a move and its solver, and
+/// the candidate labeling a move proposes, accepted only when its exact energy is lower.
+template <MaxFlow Backend>
+struct MoveState {
+  const PairwiseEnergy* energy = nullptr;  ///< null until bind()
+  Labeling labeling;                       ///< the current labeling
+  Labeling candidate;                      ///< what the current move proposes
+  double value = 0.0;                      ///< exact energy of `labeling`
+  BinaryMoveSolver<Backend> moves;
+  std::vector<double> d, p;    ///< the move's binary problem (see binary_move.hpp)
+  std::vector<MoveLabel> out;  ///< its solution
+
+  /// Validates `start` against the energy (messages begin with `context`), takes it as the
+  /// current labeling and builds the move graph of the energy's topology.
+  void bind(const PairwiseEnergy& e, std::span<const Label> start, std::string_view context) {
+    validate_labeling(start, e.num_variables(), e.num_labels(), context);
+    energy = &e;
+    labeling.assign(start.begin(), start.end());
+    candidate.resize(labeling.size());
+    moves.bind(e);
+    d.resize(e.num_variables());
+    p.resize(e.edges().size());
+    out.resize(e.num_variables());
+    value = e.evaluate_unchecked(labeling);
+  }
+
+  /// Makes `candidate` the current labeling when its exact energy is lower than
+  /// value - tolerance * max(1, |value|); returns whether it did. The energy therefore never
+  /// increases.
+  bool accept_candidate_if_lower(double tolerance) {
+    const double margin = tolerance * std::max(1.0, std::abs(value));
+    const double candidate_value = energy->evaluate_unchecked(candidate);
+    if (!(candidate_value < value - margin)) return false;
+    labeling.swap(candidate);
+    value = candidate_value;
+    return true;
+  }
+};
+
+}  // namespace c2f::detail

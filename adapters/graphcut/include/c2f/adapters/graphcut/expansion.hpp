@@ -1,0 +1,118 @@
+#pragma once
+// Alpha-expansion (Boykov, Veksler and Zabih) as an AnytimeSolver for PairwiseEnergy, with
+// QPBO for non-submodular moves (as OpenGM's alpha-expansion fusion, which the paper used).
+//
+// One step() = one expansion move for one label alpha: every variable may switch to alpha.
+// Labels are cycled in the configured order, restarting at the first label on every bind()
+// (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
+// level handed a labeling, or on the original problem after coarse levels, the moves that
+// matter come first and a plateau rule is not fired by a run of unused labels).
+// Each move's binary problem goes straight into the max-flow graph when all its pairwise
+// terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
+// QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
+// energy of the new labeling is lower than the current one (so the energy never increases,
+// and moves that only trade equal-energy labelings are not taken: a sweep without an
+// accepted move means no move found a lower energy, which for submodular moves means none
+// exists).
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/move_state.hpp"
+#include "c2f/adapters/graphcut/move_cycle.hpp"
+#include "c2f/adapters/graphcut/move_options.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f {
+
+template <MaxFlow Backend = BoostMaxFlow>
+class ExpansionSolver {
+ public:
+  /// Throws std::invalid_argument when options.validate() reports a problem.
+  explicit ExpansionSolver(ExpansionOptions options = {}) : options_(options) {
+    if (const std::string problem = options_.validate(); !problem.empty()) {
+      throw std::invalid_argument("ExpansionOptions: " + problem);
+    }
+  }
+
+  /// Steps in one sweep (one move per label): that many steps without a decrease mean no
+  /// single expansion move lowers the energy.
+  [[nodiscard]] static std::size_t steps_per_sweep(int num_labels) noexcept {
+    return static_cast<std::size_t>(num_labels);
+  }
+
+  /// Starts from `start` (validated); builds the move graph of the energy's topology.
+  void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
+    state_.bind(energy, start, "ExpansionSolver::bind: start");
+    std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
+    for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
+    if (options_.order == VisitOrder::frequency) {
+      const std::vector<std::size_t> count = label_counts(state_.labeling, energy.num_labels());
+      sort_most_used_first(labels, [&](Label l) { return count[static_cast<std::size_t>(l)]; });
+    }
+    cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
+    last_ = {};
+  }
+
+  /// One expansion move; returns the energy afterwards (never larger than before).
+  double step() {
+    if (state_.energy == nullptr)
+      throw std::logic_error("ExpansionSolver::step: call bind() first");
+    const PairwiseEnergy& energy = *state_.energy;
+    const Labeling& labeling = state_.labeling;
+    std::vector<double>& d = state_.d;
+    std::vector<double>& p = state_.p;
+    const Label alpha = cycle_.next();
+    for (std::size_t i = 0; i < d.size(); ++i)
+      d[i] = energy.unary(i, alpha) - energy.unary(i, labeling[i]);
+    std::fill(p.begin(), p.end(), 0.0);
+    const auto edges = energy.edges();
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const Edge& edge = edges[e];
+      const Label xu = labeling[edge.u];
+      const Label xv = labeling[edge.v];
+      add_binary_term(d, p, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
+                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
+                      energy.pairwise_cost(edge, alpha, alpha));
+    }
+    const BinaryMoveStats move = state_.moves.solve(d, p, state_.out);
+    last_ = {};
+    last_.alpha = last_.beta = alpha;
+    last_.unlabeled = move.unlabeled;
+    last_.used_qpbo = move.used_qpbo;
+    last_.flow_seconds = move.flow_seconds;
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < labeling.size(); ++i) {
+      const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;
+      state_.candidate[i] = to_alpha ? alpha : labeling[i];
+      changed += to_alpha;
+    }
+    if (changed == 0) return state_.value;
+    if (state_.accept_candidate_if_lower(options_.tolerance)) {
+      last_.changed = changed;
+      last_.improved = true;
+    }
+    return state_.value;
+  }
+
+  [[nodiscard]] double energy() const noexcept { return state_.value; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
+  /// What the last step() did (all zero before the first step of a binding).
+  [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
+
+ private:
+  ExpansionOptions options_;
+  detail::MoveState<Backend> state_;
+  MoveCycle<Label> cycle_;
+  MoveStep last_;
+};
+
+static_assert(AnytimeSolver<ExpansionSolver<>, PairwiseEnergy>);
+
+}  // namespace c2f

@@ -1,0 +1,38 @@
+#pragma once
+// What the graph-cut solvers (expansion, swap) are told and what they report per step.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/labeling.hpp"
+#include "c2f/core/visit_order.hpp"
+
+namespace c2f {
+
+/// Options of a move-making solver. ICM's IcmOptions has the same fields with the same meaning.
+struct MoveOptions {
+  VisitOrder order = VisitOrder::sequential;
+  std::uint64_t seed = 1;  ///< for VisitOrder::random
+  /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
+  /// that lowers the energy is accepted (and no move that keeps it equal).
+  double tolerance = 0.0;
+
+  /// Empty when usable, else a message naming the field.
+  [[nodiscard]] std::string validate() const;
+};
+
+using ExpansionOptions = MoveOptions;
+using SwapOptions = MoveOptions;
+
+/// What the last step of a graph-cut solver did.
+struct MoveStep : StepOutcome {
+  Label alpha = 0;            ///< expansion: the label moved to; swap: the pair's first label
+  Label beta = 0;             ///< swap: the pair's second label; expansion: equal to alpha
+  std::size_t unlabeled = 0;  ///< variables QPBO left open (they kept their label)
+  bool used_qpbo = false;     ///< the move was not submodular and went to QPBO
+  double flow_seconds = 0.0;  ///< time inside the max-flow backend
+};
+
+}  // namespace c2f

@@ -1,0 +1,56 @@
+#pragma once
+// One coarse level of a schedule: which partition to build, in the schedule syntax.
+
+#include <string>
+#include <variant>
+
+namespace c2f {
+
+/// cp:N_L,N_iter: colour passing CP(N_L, N_iter) (colour_passing.hpp).
+struct ColourPassingLevel {
+  int labels = 1;
+  int iterations = 1;
+  friend bool operator==(const ColourPassingLevel&, const ColourPassingLevel&) = default;
+};
+
+/// local:N_L,N_iter: the reference implementation's local grouping (local_grouping.hpp).
+struct LocalGroupingLevel {
+  int labels = 1;
+  int iterations = 1;
+  friend bool operator==(const LocalGroupingLevel&, const LocalGroupingLevel&) = default;
+};
+
+/// threshold:TAU[,R]: threshold partition with L1 distance TAU and window radius R.
+struct ThresholdLevel {
+  double tau = 0.0;
+  int radius = 1;
+  friend bool operator==(const ThresholdLevel&, const ThresholdLevel&) = default;
+};
+
+/// slic:S: SLIC superpixels of region size S, intersected with the previous level.
+struct SlicLevel {
+  int region_size = 2;
+  friend bool operator==(const SlicLevel&, const SlicLevel&) = default;
+};
+
+/// blocks:S: S x S pixel blocks.
+struct BlockLevel {
+  int size = 1;
+  friend bool operator==(const BlockLevel&, const BlockLevel&) = default;
+};
+
+using LevelPartition =
+    std::variant<ColourPassingLevel, LocalGroupingLevel, ThresholdLevel, SlicLevel, BlockLevel>;
+
+struct LevelSpec {
+  LevelPartition partition;
+  bool connected = false;  ///< /cc: split every group into its 4-connected components
+
+  /// N_L for cp and local levels (the labels the level needs), 0 for the others.
+  [[nodiscard]] int labels_needed() const;
+  /// The level in schedule syntax, e.g. "cp:2,1" or "cp:2,1/cc".
+  [[nodiscard]] std::string to_string() const;
+  friend bool operator==(const LevelSpec&, const LevelSpec&) = default;
+};
+
+}  // namespace c2f

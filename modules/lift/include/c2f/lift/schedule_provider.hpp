@@ -1,0 +1,72 @@
+#pragma once
+// ScheduleProvider: the PartitionProvider that builds a schedule's levels on demand.
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "c2f/core/grid.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/schedule.hpp"
+
+namespace c2f {
+
+/// What one level of a schedule produced.
+struct LevelReport {
+  std::string level;       ///< the level in schedule syntax
+  std::size_t num_groups;  ///< groups of the partition produced
+  double seconds;          ///< time to build it
+};
+
+/// Builds SLIC superpixels for a region size (supplied by the vision module, which owns the
+/// image); returns one group id per pixel as a partition.
+using SuperpixelSource = std::function<DensePartition(int region_size)>;
+
+namespace detail {
+class LevelBuilder;
+}
+
+/// A PartitionProvider for PairwiseEnergy on a width x height grid that builds the schedule's
+/// levels on demand (on the caller's clock). Colour-passing levels advance one colour-passing
+/// state (first raising N_L, then iterating), so consecutive cp levels with non-decreasing N_L
+/// and N_iter refine each other; a cp level that goes back starts a fresh state. SLIC levels
+/// are intersected with the previous level. Whether consecutive levels refine each other is the
+/// driver's check (coarse_to_fine, Options::level_transfer), not the provider's.
+class ScheduleProvider {
+ public:
+  /// Throws std::invalid_argument for an empty grid, or a slic level without a superpixel
+  /// source.
+  ScheduleProvider(Schedule schedule, GridShape shape, SuperpixelSource superpixels = {});
+  ~ScheduleProvider();
+  ScheduleProvider(ScheduleProvider&&) noexcept;
+  ScheduleProvider& operator=(ScheduleProvider&&) noexcept;
+
+  /// The next level's partition, or std::nullopt after the last coarse level. The first call
+  /// resolves auto levels from `energy`. Throws std::invalid_argument naming the level when it
+  /// cannot be built for this energy (grid size, N_L above the label count).
+  std::optional<DensePartition> next(const PairwiseEnergy& energy);
+
+  /// One report per level built so far.
+  [[nodiscard]] const std::vector<LevelReport>& reports() const noexcept { return reports_; }
+  /// The schedule as given.
+  [[nodiscard]] const Schedule& schedule() const noexcept { return schedule_; }
+  /// The coarse levels this provider builds: the schedule's, or for auto:... the colour-passing
+  /// levels chosen by the first next() (empty before it).
+  [[nodiscard]] const std::vector<LevelSpec>& levels() const noexcept { return levels_; }
+
+ private:
+  Schedule schedule_;
+  GridShape shape_;
+  std::unique_ptr<detail::LevelBuilder> builder_;
+  bool started_ = false;
+  std::vector<LevelSpec> levels_;
+  std::size_t position_ = 0;
+  std::optional<DensePartition> previous_;
+  std::vector<LevelReport> reports_;
+};
+
+}  // namespace c2f

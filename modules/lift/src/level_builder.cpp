@@ -1,0 +1,49 @@
+#include "level_builder.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "c2f/lift/block_hierarchy.hpp"
+#include "c2f/lift/local_grouping.hpp"
+#include "c2f/lift/threshold_partition.hpp"
+
+namespace c2f::detail {
+
+LevelBuilder::LevelBuilder(GridShape shape, SuperpixelSource superpixels)
+    : shape_(shape), superpixels_(std::move(superpixels)) {}
+
+DensePartition LevelBuilder::build(const LevelSpec& spec, const PairwiseEnergy& energy,
+                                   const DensePartition* previous) {
+  if (const auto* cp = std::get_if<ColourPassingLevel>(&spec.partition))
+    return colour_passing(*cp, energy);
+  if (const auto* local = std::get_if<LocalGroupingLevel>(&spec.partition))
+    return local_grouping(energy, shape_, local->labels, local->iterations);
+  if (const auto* threshold = std::get_if<ThresholdLevel>(&spec.partition))
+    return threshold_partition(energy, shape_, threshold->tau, threshold->radius);
+  if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))
+    return block_partition(shape_, static_cast<std::size_t>(blocks->size));
+  return superpixels(std::get<SlicLevel>(spec.partition), previous);
+}
+
+DensePartition LevelBuilder::colour_passing(const ColourPassingLevel& level,
+                                            const PairwiseEnergy& energy) {
+  if (!colour_passing_ || colour_passing_->labels() > level.labels ||
+      colour_passing_->iterations() > level.iterations) {
+    colour_passing_.emplace(energy, level.labels);
+  }
+  while (colour_passing_->labels() < level.labels) colour_passing_->increase_labels();
+  while (colour_passing_->iterations() < level.iterations) colour_passing_->iterate();
+  return colour_passing_->partition();
+}
+
+DensePartition LevelBuilder::superpixels(const SlicLevel& level, const DensePartition* previous) {
+  DensePartition superpixels = superpixels_(level.region_size);
+  require_grid_size(superpixels.num_variables(), shape_,
+                    "schedule: level " + LevelSpec{level}.to_string(), "superpixel partition");
+  if (previous == nullptr) return superpixels;
+  return intersect(*previous, superpixels);
+}
+
+}  // namespace c2f::detail

@@ -1,0 +1,35 @@
+#pragma once
+// Internal to ScheduleProvider: builds the partition of one schedule level, keeping the
+// colour-passing state that consecutive cp levels advance.
+
+#include <optional>
+
+#include "c2f/core/grid.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/lift/colour_passing.hpp"
+#include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/level_spec.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+
+namespace c2f::detail {
+
+class LevelBuilder {
+ public:
+  LevelBuilder(GridShape shape, SuperpixelSource superpixels);
+
+  /// The partition of `spec` for `energy` (a grid energy of this shape), before /cc.
+  /// `previous` is the last level built (SLIC levels are intersected with it), or null.
+  /// Throws std::invalid_argument naming the level when it cannot be built.
+  DensePartition build(const LevelSpec& spec, const PairwiseEnergy& energy,
+                       const DensePartition* previous);
+
+ private:
+  DensePartition colour_passing(const ColourPassingLevel& level, const PairwiseEnergy& energy);
+  DensePartition superpixels(const SlicLevel& level, const DensePartition* previous);
+
+  GridShape shape_;
+  SuperpixelSource superpixels_;
+  std::optional<ColourPassing> colour_passing_;
+};
+
+}  // namespace c2f::detail

@@ -1,0 +1,52 @@
+#include "c2f/lift/schedule_provider.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <variant>
+
+#include "c2f/lift/auto_levels.hpp"
+#include "c2f/lift/connected_components.hpp"
+#include "level_builder.hpp"
+
+namespace c2f {
+
+ScheduleProvider::ScheduleProvider(Schedule schedule, GridShape shape, SuperpixelSource superpixels)
+    : schedule_(std::move(schedule)), shape_(shape) {
+  if (shape_.size() == 0) throw std::invalid_argument("ScheduleProvider: the grid is empty");
+  for (const LevelSpec& level : schedule_.levels) {
+    if (std::holds_alternative<SlicLevel>(level.partition) && !superpixels) {
+      throw std::invalid_argument(
+          "ScheduleProvider: level " + level.to_string() +
+          " needs superpixels of an image, and no superpixel source was given");
+    }
+  }
+  builder_ = std::make_unique<detail::LevelBuilder>(shape_, std::move(superpixels));
+}
+
+ScheduleProvider::~ScheduleProvider() = default;
+ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
+ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
+
+std::optional<DensePartition> ScheduleProvider::next(const PairwiseEnergy& energy) {
+  require_grid_size(energy.num_variables(), shape_, "ScheduleProvider");
+  const auto start = std::chrono::steady_clock::now();
+  if (!started_) {
+    started_ = true;
+    if (const std::string problem = schedule_.validate(energy.num_labels()); !problem.empty())
+      throw std::invalid_argument("schedule: " + problem);
+    levels_ = schedule_.auto_fractions.empty() ? schedule_.levels
+                                               : auto_levels(energy, schedule_.auto_fractions);
+  }
+  if (position_ >= levels_.size()) return std::nullopt;
+  const LevelSpec& spec = levels_[position_];
+  DensePartition partition = builder_->build(spec, energy, previous_ ? &*previous_ : nullptr);
+  if (spec.connected) partition = connected_components(partition, shape_);
+  ++position_;
+  reports_.push_back(
+      {spec.to_string(), partition.num_groups(),
+       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  previous_ = partition;
+  return partition;
+}
+
+}  // namespace c2f

@@ -1,0 +1,45 @@
+#pragma once
+// A stereo problem as the tools load it: two views, and ground truth with a non-occluded mask
+// when there is any; from a pair of files or a Middlebury scene (middlebury.hpp).
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "c2f/core/grid.hpp"
+
+namespace c2f::vision {
+
+struct StereoScene {
+  std::string name;
+  cv::Mat left, right;  ///< 8-bit BGR
+  cv::Mat gt;           ///< CV_32F left-view disparity, NaN = unknown; empty without GT
+  cv::Mat nonoccluded;  ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
+  std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
+
+  /// The pixel grid of the views.
+  [[nodiscard]] GridShape shape() const noexcept {
+    return {static_cast<std::size_t>(left.cols), static_cast<std::size_t>(left.rows)};
+  }
+};
+
+/// The files of a stereo pair given by hand. Empty paths are absent inputs.
+struct StereoPairFiles {
+  std::string left, right;  ///< the views (required)
+  std::string gt;           ///< left-view ground-truth disparity PNG (0 = unknown)
+  double gt_divisor = 1.0;  ///< GT PNG value per disparity pixel
+  std::string gt_right;     ///< right-view GT, for a left-right occlusion mask
+  std::string mask;         ///< official non-occluded mask (255 = evaluate); wins over gt_right
+};
+
+/// Loads a pair: the views (named by the file stem of `left`), the GT and the non-occluded mask
+/// (official mask, else the left-right check when gt_right is given). Throws
+/// std::invalid_argument naming the input when sizes differ or a mask comes without GT, and
+/// std::runtime_error naming the path for an unreadable file.
+StereoScene load_stereo_pair(const StereoPairFiles& files);
+
+/// The scene shrunk by an integer factor: views by area averaging, GT and mask by nearest
+/// neighbour, GT disparities divided by the factor. Factor 1 returns the scene unchanged.
+/// Throws std::invalid_argument for a factor < 1 or views that would be smaller than 2x2.
+StereoScene downscale(StereoScene scene, int factor);
+
+}  // namespace c2f::vision
