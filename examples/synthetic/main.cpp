@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,17 +23,10 @@ std::vector<std::size_t> parse_block_sizes(const std::string& text) {
   std::stringstream stream(text);
   std::string item;
   while (std::getline(stream, item, ',')) {
-    std::size_t used = 0;
-    long value = 0;
-    try {
-      value = std::stol(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != item.size() || value < 1) {
+    const std::optional<long long> value = parse_integer(item);
+    if (!value || *value < 1)
       throw std::invalid_argument("--blocks: '" + item + "' is not a block size >= 1");
-    }
-    sizes.push_back(static_cast<std::size_t>(value));
+    sizes.push_back(static_cast<std::size_t>(*value));
   }
   if (sizes.empty()) throw std::invalid_argument("--blocks: empty list");
   return sizes;

@@ -2,7 +2,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
+#include <vector>
+
 #include "c2f/c2f.hpp"
+#include "support/random_models.hpp"
 
 using namespace c2f;
 
@@ -56,4 +60,71 @@ static_assert(Energy<foreign::Chain>);
 TEST_CASE("generic code works with a foreign energy through its traits", "[concepts]") {
   const foreign::Chain chain{3};
   CHECK(initial_labeling(chain, InitialLabeling::unary_argmin) == Labeling{0, 0, 0});
+}
+
+// A foreign partition type (vertical stripes, members kept per stripe) made a Partition by
+// specialising partition_traits, and a provider that hands it out.
+namespace foreign {
+struct Stripes {
+  Stripes(std::size_t grid_width, std::size_t grid_height, std::size_t stripe)
+      : width(grid_width), stripe_width(stripe), members((grid_width + stripe - 1) / stripe) {
+    for (std::size_t v = 0; v < grid_width * grid_height; ++v)
+      members[(v % grid_width) / stripe].push_back(static_cast<VariableIndex>(v));
+  }
+  std::size_t width, stripe_width;
+  std::vector<std::vector<VariableIndex>> members;
+};
+
+struct StripeProvider {
+  std::vector<Stripes> levels;
+  std::size_t next_level = 0;
+  std::optional<Stripes> next(const PairwiseEnergy&) {
+    if (next_level == levels.size()) return std::nullopt;
+    return levels[next_level++];
+  }
+};
+}  // namespace foreign
+
+template <>
+struct c2f::partition_traits<foreign::Stripes> {
+  static std::size_t num_variables(const foreign::Stripes& s) {
+    std::size_t n = 0;
+    for (const auto& stripe : s.members) n += stripe.size();
+    return n;
+  }
+  static std::size_t num_groups(const foreign::Stripes& s) { return s.members.size(); }
+  static std::size_t group_of(const foreign::Stripes& s, std::size_t v) {
+    return (v % s.width) / s.stripe_width;
+  }
+  static std::span<const VariableIndex> members(const foreign::Stripes& s, std::size_t g) {
+    return s.members[g];
+  }
+};
+static_assert(Partition<foreign::Stripes>);
+static_assert(PartitionProvider<foreign::StripeProvider, PairwiseEnergy>);
+
+TEST_CASE("the driver takes levels of a foreign partition type through its traits",
+          "[concepts][driver]") {
+  test::Rng rng(4);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 12, 6, 4);
+  const foreign::Stripes halves(12, 6, 6), quarters(12, 6, 3);
+  CHECK(to_dense_partition(quarters).num_groups() == 4);
+  CHECK(to_dense_partition(quarters).members(1)[0] == 3);
+  CHECK(to_dense_partition(quarters).is_refinement_of(to_dense_partition(halves)));
+
+  auto run = [&](auto& provider) {
+    std::vector<double> energies;
+    ExpansionSolver<> solver;
+    const Summary summary =
+        coarse_to_fine(energy, provider, solver, Options{}, [&](const StepEvent& event) {
+          energies.push_back(event.energy);
+          return ObserverDecision::continue_run;
+        });
+    CHECK(summary.levels.size() == 3);
+    CHECK(summary.energy == energy.evaluate(summary.labeling));
+    return energies;
+  };
+  foreign::StripeProvider stripes{{halves, quarters}};
+  PartitionList dense({to_dense_partition(halves), to_dense_partition(quarters)});
+  CHECK(run(stripes) == run(dense));
 }

@@ -5,10 +5,15 @@
 
 namespace c2f {
 
+namespace {
+
+/// The header line of a trace (without newline).
 std::string trace_header(bool with_error) {
   return with_error ? "time_s,level,step,energy,num_vars,error"
                     : "time_s,level,step,energy,num_vars";
 }
+
+}  // namespace
 
 TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error)
     : out_(&out), error_(std::move(error)) {

@@ -21,21 +21,6 @@ InitialLabeling initial_labeling_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "initial labeling");
 }
 
-std::string_view to_string(LevelTransfer transfer) {
-  switch (transfer) {
-    case LevelTransfer::exact:
-      return "exact";
-    case LevelTransfer::majority:
-      return "majority";
-  }
-  return "unknown";
-}
-
-LevelTransfer level_transfer_from_string(std::string_view text) {
-  constexpr LevelTransfer kAll[] = {LevelTransfer::exact, LevelTransfer::majority};
-  return enum_from_string(text, kAll, "level transfer");
-}
-
 std::string Options::validate() const {
   for (std::size_t i = 0; i < plateau_steps.size(); ++i) {
     if (plateau_steps[i] < 1) {

@@ -1,32 +1,12 @@
 #include "c2f/lift/threshold_partition.hpp"
 
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
+#include "disjoint_sets.hpp"
+
 namespace c2f {
-
-namespace {
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  std::size_t find(std::size_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
-}  // namespace
 
 DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape, double tau,
                                    int radius) {
@@ -35,7 +15,7 @@ DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape
   if (radius < 1) throw std::invalid_argument("threshold_partition: radius must be >= 1");
   const auto w = static_cast<long>(shape.width), h = static_cast<long>(shape.height);
   const auto L = static_cast<std::size_t>(energy.num_labels());
-  DisjointSets sets(shape.size());
+  detail::DisjointSets sets(shape.size());
   auto within = [&](std::size_t a, std::size_t b) {
     const double* ra = energy.unaries().data() + a * L;
     const double* rb = energy.unaries().data() + b * L;
@@ -58,9 +38,7 @@ DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape
       }
     }
   }
-  std::vector<std::int64_t> roots(shape.size());
-  for (std::size_t v = 0; v < roots.size(); ++v) roots[v] = static_cast<std::int64_t>(sets.find(v));
-  return DensePartition::from_ids(roots);
+  return sets.partition();
 }
 
 }  // namespace c2f

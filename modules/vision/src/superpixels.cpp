@@ -8,15 +8,6 @@
 
 namespace c2f::vision {
 
-std::string_view to_string(SlicAlgorithm algorithm) {
-  return algorithm == SlicAlgorithm::slic ? "slic" : "slico";
-}
-
-SlicAlgorithm slic_algorithm_from_string(std::string_view text) {
-  constexpr SlicAlgorithm kAll[] = {SlicAlgorithm::slic, SlicAlgorithm::slico};
-  return enum_from_string(text, kAll, "SLIC algorithm");
-}
-
 DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
   if (image.empty() || image.type() != CV_8UC3) {
     throw std::invalid_argument("slic_partition: the image must be non-empty 8-bit 3-channel");

@@ -3,7 +3,7 @@
 //
 //   E(x) = sum_v unary(v, x_v) + sum_{edges (u, v, w, t)} w * terms[t].cost(x_u, x_v)
 //
-// Layout is flat (DESIGN.md section 5): unaries are one row-major array of
+// Layout is flat: unaries are one row-major array of
 // num_variables * num_labels costs, edges one array. Costs are stored in double, not float:
 // the reduced energy of a partition sums the unaries of whole groups, and reduction must stay
 // exact (Theorem 1) to rounding of double sums so that transfers between levels keep the

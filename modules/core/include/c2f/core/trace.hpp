@@ -11,9 +11,6 @@
 
 namespace c2f {
 
-/// The header line of a trace (without newline).
-std::string trace_header(bool with_error);
-
 /// An observer that writes one CSV row per StepEvent to a stream. When an error function is
 /// given, the trace has an `error` column holding error(ground labeling) for every row.
 class TraceWriter {

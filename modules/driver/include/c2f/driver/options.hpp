@@ -26,10 +26,6 @@ enum class LevelTransfer {
   majority,  ///< transfer_labels_by_majority: for schedules that do not refine (energy may change)
 };
 
-std::string_view to_string(LevelTransfer transfer);
-/// Parses the names to_string produces; throws std::invalid_argument naming the text.
-LevelTransfer level_transfer_from_string(std::string_view text);
-
 struct Options {
   /// Refine (on the original problem: finish) when the energy has not decreased over the last
   /// k steps; k = plateau_steps[level], the last entry serving deeper levels. Empty: no such rule.

@@ -45,9 +45,6 @@ class ColourPassing {
   [[nodiscard]] int labels() const noexcept { return labels_; }
   [[nodiscard]] int iterations() const noexcept { return iterations_; }
   [[nodiscard]] std::size_t num_groups() const noexcept { return num_variable_colours_; }
-  [[nodiscard]] std::span<const std::uint32_t> variable_colours() const noexcept {
-    return variable_colour_;
-  }
   /// The current partition CP(labels(), iterations()).
   [[nodiscard]] DensePartition partition() const;
 

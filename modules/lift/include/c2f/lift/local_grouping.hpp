@@ -1,6 +1,6 @@
 #pragma once
-// What the reference stereo implementation actually computed under the name "colour passing"
-// (reference-algorithms.md section 1.5), kept for fidelity runs. Its pairwise factors were
+// What the authors' released stereo code actually computed under the name "colour passing",
+// kept for runs that reproduce it. Its pairwise factors were
 // connected to their first endpoint only, so no information ever travels between pixels: the
 // grouping is a local feature hash.
 

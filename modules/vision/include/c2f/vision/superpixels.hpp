@@ -12,9 +12,6 @@ namespace c2f::vision {
 
 enum class SlicAlgorithm { slic, slico };
 
-std::string_view to_string(SlicAlgorithm algorithm);
-SlicAlgorithm slic_algorithm_from_string(std::string_view text);
-
 struct SlicOptions {
   SlicAlgorithm algorithm = SlicAlgorithm::slico;
   float ruler = 10.0F;  ///< compactness (SLIC only; SLICO adapts it)

@@ -1,7 +1,7 @@
 #pragma once
 // TSGO's "one iteration of message passing on the fully connected MRF": a normalised
 // cross-bilateral filter of every cost slice, guided by the view's colour image, computed on a
-// coarse spatial grid per colour cluster (reference-algorithms.md section 1.3, step 7).
+// coarse spatial grid per colour cluster (the last stage of TSGO's step 1).
 
 #include <opencv2/core.hpp>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
-// TSGO step 1 (Mozerov and van de Weijer), as the reference implementation computes it
-// (reference-algorithms.md sections 1.2-1.3). Each stage is a function of its own:
+// TSGO step 1 (Mozerov and van de Weijer, "Accurate stereo matching by two-step energy
+// minimization", TIP 2015), as the authors' released stereo code computes it, constants
+// included. Each stage is a function of its own:
 //
 //   equalise_photometry -> gradient_scale + gradient_planes -> gradient_matching_cost
 //   -> robust_transform -> fill_left_border -> cross_bilateral_filter (tsgo_bilateral.hpp)

@@ -1,0 +1,119 @@
+// Every shipped solver has one surface: options with validate(), last_step() reporting what the
+// step changed, steps_per_sweep(); and a solver chosen by name runs the same as one built by
+// hand.
+
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <vector>
+
+#include "c2f/c2f.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+namespace {
+
+/// A random Potts grid energy (every solver accepts it: swap needs a semi-metric).
+PairwiseEnergy potts_grid(Rng& rng, std::size_t w, std::size_t h, int num_labels) {
+  std::uniform_real_distribution<double> unary(0.0, 4.0), weight(0.2, 1.5);
+  std::vector<double> unaries(w * h * static_cast<std::size_t>(num_labels));
+  for (double& u : unaries) u = unary(rng);
+  return make_grid_energy({w, h}, Connectivity::four, num_labels, std::move(unaries),
+                          PairwiseTerm::potts(),
+                          [&](VariableIndex, VariableIndex) { return weight(rng); });
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("last_step() reports exactly the labels a step changed and whether it improved",
+                   "[solvers][surface]", ExpansionSolver<>, SwapSolver<>, LbpSolver, IcmSolver) {
+  Rng rng(808);
+  std::size_t improving = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const PairwiseEnergy energy = potts_grid(rng, 7, 5, 2 + trial % 4);
+    TestType solver;
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
+    CHECK(solver.last_step().changed == 0);
+    CHECK_FALSE(solver.last_step().improved);
+    for (int step = 0; step < 12; ++step) {
+      const Labeling before(solver.labeling().begin(), solver.labeling().end());
+      const double energy_before = solver.energy();
+      const double energy_after = solver.step();
+      std::size_t differing = 0;
+      for (std::size_t v = 0; v < before.size(); ++v)
+        differing += before[v] != solver.labeling()[v];
+      CHECK(solver.last_step().changed == differing);
+      CHECK(solver.last_step().improved == (energy_after < energy_before));
+      improving += solver.last_step().improved;
+    }
+  }
+  CHECK(improving > 0);  // the property was exercised on improving steps too
+}
+
+TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[solvers][surface]") {
+  CHECK(ExpansionSolver<>::steps_per_sweep(7) == 7);
+  CHECK(SwapSolver<>::steps_per_sweep(7) == 21);
+  CHECK(SwapSolver<>::steps_per_sweep(1) == 1);
+  CHECK(LbpSolver::steps_per_sweep(7) == 4);
+  CHECK(IcmSolver::steps_per_sweep(7) == 1);
+  for (const SolverKind kind :
+       {SolverKind::expansion, SolverKind::swap, SolverKind::lbp, SolverKind::icm}) {
+    CHECK(solver_kind_from_string(to_string(kind)) == kind);
+  }
+  CHECK(steps_per_sweep(SolverKind::expansion, 7) == 7);
+  CHECK(steps_per_sweep(SolverKind::swap, 7) == 21);
+  CHECK(steps_per_sweep(SolverKind::lbp, 7) == 4);
+  CHECK(steps_per_sweep(SolverKind::icm, 7) == 1);
+  CHECK_THROWS_WITH(
+      solver_kind_from_string("trws"),
+      Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));
+}
+
+TEST_CASE("every solver validates its options in one shape", "[solvers][surface][validation]") {
+  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{VisitOrder::sequential, 1, -1.0}),
+                    Catch::Contains("ExpansionOptions: tolerance must be finite and >= 0"));
+  CHECK_THROWS_WITH(SwapSolver<>(SwapOptions{VisitOrder::sequential, 1, -1.0}),
+                    Catch::Contains("SwapOptions: tolerance must be finite and >= 0"));
+  CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::sequential, 1, -1.0}),
+                    Catch::Contains("IcmOptions: tolerance must be finite and >= 0"));
+  CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::frequency}),
+                    Catch::Contains("IcmOptions: order 'frequency' orders labels"));
+  CHECK_THROWS_WITH(LbpSolver(LbpOptions{BpSchedule::sequential, 1.0}),
+                    Catch::Contains("LbpOptions: damping must be in [0, 1)"));
+  CHECK(SolverChoice{SolverKind::expansion, VisitOrder::frequency}.validate().empty());
+  CHECK_THAT(SolverChoice({SolverKind::lbp, VisitOrder::random}).validate(),
+             Catch::Contains("the order 'random' applies to expansion, swap and icm"));
+  CHECK_THAT(SolverChoice({SolverKind::icm, VisitOrder::frequency}).validate(),
+             Catch::Contains("icm visits variables"));
+}
+
+TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
+          "[solvers][surface][driver]") {
+  Rng rng(99);
+  const PairwiseEnergy energy = potts_grid(rng, 12, 9, 4);
+  const std::vector<DensePartition> levels{DensePartition::from_ids(std::vector<int>(108, 0)),
+                                           random_partition(rng, 108, 20)};
+  Options options;
+  options.plateau_steps = {3};
+  options.plateau_steps_at_original = 6;
+  auto by_hand = [&](auto solver) {
+    PartitionList provider({levels[0], intersect(levels[0], levels[1])});
+    return coarse_to_fine(energy, provider, solver, options);
+  };
+  auto by_name = [&](SolverChoice choice) {
+    PartitionList provider({levels[0], intersect(levels[0], levels[1])});
+    return coarse_to_fine(energy, provider, choice, options);
+  };
+  const Summary expansion = by_name({SolverKind::expansion, VisitOrder::random, 5});
+  CHECK(expansion.labeling ==
+        by_hand(ExpansionSolver<>(ExpansionOptions{VisitOrder::random, 5})).labeling);
+  CHECK(by_name({SolverKind::swap}).labeling == by_hand(SwapSolver<>()).labeling);
+  CHECK(by_name({SolverKind::lbp}).labeling == by_hand(LbpSolver()).labeling);
+  const Summary icm = by_name({SolverKind::icm, VisitOrder::random, 3});
+  CHECK(icm.labeling == by_hand(IcmSolver(IcmOptions{VisitOrder::random, 3})).labeling);
+  CHECK(icm.total_steps > 0);
+  CHECK_THROWS_WITH(by_name({SolverKind::lbp, VisitOrder::frequency}),
+                    Catch::Contains("solver choice: lbp"));
+}
