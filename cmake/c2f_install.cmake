@@ -1,25 +1,41 @@
-# Installation: every module target into one export set c2fTargets (namespace c2f::),
-# headers, and a relocatable c2fConfig.cmake that finds the dependencies. A build-tree
-# export() lets consumers use the build directory directly as well.
+# Installation (when C2F_INSTALL is on: by default only for the top-level project, as fmt's
+# FMT_INSTALL). The library is one package, c2f, in components that each bring only their own
+# third-party dependencies:
+#   core        c2f::core, c2f::lift, c2f::driver, c2f::lbp, c2f::icm      (none)
+#   graphcut    c2f::maxflow, c2f::graphcut, c2f::solvers                  (Boost headers)
+#   kolmogorov  c2f::kolmogorov_maxflow, when built                        (libmaxflow, GPL-3)
+#   vision      c2f::vision, c2f::stereo                                   (OpenCV)
+#   all         c2f::c2f, everything but kolmogorov
+# Each component has its own export file; c2fConfig.cmake loads the requested ones (all when
+# none are named) after finding their dependencies. A build-tree export() lets consumers use
+# the build directory directly as well. The command-line tools install separately
+# (cmake --install BUILD --component tools), never with the library.
 include(CMakePackageConfigHelpers)
 
-get_property(c2f_targets GLOBAL PROPERTY C2F_MODULE_TARGETS)
+set(c2f_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/c2f)
+set(c2f_components core graphcut kolmogorov vision all)
+set(c2f_built_components)
+foreach(component IN LISTS c2f_components)
+  get_property(targets GLOBAL PROPERTY C2F_COMPONENT_TARGETS_${component})
+  if(NOT targets)
+    continue()
+  endif()
+  list(APPEND c2f_built_components ${component})
+  install(TARGETS ${targets}
+    EXPORT c2f-${component}-targets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT c2f-${component}-targets NAMESPACE c2f:: DESTINATION ${c2f_config_dir})
+  export(EXPORT c2f-${component}-targets NAMESPACE c2f::
+    FILE ${PROJECT_BINARY_DIR}/c2f-${component}-targets.cmake)
+endforeach()
+
 get_property(c2f_include_dirs GLOBAL PROPERTY C2F_MODULE_INCLUDE_DIRS)
-
-install(TARGETS ${c2f_targets}
-  EXPORT c2fTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-
 foreach(dir IN LISTS c2f_include_dirs)
   install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
-
-set(c2f_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/c2f)
-install(EXPORT c2fTargets NAMESPACE c2f:: DESTINATION ${c2f_config_dir})
-export(EXPORT c2fTargets NAMESPACE c2f:: FILE ${PROJECT_BINARY_DIR}/c2fTargets.cmake)
 
 configure_package_config_file(cmake/c2fConfig.cmake.in
   ${PROJECT_BINARY_DIR}/c2fConfig.cmake

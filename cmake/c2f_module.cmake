@@ -1,10 +1,15 @@
-# c2f_add_module(NAME <name> [SOURCES ...] [DEPENDS ...] [INCLUDE_DIR <dir>])
+# c2f_add_module(NAME <name> [COMPONENT <component>] [SOURCES ...] [DEPENDS ...]
+#                [INCLUDE_DIR <dir>])
 #
 # Declares one library module: target c2f_<name>, alias c2f::<name>, exported as
-# c2f::<name>, public headers under <dir> (default: include/ next to the CMakeLists).
-# Modules without sources become INTERFACE (header-only) targets.
+# c2f::<name> in the package component <component> (default core; see c2f_install.cmake),
+# public headers under <dir> (default: include/ next to the CMakeLists). Modules without
+# sources become INTERFACE (header-only) targets.
 function(c2f_add_module)
-  cmake_parse_arguments(ARG "" "NAME;INCLUDE_DIR" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;INCLUDE_DIR;COMPONENT" "SOURCES;DEPENDS" ${ARGN})
+  if(NOT ARG_COMPONENT)
+    set(ARG_COMPONENT core)
+  endif()
   set(target c2f_${ARG_NAME})
   if(NOT ARG_INCLUDE_DIR)
     set(ARG_INCLUDE_DIR ${CMAKE_CURRENT_SOURCE_DIR}/include)
@@ -29,7 +34,7 @@ function(c2f_add_module)
   if(ARG_DEPENDS)
     target_link_libraries(${target} ${scope} ${ARG_DEPENDS})
   endif()
-  set_property(GLOBAL APPEND PROPERTY C2F_MODULE_TARGETS ${target})
+  set_property(GLOBAL APPEND PROPERTY C2F_COMPONENT_TARGETS_${ARG_COMPONENT} ${target})
   set_property(GLOBAL APPEND PROPERTY C2F_MODULE_INCLUDE_DIRS ${ARG_INCLUDE_DIR})
 endfunction()
 
