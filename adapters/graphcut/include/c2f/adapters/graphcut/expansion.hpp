@@ -81,24 +81,14 @@ class ExpansionSolver {
                       energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
                       energy.pairwise_cost(edge, alpha, alpha));
     }
-    const BinaryMoveStats move = state_.moves.solve(d, p, state_.out);
-    last_ = {};
-    last_.alpha = last_.beta = alpha;
-    last_.unlabeled = move.unlabeled;
-    last_.used_qpbo = move.used_qpbo;
-    last_.flow_seconds = move.flow_seconds;
+    last_ = state_.solve_move(alpha, alpha);
     std::size_t changed = 0;
     for (std::size_t i = 0; i < labeling.size(); ++i) {
       const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;
       state_.candidate[i] = to_alpha ? alpha : labeling[i];
       changed += to_alpha;
     }
-    if (changed == 0) return state_.value;
-    if (state_.accept_candidate_if_lower(options_.tolerance)) {
-      last_.changed = changed;
-      last_.improved = true;
-    }
-    return state_.value;
+    return state_.finish_move(last_, changed, options_.tolerance);
   }
 
   [[nodiscard]] double energy() const noexcept { return state_.value; }

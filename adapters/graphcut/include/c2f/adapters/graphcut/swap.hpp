@@ -96,13 +96,7 @@ class SwapSolver {
         d[edge.v] += energy.pairwise_cost(edge, xu, beta) - energy.pairwise_cost(edge, xu, alpha);
       }
     }
-    const BinaryMoveStats move = state_.moves.solve(d, p, state_.out);
-    last_ = {};
-    last_.alpha = alpha;
-    last_.beta = beta;
-    last_.unlabeled = move.unlabeled;
-    last_.used_qpbo = move.used_qpbo;
-    last_.flow_seconds = move.flow_seconds;
+    last_ = state_.solve_move(alpha, beta);
     std::size_t changed = 0;
     for (std::size_t i = 0; i < labeling.size(); ++i) {
       state_.candidate[i] = labeling[i];
@@ -110,12 +104,8 @@ class SwapSolver {
         state_.candidate[i] = state_.out[i] == MoveLabel::one ? beta : alpha;
       changed += state_.candidate[i] != labeling[i];
     }
-    if (changed == 0) return state_.value;
-    if (state_.accept_candidate_if_lower(options_.tolerance)) {  // strict: no equal-energy churn
-      last_.changed = changed;
-      last_.improved = true;
-    }
-    return state_.value;
+    // Strict: a move that keeps the energy equal is not taken (no equal-energy churn).
+    return state_.finish_move(last_, changed, options_.tolerance);
   }
 
   [[nodiscard]] double energy() const noexcept { return state_.value; }

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -38,6 +40,30 @@ struct MoveState {
     p.resize(e.edges().size());
     out.resize(e.num_variables());
     value = e.evaluate_unchecked(labeling);
+  }
+
+  /// Solves the move's binary problem (d, p) into `out`; returns the step record of a move
+  /// between alpha and beta (expansion: beta == alpha) with the solver's statistics.
+  MoveStep solve_move(Label alpha, Label beta) {
+    const BinaryMoveStats stats = moves.solve(d, p, out);
+    MoveStep step;
+    step.alpha = alpha;
+    step.beta = beta;
+    step.unlabeled = stats.unlabeled;
+    step.used_qpbo = stats.used_qpbo;
+    step.flow_seconds = stats.flow_seconds;
+    return step;
+  }
+
+  /// Ends a move whose `candidate` differs from the labeling in `changed` variables: takes it
+  /// when that lowers the energy (accept_candidate_if_lower) and records that in `step`.
+  /// Returns the energy afterwards.
+  double finish_move(MoveStep& step, std::size_t changed, double tolerance) {
+    if (changed > 0 && accept_candidate_if_lower(tolerance)) {
+      step.changed = changed;
+      step.improved = true;
+    }
+    return value;
   }
 
   /// Makes `candidate` the current labeling when its exact energy is lower than
