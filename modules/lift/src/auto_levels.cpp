@@ -7,8 +7,7 @@
 
 namespace c2f {
 
-std::vector<LevelSpec> auto_levels(const PairwiseEnergy& energy,
-                                   std::span<const double> fractions) {
+std::vector<LevelSpec> auto_levels(const LiftingView& energy, std::span<const double> fractions) {
   std::vector<LevelSpec> levels;
   if (fractions.empty()) return levels;
   struct Candidate {
@@ -19,10 +18,10 @@ std::vector<LevelSpec> auto_levels(const PairwiseEnergy& energy,
   ColourPassing cp(energy, 1);
   cp.iterate();
   chain.push_back({LevelSpec{ColourPassingLevel{1, 1}}, cp.num_groups()});
-  const double n = static_cast<double>(energy.num_variables());
+  const double n = static_cast<double>(energy.num_variables);
   const double largest = fractions.back() * n;
   for (int step = 0; step < 16 && static_cast<double>(chain.back().groups) < largest; ++step) {
-    if (step % 2 == 0 && cp.labels() < energy.num_labels()) {
+    if (step % 2 == 0 && cp.labels() < energy.num_labels) {
       cp.increase_labels();
     } else if (!cp.iterate()) {
       break;

@@ -38,15 +38,43 @@ void lowest_cost_labels(std::span<const double> row, std::size_t count, std::spa
   std::copy_n(order.begin(), count, out.begin());
 }
 
+LiftingView lifting_view(const PairwiseEnergy& energy) {
+  LiftingView view;
+  view.num_variables = energy.num_variables();
+  view.num_labels = energy.num_labels();
+  view.unaries = energy.unaries();
+  view.pairwise = &energy;
+  const auto edges = energy.edges();
+  std::unordered_map<std::uint64_t, std::uint32_t> weight_ids;
+  SignatureColours pair_colours(16);
+  std::u32string signature;
+  view.factors.resize(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const double weight = edges[e].weight == 0.0 ? 0.0 : edges[e].weight;  // -0 == +0
+    const auto bits = std::bit_cast<std::uint64_t>(weight);
+    const auto weight_id =
+        weight_ids.try_emplace(bits, static_cast<std::uint32_t>(weight_ids.size())).first->second;
+    signature = {static_cast<char32_t>(edges[e].term), static_cast<char32_t>(weight_id)};
+    view.factors[e] = {edges[e].u, edges[e].v, pair_colours.colour_of(signature),
+                       energy.terms()[edges[e].term].is_symmetric()};
+  }
+  return view;
+}
+
 ColourPassing::ColourPassing(const PairwiseEnergy& energy, int labels)
-    : energy_(&energy), labels_(labels) {
-  if (labels < 1 || labels > energy.num_labels()) {
+    : ColourPassing(lifting_view(energy), labels) {}
+
+ColourPassing::ColourPassing(const LiftingView& view, int labels)
+    : unaries_(view.unaries),
+      num_labels_(view.num_labels),
+      factors_(view.factors),
+      labels_(labels) {
+  if (labels < 1 || labels > view.num_labels) {
     throw std::invalid_argument("colour passing: N_L must be in [1, " +
-                                std::to_string(energy.num_labels()) + "], got " +
+                                std::to_string(view.num_labels) + "], got " +
                                 std::to_string(labels));
   }
-  const std::size_t n = energy.num_variables();
-  const auto edges = energy.edges();
+  const std::size_t n = view.num_variables;
   variable_colour_.assign(n, 0);
   num_variable_colours_ = n == 0 ? 0 : 1;
 
@@ -59,41 +87,36 @@ ColourPassing::ColourPassing(const PairwiseEnergy& energy, int labels)
   SignatureColours unary_colours(n / 4 + 16);
   std::u32string signature;
   for (std::size_t v = 0; v < n; ++v) {
-    lowest_cost_labels(energy.unary_row(v), count, top);
+    const auto row = view.unary_row(v);
+    lowest_cost_labels(row, count, top);
     signature.assign(top.begin(), top.end());
     unary_colour_[v] = unary_colours.colour_of(signature);
     last_label_[v] = top.back();
-    last_cost_[v] = energy.unary(v, top.back());
+    last_cost_[v] = row[static_cast<std::size_t>(top.back())];
   }
 
-  // Pairwise factors: (term, weight).
-  std::unordered_map<std::uint64_t, std::uint32_t> weight_ids;
+  // Pairwise factors: the view's colours, made dense in order of first appearance.
   SignatureColours pair_colours(16);
-  pair_colour_.resize(edges.size());
-  pair_symmetric_.resize(edges.size());
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const double weight = edges[e].weight == 0.0 ? 0.0 : edges[e].weight;  // -0 == +0
-    const auto bits = std::bit_cast<std::uint64_t>(weight);
-    const auto weight_id =
-        weight_ids.try_emplace(bits, static_cast<std::uint32_t>(weight_ids.size())).first->second;
-    signature = {static_cast<char32_t>(edges[e].term), static_cast<char32_t>(weight_id)};
+  pair_colour_.resize(factors_.size());
+  pair_symmetric_.resize(factors_.size());
+  for (std::size_t e = 0; e < factors_.size(); ++e) {
+    signature = {static_cast<char32_t>(factors_[e].colour)};
     pair_colour_[e] = pair_colours.colour_of(signature);
-    pair_symmetric_[e] = energy.terms()[edges[e].term].is_symmetric();
+    pair_symmetric_[e] = factors_[e].symmetric;
   }
 
-  incidence_ = EdgeIncidence(energy);
+  incidence_ = EdgeIncidence(n, std::span<const ColourFactor>(factors_));
 }
 
 bool ColourPassing::iterate() {
-  const auto edges = energy_->edges();
   const std::size_t n = variable_colour_.size();
   // Variables -> pairwise factors.
-  SignatureColours pair_colours(edges.size() / 4 + 16);
-  std::vector<std::uint32_t> new_pair_colour(edges.size());
+  SignatureColours pair_colours(factors_.size() / 4 + 16);
+  std::vector<std::uint32_t> new_pair_colour(factors_.size());
   std::u32string signature;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    char32_t a = variable_colour_[edges[e].u];
-    char32_t b = variable_colour_[edges[e].v];
+  for (std::size_t e = 0; e < factors_.size(); ++e) {
+    char32_t a = variable_colour_[factors_[e].u];
+    char32_t b = variable_colour_[factors_[e].v];
     if (pair_symmetric_[e] && a > b) std::swap(a, b);
     signature = {static_cast<char32_t>(pair_colour_[e]), a, b};
     new_pair_colour[e] = pair_colours.colour_of(signature);
@@ -124,12 +147,13 @@ bool ColourPassing::iterate() {
 }
 
 void ColourPassing::increase_labels() {
-  if (labels_ >= energy_->num_labels()) {
+  if (labels_ >= num_labels_) {
     throw std::logic_error("colour passing: N_L is already the number of labels (" +
                            std::to_string(labels_) + ")");
   }
   const std::size_t n = variable_colour_.size();
-  const int num_labels = energy_->num_labels();
+  const int num_labels = num_labels_;
+  const auto row_length = static_cast<std::size_t>(num_labels_);
   SignatureColours variable_colours(n / 4 + 16);
   SignatureColours unary_colours(n / 4 + 16);
   std::u32string signature;
@@ -138,7 +162,7 @@ void ColourPassing::increase_labels() {
     Label next = -1;
     double next_cost = 0.0;
     for (Label l = 0; l < num_labels; ++l) {
-      const double cost = energy_->unary(v, l);
+      const double cost = unaries_[v * row_length + static_cast<std::size_t>(l)];
       if (ranks_before(last_cost_[v], last_label_[v], cost, l) &&
           (next < 0 || ranks_before(cost, l, next_cost, next))) {
         next = l;

@@ -14,24 +14,30 @@ namespace c2f::detail {
 LevelBuilder::LevelBuilder(GridShape shape, SuperpixelSource superpixels)
     : shape_(shape), superpixels_(std::move(superpixels)) {}
 
-DensePartition LevelBuilder::build(const LevelSpec& spec, const PairwiseEnergy& energy,
+DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& view,
                                    const DensePartition* previous) {
   if (const auto* cp = std::get_if<ColourPassingLevel>(&spec.partition))
-    return colour_passing(*cp, energy);
-  if (const auto* local = std::get_if<LocalGroupingLevel>(&spec.partition))
-    return local_grouping(energy, shape_, local->labels, local->iterations);
+    return colour_passing(*cp, view);
+  if (const auto* local = std::get_if<LocalGroupingLevel>(&spec.partition)) {
+    if (view.pairwise == nullptr) {
+      throw std::invalid_argument("schedule: level " + spec.to_string() +
+                                  ": local grouping reads a pairwise energy's grid edges, and "
+                                  "this energy is of another kind (use cp levels)");
+    }
+    return local_grouping(*view.pairwise, shape_, local->labels, local->iterations);
+  }
   if (const auto* threshold = std::get_if<ThresholdLevel>(&spec.partition))
-    return threshold_partition(energy, shape_, threshold->tau, threshold->radius);
+    return threshold_partition(view, shape_, threshold->tau, threshold->radius);
   if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))
     return block_partition(shape_, static_cast<std::size_t>(blocks->size));
   return superpixels(std::get<SlicLevel>(spec.partition), previous);
 }
 
 DensePartition LevelBuilder::colour_passing(const ColourPassingLevel& level,
-                                            const PairwiseEnergy& energy) {
+                                            const LiftingView& view) {
   if (!colour_passing_ || colour_passing_->labels() > level.labels ||
       colour_passing_->iterations() > level.iterations) {
-    colour_passing_.emplace(energy, level.labels);
+    colour_passing_.emplace(view, level.labels);
   }
   while (colour_passing_->labels() < level.labels) colour_passing_->increase_labels();
   while (colour_passing_->iterations() < level.iterations) colour_passing_->iterate();

@@ -5,10 +5,10 @@
 #include <optional>
 
 #include "c2f/core/grid.hpp"
-#include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/colour_passing.hpp"
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/level_spec.hpp"
+#include "c2f/lift/lifting_view.hpp"
 #include "c2f/lift/schedule_provider.hpp"
 
 namespace c2f::detail {
@@ -17,14 +17,14 @@ class LevelBuilder {
  public:
   LevelBuilder(GridShape shape, SuperpixelSource superpixels);
 
-  /// The partition of `spec` for `energy` (a grid energy of this shape), before /cc.
-  /// `previous` is the last level built (SLIC levels are intersected with it), or null.
-  /// Throws std::invalid_argument naming the level when it cannot be built.
-  DensePartition build(const LevelSpec& spec, const PairwiseEnergy& energy,
+  /// The partition of `spec` for the energy seen through `view` (a grid energy of this shape),
+  /// before /cc. `previous` is the last level built (SLIC levels are intersected with it), or
+  /// null. Throws std::invalid_argument naming the level when it cannot be built.
+  DensePartition build(const LevelSpec& spec, const LiftingView& view,
                        const DensePartition* previous);
 
  private:
-  DensePartition colour_passing(const ColourPassingLevel& level, const PairwiseEnergy& energy);
+  DensePartition colour_passing(const ColourPassingLevel& level, const LiftingView& view);
   DensePartition superpixels(const SlicLevel& level, const DensePartition* previous);
 
   GridShape shape_;

@@ -28,11 +28,25 @@ ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
 ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
 
 std::optional<DensePartition> ScheduleProvider::next(const PairwiseEnergy& energy) {
-  require_grid_size(energy.num_variables(), shape_, "ScheduleProvider");
+  const auto start = std::chrono::steady_clock::now();
+  if (viewed_ != &energy) {
+    view_ = lifting_view(energy);
+    viewed_ = &energy;
+  }
+  std::optional<DensePartition> partition = next(*view_);
+  if (!reports_.empty() && partition) {  // the view is part of building the level
+    reports_.back().seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return partition;
+}
+
+std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) {
+  require_grid_size(energy.num_variables, shape_, "ScheduleProvider");
   const auto start = std::chrono::steady_clock::now();
   if (!started_) {
     started_ = true;
-    if (const std::string problem = schedule_.validate(energy.num_labels()); !problem.empty())
+    if (const std::string problem = schedule_.validate(energy.num_labels); !problem.empty())
       throw std::invalid_argument("schedule: " + problem);
     levels_ = schedule_.auto_fractions.empty() ? schedule_.levels
                                                : auto_levels(energy, schedule_.auto_fractions);

@@ -10,15 +10,24 @@ namespace c2f {
 
 DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape, double tau,
                                    int radius) {
-  require_grid_size(energy.num_variables(), shape, "threshold_partition");
+  LiftingView view;
+  view.num_variables = energy.num_variables();
+  view.num_labels = energy.num_labels();
+  view.unaries = energy.unaries();
+  return threshold_partition(view, shape, tau, radius);
+}
+
+DensePartition threshold_partition(const LiftingView& energy, GridShape shape, double tau,
+                                   int radius) {
+  require_grid_size(energy.num_variables, shape, "threshold_partition");
   if (!(tau >= 0.0)) throw std::invalid_argument("threshold_partition: tau must be >= 0");
   if (radius < 1) throw std::invalid_argument("threshold_partition: radius must be >= 1");
   const auto w = static_cast<long>(shape.width), h = static_cast<long>(shape.height);
-  const auto L = static_cast<std::size_t>(energy.num_labels());
+  const auto L = static_cast<std::size_t>(energy.num_labels);
   detail::DisjointSets sets(shape.size());
   auto within = [&](std::size_t a, std::size_t b) {
-    const double* ra = energy.unaries().data() + a * L;
-    const double* rb = energy.unaries().data() + b * L;
+    const double* ra = energy.unaries.data() + a * L;
+    const double* rb = energy.unaries.data() + b * L;
     double distance = 0.0;
     for (std::size_t l = 0; l < L && distance <= tau; ++l) distance += std::abs(ra[l] - rb[l]);
     return distance <= tau;

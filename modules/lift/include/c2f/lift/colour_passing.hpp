@@ -7,7 +7,8 @@
 // BOTH endpoints (the reference implementation connected only the first endpoint; see
 // local_grouping for what it computed). Initial colours: all variables one colour; a unary
 // factor's colour is the ordered tuple of its N_L lowest-cost labels (ties broken by label
-// index); a pairwise factor's colour is its (term, weight). One iteration: every pairwise
+// index); a pairwise factor's colour is what the energy's LiftingView gives it (for a pairwise
+// energy its (term, weight)). One iteration: every pairwise
 // factor takes the colour of its signature (own colour, endpoint colours: sorted for
 // symmetric terms, in order for asymmetric ones), then every variable takes the colour of
 // (own colour, own unary factor's colour, multiset of its pairwise factors' colours, with the
@@ -22,6 +23,7 @@
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/lifting_view.hpp"
 
 namespace c2f {
 
@@ -31,8 +33,11 @@ void lowest_cost_labels(std::span<const double> row, std::size_t count, std::spa
 
 class ColourPassing {
  public:
-  /// The state CP(labels, 0): every variable in one group. The energy must outlive this
-  /// object. Throws std::invalid_argument unless 1 <= labels <= num_labels.
+  /// The state CP(labels, 0) of a model: every variable in one group. The view's unaries must
+  /// outlive this object (its factors are copied). Throws std::invalid_argument unless
+  /// 1 <= labels <= num_labels.
+  ColourPassing(const LiftingView& view, int labels);
+  /// The same for a pairwise energy (lifting_view(energy)); the energy must outlive this object.
   ColourPassing(const PairwiseEnergy& energy, int labels);
 
   /// One colour-passing iteration (N_iter + 1). Returns true when the variable partition
@@ -49,7 +54,9 @@ class ColourPassing {
   [[nodiscard]] DensePartition partition() const;
 
  private:
-  const PairwiseEnergy* energy_;
+  std::span<const double> unaries_;
+  int num_labels_;
+  std::vector<ColourFactor> factors_;
   int labels_;
   int iterations_ = 0;
   std::vector<std::uint32_t> variable_colour_;

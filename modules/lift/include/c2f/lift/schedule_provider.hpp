@@ -11,6 +11,7 @@
 #include "c2f/core/grid.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/lifting_view.hpp"
 #include "c2f/lift/schedule.hpp"
 
 namespace c2f {
@@ -49,6 +50,9 @@ class ScheduleProvider {
   /// resolves auto levels from `energy`. Throws std::invalid_argument naming the level when it
   /// cannot be built for this energy (grid size, N_L above the label count).
   std::optional<DensePartition> next(const PairwiseEnergy& energy);
+  /// The same for an energy of any kind, seen through its LiftingView (which must describe the
+  /// same energy on every call).
+  std::optional<DensePartition> next(const LiftingView& energy);
 
   /// One report per level built so far.
   [[nodiscard]] const std::vector<LevelReport>& reports() const noexcept { return reports_; }
@@ -62,6 +66,8 @@ class ScheduleProvider {
   Schedule schedule_;
   GridShape shape_;
   std::unique_ptr<detail::LevelBuilder> builder_;
+  const PairwiseEnergy* viewed_ = nullptr;  ///< the pairwise energy view_ shows
+  std::optional<LiftingView> view_;
   bool started_ = false;
   std::vector<LevelSpec> levels_;
   std::size_t position_ = 0;

@@ -4,6 +4,7 @@
 #include "c2f/core/grid.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/lifting_view.hpp"
 
 namespace c2f {
 
@@ -16,6 +17,9 @@ namespace c2f {
 /// ones, which is neither symmetric nor nested; this is not that.) O(N * radius^2 * L).
 /// Throws std::invalid_argument for a size mismatch, tau < 0 or NaN, or radius < 1.
 DensePartition threshold_partition(const PairwiseEnergy& energy, GridShape shape, double tau,
+                                   int radius = 1);
+/// The same on the unaries of any energy kind (its LiftingView).
+DensePartition threshold_partition(const LiftingView& view, GridShape shape, double tau,
                                    int radius = 1);
 
 }  // namespace c2f
