@@ -4,7 +4,8 @@
 #   core        c2f::core, c2f::lift, c2f::driver, c2f::lbp, c2f::icm      (none)
 #   graphcut    c2f::maxflow, c2f::graphcut, c2f::solvers                  (Boost headers)
 #   kolmogorov  c2f::kolmogorov_maxflow, when built                        (libmaxflow, GPL-3)
-#   vision      c2f::vision, c2f::stereo                                   (OpenCV)
+#   vision      c2f::vision, c2f::stereo, c2f::segmentation                (OpenCV, Eigen)
+#   coop        c2f::coop, the cooperative-cut solvers                     (Ceres)
 #   all         c2f::c2f, everything but kolmogorov
 # Each component has its own export file; c2fConfig.cmake loads the requested ones (all when
 # none are named) after finding their dependencies. A build-tree export() lets consumers use
@@ -13,7 +14,7 @@
 include(CMakePackageConfigHelpers)
 
 set(c2f_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/c2f)
-set(c2f_components core graphcut kolmogorov vision all)
+set(c2f_components core graphcut kolmogorov vision coop all)
 set(c2f_built_components)
 foreach(component IN LISTS c2f_components)
   get_property(targets GLOBAL PROPERTY C2F_COMPONENT_TARGETS_${component})

@@ -45,51 +45,6 @@ StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, b
   return {std::move(energy), std::move(guide), seconds};
 }
 
-/// Progress on stderr: every level start, then at most every two seconds.
-class ProgressPrinter {
- public:
-  explicit ProgressPrinter(bool quiet) : quiet_(quiet) {}
-  ObserverDecision operator()(const StepEvent& event) {
-    if (quiet_) return ObserverDecision::continue_run;
-    const auto now = Clock::now();
-    if (event.step == 0 || now - last_ > std::chrono::seconds(2)) {
-      std::fprintf(stderr,
-                   "c2f-stereo: level %d (%s, %zu variables) step %ld energy %.4f at %.2f s\n",
-                   event.level, event.at_original ? "original" : "lifted", event.num_variables,
-                   event.step, event.energy, event.time_s);
-      last_ = now;
-    }
-    return ObserverDecision::continue_run;
-  }
-
- private:
-  bool quiet_;
-  Clock::time_point last_ = Clock::now();
-};
-
-/// Keeps every coarse level's partition (for --save-partitions) and writes their pictures.
-class PartitionRecorder {
- public:
-  explicit PartitionRecorder(bool enabled) : enabled_(enabled) {}
-  ObserverDecision operator()(const StepEvent& event) {
-    if (enabled_ && event.step == 0 && !event.at_original) {
-      std::vector<std::int64_t> ids(event.group_of.begin(), event.group_of.end());
-      partitions_.push_back(DensePartition::from_ids(ids));
-    }
-    return ObserverDecision::continue_run;
-  }
-  void write(const std::filesystem::path& out, GridShape shape) const {
-    for (std::size_t i = 0; i < partitions_.size(); ++i) {
-      write_image((out / ("partition-level" + std::to_string(i) + ".png")).string(),
-                  render_largest_groups(partitions_[i], shape, 10));
-    }
-  }
-
- private:
-  bool enabled_;
-  std::vector<DensePartition> partitions_;
-};
-
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
                    const ScheduleProvider& levels, const Summary& summary,
@@ -149,15 +104,16 @@ int main(int argc, char** argv) {
     std::ofstream trace_file = open_trace_file(command.trace);
     TraceWriter trace(trace_file,
                       scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene));
-    PartitionRecorder partitions(command.save_partitions);
-    const Summary summary = coarse_to_fine(
-        problem.energy, levels, command.solver, examples::run_options(command),
-        observe_all({std::ref(trace), ProgressPrinter(command.quiet), std::ref(partitions)}));
+    LevelPartitionRecorder partitions(command.save_partitions);
+    const Summary summary =
+        coarse_to_fine(problem.energy, levels, command.solver, examples::run_options(command),
+                       observe_all({std::ref(trace), ProgressPrinter("c2f-stereo", command.quiet),
+                                    std::ref(partitions)}));
 
     const auto rates =
         write_disparity_outputs(command.out_dir, summary.labeling, scene, command.tsgo.labels);
     write_summary(out, command, scene, problem, levels, summary, rates);
-    partitions.write(out, scene.shape());
+    partitions.write(command.out_dir, scene.shape());
     report_end(command, summary, rates);
   } catch (const std::invalid_argument& error) {
     std::cerr << "c2f-stereo: error: " << error.what() << "\n";

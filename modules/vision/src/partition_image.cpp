@@ -1,5 +1,7 @@
 #include "c2f/vision/partition_image.hpp"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <numeric>
 #include <opencv2/imgcodecs.hpp>
@@ -78,6 +80,23 @@ void write_image(const std::string& path, const cv::Mat& image) {
     throw std::runtime_error("cannot write image '" + path + "': " + error.what());
   }
   if (!written) throw std::runtime_error("cannot write image '" + path + "'");
+}
+
+ObserverDecision LevelPartitionRecorder::operator()(const StepEvent& event) {
+  if (enabled_ && event.step == 0 && !event.at_original) {
+    partitions_.push_back(
+        DensePartition(std::vector<VariableIndex>(event.group_of.begin(), event.group_of.end()),
+                       event.num_variables));
+  }
+  return ObserverDecision::continue_run;
+}
+
+void LevelPartitionRecorder::write(const std::string& dir, GridShape shape) const {
+  const std::filesystem::path out(dir);
+  for (std::size_t i = 0; i < partitions_.size(); ++i) {
+    write_image((out / ("partition-level" + std::to_string(i) + ".png")).string(),
+                render_largest_groups(partitions_[i], shape, 10));
+  }
 }
 
 }  // namespace c2f::vision

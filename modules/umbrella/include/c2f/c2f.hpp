@@ -2,6 +2,7 @@
 // Umbrella header: every public header of the c2f library (the optional GPL-3 max-flow backend,
 // c2f/adapters/maxflow/kolmogorov_maxflow.hpp, is left out: include it by name).
 
+#include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
@@ -23,6 +24,7 @@
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/partition.hpp"
+#include "c2f/core/progress.hpp"
 #include "c2f/core/trace.hpp"
 #include "c2f/core/uai.hpp"
 #include "c2f/core/visit_order.hpp"
@@ -36,6 +38,7 @@
 #include "c2f/lift/connected_components.hpp"
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/level_spec.hpp"
+#include "c2f/lift/lifting_view.hpp"
 #include "c2f/lift/local_grouping.hpp"
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/partition_provider.hpp"
@@ -46,6 +49,13 @@
 #include "c2f/lift/transfer.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
+#include "c2f/vision/segmentation/colour_gmm.hpp"
+#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/vision/segmentation/kmeans.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_io.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+#include "c2f/vision/segmentation/segmentation_schedules.hpp"
 #include "c2f/vision/stereo/absolute_difference_cost.hpp"
 #include "c2f/vision/stereo/colour_weights.hpp"
 #include "c2f/vision/stereo/cost_volume.hpp"

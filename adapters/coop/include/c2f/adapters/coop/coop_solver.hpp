@@ -1,0 +1,128 @@
+#pragma once
+// Cooperative-cut segmentation as an AnytimeSolver for CoopEnergy: the auxiliary variables h
+// (coop_energy.hpp) are updated by one of three strategies, and for a given h the labels are
+// found by alpha-expansion of the pairwise energy E_h. Every step reports the true cooperative-
+// cut energy of the labeling it keeps, which never increases.
+//
+//   greedy  the cooperative-cuts reference's descent: one step tries one flip of h(l, g)
+//           (labels outer, classes inner), runs alpha-expansion of E_h from the all-zero
+//           labeling (the reference) or from the current one, and keeps both only when the true
+//           energy decreases. The first step of every binding tries h unchanged.
+//   mm      majorise-minimise: h := the optimum for the current labeling (closed form, so
+//           E_h(x) + const = E(x)), then alpha-expansion of E_h from x; E cannot increase.
+//   ceres   a continuous relaxation: label probabilities per pixel (softmax of free logits),
+//           relaxed directed cut sizes per (label, class), a smooth concave surrogate of F
+//           (soft minimum of its two branches); minimised with Ceres' L-BFGS, warm-started from
+//           the previous step's solution; h is read off the relaxed cut sizes, then alpha-
+//           expansion of E_h from x, kept only when the true energy decreases.
+// h is solver state that means the same on every level (indexed by label and class), so it
+// carries over between levels of a coarse-to-fine run.
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/labeling.hpp"
+#include "c2f/vision/segmentation/coop_energy.hpp"
+
+namespace c2f {
+
+enum class AuxStrategy { greedy, mm, ceres };
+
+std::string_view to_string(AuxStrategy strategy);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+AuxStrategy aux_strategy_from_string(std::string_view text);
+
+/// Where the greedy strategy's alpha-expansion starts.
+enum class ExpansionStart {
+  zero,     ///< the all-zero labeling, every trial (the reference)
+  current,  ///< the current labeling (warm start)
+};
+
+std::string_view to_string(ExpansionStart start);
+ExpansionStart expansion_start_from_string(std::string_view text);
+
+struct RelaxationOptions {
+  int max_iterations = 30;  ///< L-BFGS iterations per step
+  /// Temperature of the soft minimum that smooths F_g, as a fraction of the class's breakpoint.
+  double smoothing = 0.05;
+
+  [[nodiscard]] std::string validate() const;
+};
+
+struct CoopSolverOptions {
+  AuxStrategy strategy = AuxStrategy::mm;
+  ExpansionStart start = ExpansionStart::zero;  ///< greedy only
+  /// Cycles over all labels of one alpha-expansion run (it stops earlier after a cycle that
+  /// does not lower E_h), as the reference's expansion(10).
+  int expansion_cycles = 10;
+  RelaxationOptions relaxation;  ///< ceres only
+
+  /// Empty when usable, else a message naming the field.
+  [[nodiscard]] std::string validate() const;
+};
+
+/// What the last step did.
+struct CoopStep : StepOutcome {
+  int flipped_label = -1;  ///< greedy: the h entry tried (-1: h unchanged)
+  int flipped_class = -1;
+  std::size_t aux_changes = 0;  ///< entries of h the step changed and kept
+  std::size_t expansion_moves = 0;
+  double relaxation_seconds = 0.0;  ///< ceres: time in the relaxation
+};
+
+class CoopSolver {
+ public:
+  /// Throws std::invalid_argument when options.validate() reports a problem.
+  explicit CoopSolver(CoopSolverOptions options = {});
+  ~CoopSolver();
+  CoopSolver(CoopSolver&&) noexcept;
+  CoopSolver& operator=(CoopSolver&&) noexcept;
+
+  /// Steps without a decrease that mean convergence: a whole sweep of flips for greedy
+  /// (num_labels * num_classes + 1), one step for mm (a fixed point), two for ceres (the
+  /// warm-started relaxation may still move once).
+  [[nodiscard]] static std::size_t steps_per_sweep(AuxStrategy strategy, int num_labels,
+                                                   int num_classes) noexcept;
+
+  /// Starts from `start` (validated). h is kept from the previous binding when it has this
+  /// energy's shape (labels, classes), else it starts all 1.
+  void bind(const vision::CoopEnergy& energy, std::span<const Label> start);
+  /// One step of the strategy; returns the true energy of the labeling kept.
+  double step();
+
+  [[nodiscard]] double energy() const noexcept { return value_; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return labeling_; }
+  [[nodiscard]] const CoopStep& last_step() const noexcept { return last_; }
+  /// The current auxiliary variables.
+  [[nodiscard]] const vision::CoopAuxiliary& aux() const noexcept { return h_; }
+
+ private:
+  struct Relaxation;
+  /// Alpha-expansion of E_h from `start`; the labeling it ends with.
+  Labeling expand_for(const vision::CoopAuxiliary& h, std::span<const Label> start);
+  /// Keeps `candidate` (and h) when its true energy is lower; fills last_.
+  void keep_if_lower(Labeling candidate, const vision::CoopAuxiliary& h);
+  void greedy_step();
+  void mm_step();
+  void ceres_step();
+
+  CoopSolverOptions options_;
+  const vision::CoopEnergy* energy_ = nullptr;
+  Labeling labeling_;
+  double value_ = 0.0;
+  vision::CoopAuxiliary h_;
+  CoopStep last_;
+  bool tried_unchanged_ = false;  ///< greedy: the binding's first trial (h unchanged) is done
+  std::size_t next_flip_ = 0;     ///< greedy: index l * K + g of the next entry to flip
+  std::ptrdiff_t last_kept_flip_ = -1;
+  std::unique_ptr<Relaxation> relaxation_;
+};
+
+static_assert(AnytimeSolver<CoopSolver, vision::CoopEnergy>);
+
+}  // namespace c2f

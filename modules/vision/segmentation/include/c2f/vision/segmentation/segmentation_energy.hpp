@@ -1,0 +1,50 @@
+#pragma once
+// The data terms of cooperative-cut segmentation, as the cooperative-cuts data preparation
+// builds them, and the energies made of them.
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <utility>
+#include <vector>
+
+#include "c2f/core/labeling.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+
+namespace c2f::vision {
+
+/// The 8-connected edges of an image with weights and directed colour-difference classes.
+struct SegmentationEdges {
+  std::vector<std::pair<VariableIndex, VariableIndex>> pairs;  ///< grid_neighbour_pairs order
+  std::vector<double> weights;                                 ///< w per edge
+  std::vector<std::uint32_t> u_class;  ///< class of c(v) - c(u), the difference seen from u
+  std::vector<std::uint32_t> v_class;  ///< class of c(u) - c(v)
+  int num_classes = 0;                 ///< K; class K marks near-zero differences
+};
+
+/// Edges of an 8-bit BGR image, colours in [0, 1] RGB: w = 0.05 + 0.95 exp(-|dc|^2 /
+/// (2 mean |dc|^2)) (mean over all edges; w = 1 on a uniform image); the 2E signed
+/// differences +dc and -dc are clustered by k-means into num_classes classes (k-means++ seeded
+/// by `seed`: deterministic), differences with |dc|^2 < 2.2e-16 go to class K.
+SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes = 10,
+                                     std::uint64_t seed = 27);
+
+/// Unaries (row-major pixels x labels): per label a 5-component colour GMM fitted to its seed
+/// pixels (seed `seed`), the cost of every pixel under it (nonnegative_gmm_costs); a seeded
+/// pixel costs 1000 for every other label; everything divided by 50.
+std::vector<double> segmentation_unaries(const SegmentationScene& scene, std::uint64_t seed = 27);
+
+/// The cooperative-cut energy of unaries and edges (ground energy: one entry per side).
+CoopEnergy coop_energy(std::vector<double> unaries, int num_labels, const SegmentationEdges& edges,
+                       const CoopParameters& parameters);
+
+/// Everything segmentation minimises, built once from a scene.
+struct SegmentationProblem {
+  CoopEnergy coop;
+  PairwiseEnergy potts;  ///< the alpha-expansion baseline: potts_energy(coop)
+};
+SegmentationProblem segmentation_problem(const SegmentationScene& scene,
+                                         const CoopParameters& parameters, int num_classes = 10);
+
+}  // namespace c2f::vision

@@ -1,0 +1,60 @@
+#pragma once
+// An interactive segmentation problem: an image, seed scribbles that fix some pixels' labels,
+// and ground truth when there is any; loaded under one of three seed conventions.
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "c2f/core/grid.hpp"
+
+namespace c2f::vision {
+
+/// A pixel without a seed (in seeds) or not scored (in truth).
+inline constexpr int kNoLabel = -1;
+
+struct SegmentationScene {
+  std::string name;
+  cv::Mat image;                   ///< 8-bit BGR
+  std::vector<int> seeds;          ///< per pixel (row-major): its seed label, or kNoLabel
+  std::vector<int> truth;          ///< per pixel: its true label, or kNoLabel; empty without GT
+  std::vector<cv::Vec3b> palette;  ///< BGR colour of each label, for pictures
+
+  [[nodiscard]] int num_labels() const noexcept { return static_cast<int>(palette.size()); }
+  [[nodiscard]] GridShape shape() const noexcept {
+    return {static_cast<std::size_t>(image.cols), static_cast<std::size_t>(image.rows)};
+  }
+};
+
+enum class SeedConvention {
+  /// White = unlabelled, every other colour one label (labels in ascending (R, G, B) order);
+  /// a GT, when given, is a label image in those colours.
+  colours,
+  /// The cooperative-cuts multi-label data: the labels are the GT's colours in ascending
+  /// (R, G, B) order and a seeded (non-white) pixel takes the GT label under it.
+  labels_from_gt,
+  /// The Jegelka-Bilmes binary data: red seeds (R > 127, G < 128, B < 128) = object (label 1),
+  /// blue (R < 128, B > 127) = background (label 0), other colours unlabelled; GT grey 255 =
+  /// object, 0 = background, 128 = not scored.
+  binary,
+};
+
+std::string_view to_string(SeedConvention convention);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+SeedConvention seed_convention_from_string(std::string_view text);
+
+struct SegmentationFiles {
+  std::string image;  ///< any image OpenCV reads
+  std::string seeds;  ///< seed scribbles (PNG)
+  std::string gt;     ///< optional for colours and binary, required for labels_from_gt
+  SeedConvention convention = SeedConvention::colours;
+};
+
+/// Loads and checks a scene. Throws std::invalid_argument naming the file and the problem
+/// (sizes that differ, fewer than 2 labels, a label without seeds, GT colours or grey levels
+/// that are no label, a seed on a pixel the GT does not score) and std::runtime_error naming
+/// the path of an unreadable file.
+SegmentationScene load_segmentation_scene(const SegmentationFiles& files);
+
+}  // namespace c2f::vision

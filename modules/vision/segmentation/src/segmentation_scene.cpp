@@ -1,0 +1,182 @@
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+#include "c2f/core/enum_names.hpp"
+#include "c2f/vision/image_io.hpp"
+
+namespace c2f::vision {
+
+namespace {
+
+/// (R, G, B) of a BGR pixel: the order labels are sorted in.
+std::array<int, 3> rgb(const cv::Vec3b& bgr) {
+  return {bgr[2], bgr[1], bgr[0]};
+}
+
+std::string colour_text(const cv::Vec3b& bgr) {
+  return "(" + std::to_string(bgr[2]) + "," + std::to_string(bgr[1]) + "," +
+         std::to_string(bgr[0]) + ")";
+}
+
+std::string size_text(const cv::Mat& image) {
+  return std::to_string(image.cols) + "x" + std::to_string(image.rows);
+}
+
+void require_size(const cv::Mat& image, const cv::Mat& other, const std::string& what,
+                  const std::string& path) {
+  if (other.size() != image.size()) {
+    throw std::invalid_argument(what + " '" + path + "' is " + size_text(other) +
+                                ", the image is " + size_text(image));
+  }
+}
+
+const cv::Vec3b kWhite(255, 255, 255);
+
+/// The distinct colours of `image` other than `skip` in ascending (R, G, B) order.
+std::vector<cv::Vec3b> distinct_colours(const cv::Mat& image, const cv::Vec3b* skip) {
+  std::map<std::array<int, 3>, cv::Vec3b> colours;
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const cv::Vec3b c = image.at<cv::Vec3b>(y, x);
+      if (skip == nullptr || c != *skip) colours.emplace(rgb(c), c);
+    }
+  }
+  std::vector<cv::Vec3b> result;
+  for (const auto& [key, colour] : colours) result.push_back(colour);
+  return result;
+}
+
+/// Label of each pixel by its colour in `palette`; throws naming the first unknown colour.
+std::vector<int> labels_by_colour(const cv::Mat& image, const std::vector<cv::Vec3b>& palette,
+                                  const std::string& what, const std::string& path) {
+  std::vector<int> labels(static_cast<std::size_t>(image.total()));
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const cv::Vec3b c = image.at<cv::Vec3b>(y, x);
+      const auto it = std::find(palette.begin(), palette.end(), c);
+      if (it == palette.end()) {
+        throw std::invalid_argument(what + " '" + path + "': colour " + colour_text(c) + " at (" +
+                                    std::to_string(x) + ", " + std::to_string(y) +
+                                    ") is none of the seed colours");
+      }
+      labels[static_cast<std::size_t>(y * image.cols + x)] = static_cast<int>(it - palette.begin());
+    }
+  }
+  return labels;
+}
+
+void require_seeds_for_every_label(const SegmentationScene& scene, const std::string& path) {
+  std::vector<std::size_t> count(scene.palette.size(), 0);
+  for (const int label : scene.seeds) {
+    if (label != kNoLabel) ++count[static_cast<std::size_t>(label)];
+  }
+  for (std::size_t l = 0; l < count.size(); ++l) {
+    if (count[l] == 0) {
+      throw std::invalid_argument("SEEDS '" + path + "': label " + std::to_string(l) + " (colour " +
+                                  colour_text(scene.palette[l]) +
+                                  ") has no seed pixels; every label needs some");
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(SeedConvention convention) {
+  switch (convention) {
+    case SeedConvention::colours:
+      return "colours";
+    case SeedConvention::labels_from_gt:
+      return "labels-from-gt";
+    case SeedConvention::binary:
+      return "binary";
+  }
+  return "unknown";
+}
+
+SeedConvention seed_convention_from_string(std::string_view text) {
+  constexpr SeedConvention kAll[] = {SeedConvention::colours, SeedConvention::labels_from_gt,
+                                     SeedConvention::binary};
+  return enum_from_string(text, kAll, "seed convention");
+}
+
+SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
+  SegmentationScene scene;
+  scene.name = std::filesystem::path(files.image).stem().string();
+  scene.image = load_colour_image(files.image);
+  const cv::Mat seeds = load_colour_image(files.seeds);
+  require_size(scene.image, seeds, "SEEDS", files.seeds);
+  const std::size_t n = scene.image.total();
+  scene.seeds.assign(n, kNoLabel);
+
+  switch (files.convention) {
+    case SeedConvention::colours: {
+      scene.palette = distinct_colours(seeds, &kWhite);
+      if (scene.palette.size() < 2) {
+        throw std::invalid_argument("SEEDS '" + files.seeds + "' has " +
+                                    std::to_string(scene.palette.size()) +
+                                    " seed colour(s) besides white; segmentation needs at least 2");
+      }
+      const std::vector<int> all = labels_by_colour(seeds, scene.palette, "SEEDS", files.seeds);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (seeds.at<cv::Vec3b>(static_cast<int>(i)) != kWhite) scene.seeds[i] = all[i];
+      }
+      if (!files.gt.empty()) {
+        const cv::Mat gt = load_colour_image(files.gt);
+        require_size(scene.image, gt, "GT", files.gt);
+        scene.truth = labels_by_colour(gt, scene.palette, "GT", files.gt);
+      }
+      break;
+    }
+    case SeedConvention::labels_from_gt: {
+      if (files.gt.empty())
+        throw std::invalid_argument("labels from the GT need a GT labeling (--gt)");
+      const cv::Mat gt = load_colour_image(files.gt);
+      require_size(scene.image, gt, "GT", files.gt);
+      scene.palette = distinct_colours(gt, nullptr);
+      if (scene.palette.size() < 2) {
+        throw std::invalid_argument("GT '" + files.gt + "' has " +
+                                    std::to_string(scene.palette.size()) +
+                                    " colour(s); segmentation needs at least 2 labels");
+      }
+      scene.truth = labels_by_colour(gt, scene.palette, "GT", files.gt);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (seeds.at<cv::Vec3b>(static_cast<int>(i)) != kWhite) scene.seeds[i] = scene.truth[i];
+      }
+      break;
+    }
+    case SeedConvention::binary: {
+      scene.palette = {cv::Vec3b(255, 0, 0), cv::Vec3b(0, 0, 255)};  // blue background, red object
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto [r, g, b] = rgb(seeds.at<cv::Vec3b>(static_cast<int>(i)));
+        if (r > 127 && g < 128 && b < 128) scene.seeds[i] = 1;
+        if (r < 128 && b > 127) scene.seeds[i] = 0;
+      }
+      if (!files.gt.empty()) {
+        const cv::Mat gt = load_grey_image(files.gt);
+        require_size(scene.image, gt, "GT", files.gt);
+        scene.truth.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const int value = gt.at<std::uint8_t>(static_cast<int>(i));
+          if (value != 0 && value != 128 && value != 255) {
+            throw std::invalid_argument(
+                "GT '" + files.gt + "': grey level " + std::to_string(value) + " at pixel " +
+                std::to_string(i) + " is none of 0 (background), 128 (not scored), 255 (object)");
+          }
+          scene.truth[i] = value == 255 ? 1 : value == 0 ? 0 : kNoLabel;
+        }
+      }
+      break;
+    }
+  }
+  require_seeds_for_every_label(scene, files.seeds);
+  return scene;
+}
+
+}  // namespace c2f::vision
