@@ -38,6 +38,7 @@ void require_size(const cv::Mat& image, const cv::Mat& other, const std::string&
 }
 
 const cv::Vec3b kWhite(255, 255, 255);
+constexpr std::size_t kMaxSeedColours = 64;
 
 /// The distinct colours of `image` other than `skip` in ascending (R, G, B) order.
 std::vector<cv::Vec3b> distinct_colours(const cv::Mat& image, const cv::Vec3b* skip) {
@@ -53,13 +54,16 @@ std::vector<cv::Vec3b> distinct_colours(const cv::Mat& image, const cv::Vec3b* s
   return result;
 }
 
-/// Label of each pixel by its colour in `palette`; throws naming the first unknown colour.
+/// Label of each pixel by its colour in `palette` (`skip` gives kNoLabel); throws naming the
+/// first unknown colour.
 std::vector<int> labels_by_colour(const cv::Mat& image, const std::vector<cv::Vec3b>& palette,
-                                  const std::string& what, const std::string& path) {
-  std::vector<int> labels(static_cast<std::size_t>(image.total()));
+                                  const std::string& what, const std::string& path,
+                                  const cv::Vec3b* skip = nullptr) {
+  std::vector<int> labels(static_cast<std::size_t>(image.total()), kNoLabel);
   for (int y = 0; y < image.rows; ++y) {
     for (int x = 0; x < image.cols; ++x) {
       const cv::Vec3b c = image.at<cv::Vec3b>(y, x);
+      if (skip != nullptr && c == *skip) continue;
       const auto it = std::find(palette.begin(), palette.end(), c);
       if (it == palette.end()) {
         throw std::invalid_argument(what + " '" + path + "': colour " + colour_text(c) + " at (" +
@@ -123,10 +127,13 @@ SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
                                     std::to_string(scene.palette.size()) +
                                     " seed colour(s) besides white; segmentation needs at least 2");
       }
-      const std::vector<int> all = labels_by_colour(seeds, scene.palette, "SEEDS", files.seeds);
-      for (std::size_t i = 0; i < n; ++i) {
-        if (seeds.at<cv::Vec3b>(static_cast<int>(i)) != kWhite) scene.seeds[i] = all[i];
+      if (scene.palette.size() > kMaxSeedColours) {
+        throw std::invalid_argument(
+            "SEEDS '" + files.seeds + "' has " + std::to_string(scene.palette.size()) +
+            " colours besides white; scribbles use a few (at most " +
+            std::to_string(kMaxSeedColours) + "): is it an image rather than seeds?");
       }
+      scene.seeds = labels_by_colour(seeds, scene.palette, "SEEDS", files.seeds, &kWhite);
       if (!files.gt.empty()) {
         const cv::Mat gt = load_colour_image(files.gt);
         require_size(scene.image, gt, "GT", files.gt);

@@ -28,8 +28,8 @@ struct SegmentationScene {
 };
 
 enum class SeedConvention {
-  /// White = unlabelled, every other colour one label (labels in ascending (R, G, B) order);
-  /// a GT, when given, is a label image in those colours.
+  /// White = unlabelled, every other colour one label (labels in ascending (R, G, B) order, at
+  /// most 64); a GT, when given, is a label image in those colours.
   colours,
   /// The cooperative-cuts multi-label data: the labels are the GT's colours in ascending
   /// (R, G, B) order and a seeded (non-white) pixel takes the GT label under it.

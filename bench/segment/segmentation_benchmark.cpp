@@ -1,0 +1,317 @@
+// c2f-bench-segment: cooperative-cut segmentation, flat and coarse to fine, on the coopCuts
+// data, with the Potts alpha-expansion baseline.
+//
+//   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
+//       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
+//       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
+//       configuration below in this process, each from scratch with its own clock (partitions
+//       and reductions on it), and prints one tab-separated row per configuration. Traces go to
+//       OUT/NAME-CONFIG.csv.
+//   c2f-bench-segment summarize ROWS.tsv
+//       Prints the markdown tables (per image, and medians per configuration).
+//
+// Configurations: potts (alpha-expansion of the Potts energy, flat); flat-greedy-zero (the
+// reference CoGC), flat-greedy-current, flat-mm, flat-ceres; c2f-paper-greedy-zero (the
+// reference C2F-CoGC: paper levels, refinement after L trials without decrease),
+// c2f-paper-greedy-current, c2f-sweep-greedy-current (paper levels left only after a whole sweep
+// of flips without decrease), c2f-slic-greedy-current (slic:16 slic:8, whole sweeps),
+// c2f-paper-mm. Every coarse-to-fine configuration is compared with the flat run of the same
+// solver: the time it takes to reach that run's final energy, as a fraction of that run's time,
+// and the mean pixel error at 20 deadlines drawn uniformly (fixed seed) in [0, the slower run's
+// time]. On the original problem every run ends after a whole sweep without decrease.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "c2f/c2f.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+
+namespace {
+
+struct Point {
+  double time, energy, error;
+};
+
+struct Run {
+  std::vector<Point> trace;
+  Summary summary;
+  double error = 0.0;
+  double coop_energy = 0.0;
+};
+
+struct Config {
+  std::string name;
+  bool potts = false;
+  AuxStrategy strategy = AuxStrategy::greedy;
+  ExpansionStart start = ExpansionStart::current;
+  std::string schedule = "flat";
+  bool sweep_plateau = false;  ///< coarse levels left after a whole sweep, not after L steps
+  std::string flat;            ///< the flat configuration this one is compared with
+};
+
+const std::vector<Config>& configs() {
+  static const std::vector<Config> all{
+      {"potts", true, AuxStrategy::greedy, ExpansionStart::zero, "flat", false, ""},
+      {"flat-greedy-zero", false, AuxStrategy::greedy, ExpansionStart::zero, "flat", false, ""},
+      {"flat-greedy-current", false, AuxStrategy::greedy, ExpansionStart::current, "flat", false,
+       ""},
+      {"flat-mm", false, AuxStrategy::mm, ExpansionStart::zero, "flat", false, ""},
+      {"flat-ceres", false, AuxStrategy::ceres, ExpansionStart::zero, "flat", false, ""},
+      {"c2f-paper-greedy-zero", false, AuxStrategy::greedy, ExpansionStart::zero, "paper", false,
+       "flat-greedy-zero"},
+      {"c2f-paper-greedy-current", false, AuxStrategy::greedy, ExpansionStart::current, "paper",
+       false, "flat-greedy-current"},
+      {"c2f-sweep-greedy-current", false, AuxStrategy::greedy, ExpansionStart::current, "paper",
+       true, "flat-greedy-current"},
+      {"c2f-slic-greedy-current", false, AuxStrategy::greedy, ExpansionStart::current,
+       "slic:16 slic:8 flat", true, "flat-greedy-current"},
+      {"c2f-paper-mm", false, AuxStrategy::mm, ExpansionStart::zero, "paper", false, "flat-mm"},
+  };
+  return all;
+}
+
+Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
+          double time_limit, const std::string& trace_path) {
+  const int L = scene.num_labels();
+  const int K = problem.coop.num_classes();
+  SegmentationLevels levels(parse_segmentation_schedule(config.schedule, L), scene.shape(),
+                            slic_source(scene.image));
+  const std::size_t sweep = config.potts ? static_cast<std::size_t>(L)
+                                         : CoopSolver::steps_per_sweep(config.strategy, L, K);
+  Options options;
+  options.plateau_steps = {config.sweep_plateau
+                               ? static_cast<int>(sweep)
+                               : static_cast<int>(std::min<std::size_t>(sweep, L))};
+  options.plateau_steps_at_original = static_cast<int>(sweep);
+  options.time_limit_seconds = time_limit;
+  Run run;
+  std::ofstream file = open_trace_file(trace_path);
+  const auto error = pixel_error_function(scene);
+  TraceWriter writer(file, error);
+  const Observer observer = [&](const StepEvent& event) {
+    writer(event);
+    const Labeling ground = event.ground_labeling();
+    run.trace.push_back({event.time_s, event.energy, error(ground)});
+    return ObserverDecision::continue_run;
+  };
+  if (config.potts) {
+    ExpansionSolver<> solver;
+    run.summary = coarse_to_fine(problem.potts, levels, solver, options, observer);
+  } else {
+    CoopSolverOptions solver_options;
+    solver_options.strategy = config.strategy;
+    solver_options.start = config.start;
+    CoopSolver solver(solver_options);
+    run.summary = coarse_to_fine(problem.coop, levels, solver, options, observer);
+  }
+  run.error = error(run.summary.labeling);
+  run.coop_energy = problem.coop.evaluate(run.summary.labeling);
+  return run;
+}
+
+double error_at(const std::vector<Point>& trace, double t) {
+  double error = trace.front().error;
+  for (const Point& p : trace) {
+    if (p.time > t) break;
+    error = p.error;
+  }
+  return error;
+}
+
+const char* kColumns[] = {"image",
+                          "pixels",
+                          "labels",
+                          "config",
+                          "coop_energy",
+                          "error",
+                          "seconds",
+                          "steps",
+                          "reason",
+                          "reach_seconds",
+                          "reach_ratio",
+                          "deadline_error_flat",
+                          "deadline_error_c2f"};
+
+int run_image(const std::string& set, const std::string& name, const std::string& data,
+              const std::string& out, double time_limit, bool header) {
+  const std::filesystem::path root(data);
+  SegmentationFiles files;
+  if (set == "multilabel") {
+    const auto dir = root / "coopcuts/runMultilabel";
+    files = {(dir / "images" / (name + ".bmp")).string(),
+             (dir / "seeds" / (name + ".png")).string(),
+             (dir / "labelings" / (name + ".bmp")).string(), SeedConvention::labels_from_gt};
+  } else if (set == "binary") {
+    const auto dir = root / "coopcuts/runBinary/dataset";
+    files = {(dir / "images" / (name + ".jpg")).string(),
+             (dir / "seeds" / (name + ".png")).string(),
+             (dir / "groundtruth" / (name + ".png")).string(), SeedConvention::binary};
+  } else {
+    throw std::invalid_argument("SET must be multilabel or binary, got '" + set + "'");
+  }
+  const SegmentationScene scene = load_segmentation_scene(files);
+  const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
+  std::filesystem::create_directories(out);
+  if (header) {
+    for (std::size_t i = 0; i < std::size(kColumns); ++i)
+      std::printf("%s%s", i ? "\t" : "", kColumns[i]);
+    std::printf("\n");
+  }
+  std::map<std::string, Run> runs;
+  for (const Config& config : configs()) {
+    std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
+    Run run =
+        solve(config, scene, problem, time_limit, out + "/" + name + "-" + config.name + ".csv");
+    double reach = std::nan(""), ratio = std::nan(""), flat_error = std::nan(""),
+           c2f_error = std::nan("");
+    if (!config.flat.empty()) {
+      const Run& flat = runs.at(config.flat);
+      for (const Point& p : run.trace) {
+        if (p.energy <= flat.summary.energy) {
+          reach = p.time;
+          break;
+        }
+      }
+      ratio = reach / flat.summary.seconds;
+      std::mt19937_64 rng(20261122);
+      std::uniform_real_distribution<double> deadline(
+          0.0, std::max(flat.summary.seconds, run.summary.seconds));
+      flat_error = c2f_error = 0.0;
+      for (int i = 0; i < 20; ++i) {
+        const double t = deadline(rng);
+        flat_error += error_at(flat.trace, t) / 20;
+        c2f_error += error_at(run.trace, t) / 20;
+      }
+    }
+    std::printf("%s\t%zu\t%d\t%s\t%.6f\t%.6f\t%.3f\t%ld\t%s\t%.3f\t%.4f\t%.6f\t%.6f\n",
+                name.c_str(), scene.image.total(), scene.num_labels(), config.name.c_str(),
+                run.coop_energy, run.error, run.summary.seconds, run.summary.total_steps,
+                std::string(to_string(run.summary.reason)).c_str(), reach, ratio, flat_error,
+                c2f_error);
+    std::fflush(stdout);
+    runs.emplace(config.name, std::move(run));
+  }
+  return 0;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+int summarize(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  struct Row {
+    std::string image, config, reason;
+    double energy, error, seconds, reach, ratio, flat_error, c2f_error;
+  };
+  std::vector<Row> rows;
+  auto number = [](const std::string& s) {
+    return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
+  };
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line.rfind("image\t", 0) == 0) continue;
+    std::vector<std::string> f;
+    std::stringstream stream(line);
+    for (std::string field; std::getline(stream, field, '\t');) f.push_back(field);
+    if (f.size() != std::size(kColumns))
+      throw std::runtime_error("malformed row in '" + path + "': " + line);
+    rows.push_back({f[0], f[3], f[8], number(f[4]), number(f[5]), number(f[6]), number(f[9]),
+                    number(f[10]), number(f[11]), number(f[12])});
+  }
+  std::printf(
+      "| image | configuration | energy | pixel error | seconds | reaches flat E (s) | ratio |"
+      " deadline error flat / C2F | end |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row& r : rows) {
+    std::printf("| %s | %s | %.2f | %.2f%% | %.1f | %s | %s | %s | %s |\n", r.image.c_str(),
+                r.config.c_str(), r.energy, 100 * r.error, r.seconds,
+                std::isnan(r.ratio) ? (r.flat_error >= 0 ? "never" : "")
+                                    : std::to_string(r.reach).substr(0, 5).c_str(),
+                std::isnan(r.ratio) ? "" : std::to_string(r.ratio).substr(0, 4).c_str(),
+                std::isnan(r.flat_error)
+                    ? ""
+                    : (std::to_string(100 * r.flat_error).substr(0, 4) + "% / " +
+                       std::to_string(100 * r.c2f_error).substr(0, 4) + "%")
+                          .c_str(),
+                r.reason.c_str());
+  }
+  std::printf(
+      "\nMedians per configuration (ratio: a run that never reaches flat's energy counts as "
+      "infinitely slow):\n\n| configuration | images | pixel error | seconds | ratio | "
+      "deadline error flat / C2F |\n|---|---|---|---|---|---|\n");
+  for (const Config& config : configs()) {
+    std::vector<double> error, seconds, ratio, flat_error, c2f_error;
+    for (const Row& r : rows) {
+      if (r.config != config.name) continue;
+      error.push_back(r.error);
+      seconds.push_back(r.seconds);
+      if (!config.flat.empty()) {
+        ratio.push_back(std::isnan(r.ratio) ? std::numeric_limits<double>::infinity() : r.ratio);
+        flat_error.push_back(r.flat_error);
+        c2f_error.push_back(r.c2f_error);
+      }
+    }
+    if (error.empty()) continue;
+    std::printf("| %s | %zu | %.2f%% | %.1f | %s | %s |\n", config.name.c_str(), error.size(),
+                100 * median(error), median(seconds),
+                ratio.empty() ? "" : std::to_string(median(ratio)).substr(0, 4).c_str(),
+                flat_error.empty()
+                    ? ""
+                    : (std::to_string(100 * median(flat_error)).substr(0, 4) + "% / " +
+                       std::to_string(100 * median(c2f_error)).substr(0, 4) + "%")
+                          .c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (command == "summarize" && argc == 3) return summarize(argv[2]);
+    if (command != "run" || argc < 4) {
+      std::cerr << "usage: c2f-bench-segment run SET NAME [--data DIR] [--out DIR] "
+                   "[--time-limit S] [--header]\n       c2f-bench-segment summarize ROWS.tsv\n";
+      return 2;
+    }
+    std::string data = "../shared/data", out = "out/bench-segment";
+    double time_limit = 600;
+    bool header = false;
+    for (int i = 4; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--data" && i + 1 < argc) {
+        data = argv[++i];
+      } else if (arg == "--out" && i + 1 < argc) {
+        out = argv[++i];
+      } else if (arg == "--time-limit" && i + 1 < argc) {
+        const auto value = parse_real(argv[++i]);
+        if (!value || *value <= 0) throw std::invalid_argument("--time-limit: a number > 0");
+        time_limit = *value;
+      } else if (arg == "--header") {
+        header = true;
+      } else {
+        throw std::invalid_argument("unknown argument '" + arg + "'");
+      }
+    }
+    return run_image(argv[2], argv[3], data, out, time_limit, header);
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
+    return 2;
+  }
+}

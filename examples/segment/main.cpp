@@ -1,0 +1,134 @@
+// c2f-segment: interactive segmentation with cooperative graph cuts (or the Potts baseline),
+// flat or coarse to fine. The options become library calls in named steps: load the scene,
+// build the energies, solve, write the outputs.
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+#include "c2f/c2f.hpp"
+#include "segment_options.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+/// The energies, built once (off the run clock: the same for flat and coarse-to-fine runs).
+struct TimedProblem {
+  SegmentationProblem problem;
+  double seconds;
+};
+
+TimedProblem build_problem(const SegmentationScene& scene,
+                           const examples::SegmentCommand& command) {
+  const auto start = Clock::now();
+  SegmentationProblem problem = segmentation_problem(scene, command.parameters, command.classes);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (!command.quiet) {
+    std::fprintf(stderr, "c2f-segment: GMM unaries and %zu edges in %d classes in %.2f s\n",
+                 problem.coop.edges().size(), command.classes, seconds);
+  }
+  return {std::move(problem), seconds};
+}
+
+Schedule schedule_for(const examples::SegmentCommand& command, int num_labels) {
+  try {
+    Schedule schedule = parse_segmentation_schedule(command.schedule, num_labels);
+    if (const std::string problem = schedule.validate(num_labels); !problem.empty())
+      throw std::invalid_argument(problem);
+    return schedule;
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(std::string("--schedule: ") + error.what());
+  }
+}
+
+Summary solve(const examples::SegmentCommand& command, const SegmentationProblem& problem,
+              SegmentationLevels& levels, const Options& options, const Observer& observer) {
+  if (command.method == examples::SegmentMethod::potts) {
+    ExpansionSolver<> solver;
+    return coarse_to_fine(problem.potts, levels, solver, options, observer);
+  }
+  CoopSolver solver(command.coop);
+  return coarse_to_fine(problem.coop, levels, solver, options, observer);
+}
+
+void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
+                   const SegmentationScene& scene, const TimedProblem& built,
+                   const SegmentationLevels& levels, const Summary& summary,
+                   const std::optional<double>& error) {
+  std::ofstream report((out / "summary.txt").string());
+  report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
+         << ", " << scene.num_labels() << " labels (seeds: " << to_string(command.files.convention)
+         << ")\nmethod " << to_string(command.method);
+  if (command.method == examples::SegmentMethod::coop) {
+    report << ", auxiliary variables " << to_string(command.coop.strategy);
+    if (command.coop.strategy == AuxStrategy::greedy)
+      report << " (expansion from " << to_string(command.coop.start) << ")";
+  }
+  report << ", schedule " << levels.schedule().schedule().to_string() << "\nlambda "
+         << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
+         << command.parameters.alpha << ", " << command.classes << " edge classes\n"
+         << "data preparation: " << built.seconds << " s (not on the run clock)\n";
+  for (const LevelReport& level : levels.schedule().reports()) {
+    report << "partition " << level.level << ": " << level.num_groups << " groups in "
+           << level.seconds << " s\n";
+  }
+  report << summary.report() << "cooperative-cut energy of the result: "
+         << built.problem.coop.evaluate(summary.labeling)
+         << "\nPotts energy of the result: " << built.problem.potts.evaluate(summary.labeling)
+         << "\nobserver (trace error, progress): " << summary.observer_seconds
+         << " s off the run clock\n";
+  if (error) report << "pixel error: " << 100.0 * *error << "%\n";
+}
+
+void report_end(const examples::SegmentCommand& command, const Summary& summary,
+                const std::optional<double>& error) {
+  if (command.quiet) return;
+  if (error) std::fprintf(stderr, "c2f-segment: pixel error %.2f%%\n", 100.0 * *error);
+  std::fprintf(stderr, "c2f-segment: final energy %.4f after %ld steps in %.2f s (%s); wrote %s\n",
+               summary.energy, summary.total_steps, summary.seconds,
+               std::string(to_string(summary.reason)).c_str(), command.out_dir.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const auto parsed = examples::parse_segment_command(argc, argv);
+    if (!parsed) return 0;
+    const examples::SegmentCommand& command = *parsed;
+
+    const SegmentationScene scene = load_segmentation_scene(command.files);
+    const Schedule schedule = schedule_for(command, scene.num_labels());
+    std::filesystem::create_directories(command.out_dir);
+    const TimedProblem built = build_problem(scene, command);
+
+    SegmentationLevels levels(schedule, scene.shape(), slic_source(scene.image));
+    std::ofstream trace_file = open_trace_file(command.trace);
+    TraceWriter trace(trace_file, scene.truth.empty() ? TraceWriter::ErrorFunction{}
+                                                      : pixel_error_function(scene));
+    LevelPartitionRecorder partitions(command.save_partitions);
+    const Summary summary =
+        solve(command, built.problem, levels,
+              examples::run_options(command, scene.num_labels(), command.classes),
+              observe_all({std::ref(trace), ProgressPrinter("c2f-segment", command.quiet),
+                           std::ref(partitions)}));
+
+    const auto error = write_segmentation_outputs(command.out_dir, summary.labeling, scene);
+    write_summary(command.out_dir, command, scene, built, levels, summary, error);
+    partitions.write(command.out_dir, scene.shape());
+    report_end(command, summary, error);
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "c2f-segment: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-segment: error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,46 @@
+#pragma once
+// Command line of c2f-segment: parsing and validation (every flag checked before any work).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/driver/options.hpp"
+#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+
+namespace c2f::examples {
+
+/// What c2f-segment minimises: the cooperative cut, or the plain Potts energy of the same data
+/// with alpha-expansion (the cooperative-cuts papers' baseline).
+enum class SegmentMethod { coop, potts };
+
+std::string_view to_string(SegmentMethod method);
+SegmentMethod segment_method_from_string(std::string_view text);
+
+struct SegmentCommand {
+  vision::SegmentationFiles files;
+  std::string out_dir;
+  SegmentMethod method = SegmentMethod::coop;
+  CoopSolverOptions coop;
+  vision::CoopParameters parameters;
+  int classes = 10;
+  std::string schedule = "paper";  ///< parsed once the label count is known
+  double time_limit = 0.0;
+  long max_steps = 0;
+  int plateau = 0;        ///< 0: the number of labels (the reference's window)
+  int final_plateau = 0;  ///< 0: one sweep of the solver
+  std::string trace;
+  bool save_partitions = false;
+  bool quiet = false;
+};
+
+/// Parses argv. Returns std::nullopt after printing --help. Throws std::invalid_argument with a
+/// message naming the flag for anything invalid (missing files included).
+std::optional<SegmentCommand> parse_segment_command(int argc, char** argv);
+
+/// The driver options for a problem with num_labels labels and num_classes edge classes.
+Options run_options(const SegmentCommand& command, int num_labels, int num_classes);
+
+}  // namespace c2f::examples

@@ -1,0 +1,90 @@
+// c2f-segment's command line: errors name the input and give exit code 2; runs write their
+// outputs, flat and coarse to fine, for every method.
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/synthetic_segmentation.hpp"
+
+namespace {
+
+struct Result {
+  int exit_code;
+  std::string output;
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string(C2F_SEGMENT_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string output;
+  std::array<char, 512> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+}  // namespace
+
+TEST_CASE("c2f-segment rejects bad input with clear messages", "[segment][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-cli";
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 3);
+  const std::string out = (dir / "out").string();
+  const std::string inputs = files.image + " " + files.seeds;
+
+  Result r = run((dir / "missing.png").string() + " " + files.seeds + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output,
+             Catch::Contains("IMAGE: file '") && Catch::Contains("missing.png' does not exist"));
+  r = run(files.image + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("give IMAGE and SEEDS (got 1 positional arguments"));
+  r = run(inputs + " -o " + out + " --aux annealing");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--aux: unknown auxiliary-variable strategy 'annealing'"));
+  r = run(inputs + " -o " + out + " --alpha 1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("alpha must be in [0, 1)"));
+  r = run(inputs + " -o " + out + " --schedule cp:9,1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--schedule: level cp:9,1 has N_L 9 above the 3 labels"));
+  r = run(inputs + " -o " + out + " --schedule local:1,1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("local grouping reads a pairwise energy"));
+  r = run(inputs + " -o " + out + " --labels-from-gt");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--labels-from-gt needs --gt"));
+  r = run(files.image + " " + files.image + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("is it an image rather than seeds?"));
+  r = run("--help");
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("Usage: c2f-segment IMAGE SEEDS -o OUTDIR"));
+}
+
+TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-run";
+  std::filesystem::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 4);
+  for (const char* flags : {"--method potts --schedule flat", "--aux mm --schedule paper",
+                            "--aux greedy --start current --schedule paper-cc --save-partitions",
+                            "--aux ceres --schedule flat"}) {
+    const std::string out = (dir / "out").string();
+    std::filesystem::remove_all(out);
+    const Result r = run(files.image + " " + files.seeds + " --gt " + files.gt + " -o " + out +
+                         " -q --classes 4 " + flags);
+    INFO(flags << "\n" << r.output);
+    REQUIRE(r.exit_code == 0);
+    for (const char* file : {"labels.png", "overlay.png", "trace.csv", "summary.txt"})
+      CHECK(std::filesystem::exists(dir / "out" / file));
+    std::ifstream summary(dir / "out" / "summary.txt");
+    const std::string text((std::istreambuf_iterator<char>(summary)), {});
+    CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
+  }
+  CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
+}

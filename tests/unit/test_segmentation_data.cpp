@@ -1,0 +1,212 @@
+// Segmentation data: k-means, colour GMMs and their costs, seed conventions and their errors,
+// edge weights and classes, unaries; and the shared coopCuts images when they are there.
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <random>
+
+#include "c2f/vision/segmentation/colour_gmm.hpp"
+#include "c2f/vision/segmentation/kmeans.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_io.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+#include "support/synthetic_segmentation.hpp"
+
+using namespace c2f;
+using namespace c2f::vision;
+
+namespace {
+
+std::vector<Eigen::Vector3d> blobs(std::mt19937_64& rng,
+                                   const std::vector<Eigen::Vector3d>& centres, int per_blob,
+                                   double sigma) {
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < per_blob; ++i) {
+    for (const Eigen::Vector3d& c : centres)
+      points.push_back(c + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+  }
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("k-means finds separated clusters, deterministically", "[segmentation][kmeans]") {
+  std::mt19937_64 rng(1);
+  const std::vector<Eigen::Vector3d> centres{{0, 0, 0}, {1, 0, 0}, {0, 1, 1}};
+  const auto points = blobs(rng, centres, 50, 0.02);
+  const KMeansResult a = kmeans(points, 3, 7), b = kmeans(points, 3, 7);
+  CHECK(a.assignment == b.assignment);
+  for (const Eigen::Vector3d& c : centres) {
+    double nearest = 1e9;
+    for (const Eigen::Vector3d& found : a.centres) nearest = std::min(nearest, (found - c).norm());
+    CHECK(nearest < 0.02);
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) CHECK(a.assignment[i] == a.assignment[i % 3]);
+  CHECK(kmeans(std::vector<Eigen::Vector3d>{{1, 2, 3}, {1, 2, 3}}, 5, 1).centres.size() == 2);
+  CHECK_THROWS_WITH(kmeans({}, 2, 1), Catch::Contains("no points"));
+}
+
+TEST_CASE("colour GMMs recover their components and give non-negative costs",
+          "[segmentation][gmm]") {
+  std::mt19937_64 rng(2);
+  const auto samples = blobs(rng, {{0.2, 0.2, 0.2}, {0.8, 0.6, 0.1}}, 400, 0.03);
+  const ColourGmm gmm = fit_colour_gmm(samples, 2, 3);
+  REQUIRE(gmm.components.size() == 2);
+  double weight = 0.0;
+  for (const GaussianComponent& c : gmm.components) {
+    weight += c.weight;
+    CHECK(c.weight == Approx(0.5).margin(0.01));
+    CHECK(std::min((c.mean - Eigen::Vector3d(0.2, 0.2, 0.2)).norm(),
+                   (c.mean - Eigen::Vector3d(0.8, 0.6, 0.1)).norm()) < 0.01);
+    CHECK(c.covariance(0, 0) == Approx(0.03 * 0.03).epsilon(0.3));
+  }
+  CHECK(weight == Approx(1.0));
+  const std::vector<Eigen::Vector3d> probe{{0.2, 0.2, 0.2}, {0.5, 0.4, 0.15}, {1.0, 1.0, 1.0}};
+  const std::vector<double> costs = nonnegative_gmm_costs(gmm, probe);
+  for (const double c : costs) CHECK(c >= 0.0);
+  CHECK(costs[0] < costs[1]);
+  CHECK(costs[1] < costs[2]);
+  // The cost is the minimum over components, by hand for one isotropic component.
+  ColourGmm single{{{1.0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity() * 0.04}}};
+  const double s = 0.01, variance = 0.04 + s;
+  CHECK(GmmCost(single, s)(Eigen::Vector3d(0.1, 0, 0)) ==
+        Approx(1.5 * std::log(variance) + 0.5 * 0.01 / variance + 1.5 * std::log(2 * M_PI)));
+}
+
+TEST_CASE("seed conventions load scenes and reject bad input by name", "[segmentation][scene]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-scene";
+  const auto files = test::write_synthetic_segmentation(dir, 40, 30, 1);
+  const SegmentationScene scene =
+      load_segmentation_scene({files.image, files.seeds, files.gt, SeedConvention::colours});
+  CHECK(scene.num_labels() == 3);
+  CHECK(scene.palette[0] == files.colours[0]);
+  CHECK(scene.truth[0] == 0);  // top-left: the left third
+  std::size_t seeded = 0;
+  for (std::size_t i = 0; i < scene.seeds.size(); ++i) {
+    if (scene.seeds[i] == kNoLabel) continue;
+    ++seeded;
+    CHECK(scene.seeds[i] == scene.truth[i]);  // the scribbles lie inside their regions
+  }
+  CHECK(seeded > 20);
+  const SegmentationScene from_gt =
+      load_segmentation_scene({files.image, files.seeds, files.gt, SeedConvention::labels_from_gt});
+  CHECK(from_gt.seeds == scene.seeds);
+
+  // Errors name the input.
+  cv::imwrite((dir / "small.png").string(), cv::Mat(10, 10, CV_8UC3, cv::Scalar(255, 255, 255)));
+  CHECK_THROWS_WITH(load_segmentation_scene(
+                        {files.image, (dir / "small.png").string(), "", SeedConvention::colours}),
+                    Catch::Contains("SEEDS '") && Catch::Contains("is 10x10, the image is 40x30"));
+  cv::Mat one(30, 40, CV_8UC3, cv::Scalar(255, 255, 255));
+  one.at<cv::Vec3b>(3, 3) = cv::Vec3b(0, 0, 0);
+  cv::imwrite((dir / "one.png").string(), one);
+  CHECK_THROWS_WITH(
+      load_segmentation_scene(
+          {files.image, (dir / "one.png").string(), "", SeedConvention::colours}),
+      Catch::Contains("has 1 seed colour(s) besides white; segmentation needs at least 2"));
+  cv::Mat odd_gt = cv::imread(files.gt);
+  odd_gt.at<cv::Vec3b>(5, 7) = cv::Vec3b(9, 9, 9);
+  cv::imwrite((dir / "odd.png").string(), odd_gt);
+  CHECK_THROWS_WITH(load_segmentation_scene({files.image, files.seeds, (dir / "odd.png").string(),
+                                             SeedConvention::colours}),
+                    Catch::Contains("colour (9,9,9) at (7, 5) is none of the seed colours"));
+  // With labels from a GT that has a fourth class no scribble touches: that label has no seeds.
+  CHECK_THROWS_WITH(load_segmentation_scene({files.image, files.seeds, (dir / "odd.png").string(),
+                                             SeedConvention::labels_from_gt}),
+                    Catch::Contains("label 2 (colour (9,9,9)) has no seed pixels"));
+  CHECK_THROWS_WITH(
+      load_segmentation_scene({files.image, files.seeds, "", SeedConvention::labels_from_gt}),
+      Catch::Contains("need a GT labeling"));
+  CHECK_THROWS_WITH(load_segmentation_scene(
+                        {(dir / "missing.png").string(), files.seeds, "", SeedConvention::colours}),
+                    Catch::Contains("missing.png"));
+  cv::Mat grey(30, 40, CV_8U, cv::Scalar(255));
+  grey.at<std::uint8_t>(2, 2) = 77;
+  cv::imwrite((dir / "grey.png").string(), grey);
+  cv::Mat binary_seeds(30, 40, CV_8UC3, cv::Scalar(255, 255, 255));
+  binary_seeds.at<cv::Vec3b>(1, 1) = cv::Vec3b(0, 0, 255);    // red: object
+  binary_seeds.at<cv::Vec3b>(20, 30) = cv::Vec3b(255, 0, 0);  // blue: background
+  cv::imwrite((dir / "binary-seeds.png").string(), binary_seeds);
+  CHECK_THROWS_WITH(load_segmentation_scene({files.image, (dir / "binary-seeds.png").string(),
+                                             (dir / "grey.png").string(), SeedConvention::binary}),
+                    Catch::Contains("grey level 77 at pixel 82"));
+  const SegmentationScene binary = load_segmentation_scene(
+      {files.image, (dir / "binary-seeds.png").string(), "", SeedConvention::binary});
+  CHECK(binary.seeds[41] == 1);
+  CHECK(binary.seeds[20 * 40 + 30] == 0);
+  CHECK(seed_convention_from_string("labels-from-gt") == SeedConvention::labels_from_gt);
+}
+
+TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-energy";
+  const auto files = test::write_synthetic_segmentation(dir, 40, 30, 2);
+  const SegmentationScene scene =
+      load_segmentation_scene({files.image, files.seeds, files.gt, SeedConvention::colours});
+  const SegmentationEdges edges = segmentation_edges(scene.image, 10);
+  CHECK(edges.pairs.size() == 39 * 30 + 40 * 29 + 2 * 39 * 29);
+  for (std::size_t e = 0; e < edges.pairs.size(); ++e) {
+    CHECK(edges.weights[e] >= 0.05);
+    CHECK(edges.weights[e] <= 1.0);
+    CHECK(edges.u_class[e] <= 10);
+    CHECK((edges.u_class[e] == 10) == (edges.v_class[e] == 10));
+  }
+  const SegmentationEdges flat =
+      segmentation_edges(cv::Mat(4, 5, CV_8UC3, cv::Scalar(7, 8, 9)), 10);
+  for (std::size_t e = 0; e < flat.pairs.size(); ++e) {
+    CHECK(flat.weights[e] == 1.0);
+    CHECK(flat.u_class[e] == 10);
+  }
+  const std::vector<double> unaries = segmentation_unaries(scene);
+  for (std::size_t i = 0; i < scene.seeds.size(); ++i) {
+    for (int l = 0; l < 3; ++l) {
+      const double u = unaries[i * 3 + static_cast<std::size_t>(l)];
+      CHECK(u >= 0.0);
+      if (scene.seeds[i] != kNoLabel && scene.seeds[i] != l) CHECK(u == 20.0);
+    }
+  }
+  const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
+  CHECK(problem.coop.num_variables() == 1200);
+  // The best unary label is right on most pixels of this easy image.
+  Labeling argmin(1200);
+  for (std::size_t i = 0; i < 1200; ++i) {
+    argmin[i] = static_cast<Label>(std::min_element(&unaries[i * 3], &unaries[i * 3] + 3) -
+                                   &unaries[i * 3]);
+  }
+  CHECK(pixel_error(argmin, scene.truth) < 0.1);
+  CHECK(label_image(argmin, scene).at<cv::Vec3b>(0, 0) ==
+        scene.palette[static_cast<std::size_t>(argmin[0])]);
+  CHECK_THROWS_WITH(pixel_error(argmin, std::vector<int>(1200, kNoLabel)),
+                    Catch::Contains("scores no pixel"));
+}
+
+#ifdef C2F_SHARED_DATA_DIR
+TEST_CASE("the shared coopCuts images load with their conventions", "[segmentation][data]") {
+  const std::filesystem::path root = std::filesystem::path(C2F_SHARED_DATA_DIR) / "coopcuts";
+  if (!std::filesystem::exists(root)) {
+    WARN("no shared coopCuts data at " << root.string() << "; skipped");
+    return;
+  }
+  const auto m = root / "runMultilabel";
+  const SegmentationScene cow = load_segmentation_scene(
+      {(m / "images/1_11_s.bmp").string(), (m / "seeds/1_11_s.png").string(),
+       (m / "labelings/1_11_s.bmp").string(), SeedConvention::labels_from_gt});
+  CHECK(cow.num_labels() == 3);
+  CHECK(cow.shape().width == 320);
+  CHECK(cow.palette[0] == cv::Vec3b(128, 0, 0));  // (R,G,B) (0,0,128): cow, first in order
+  CHECK(segmentation_edges(cow.image).pairs.size() == 271043);  // the reference's count
+  const SegmentationScene trees = load_segmentation_scene(
+      {(m / "images/2_21_s.bmp").string(), (m / "seeds/2_21_s.png").string(),
+       (m / "labelings/2_21_s.bmp").string(), SeedConvention::labels_from_gt});
+  CHECK(trees.num_labels() == 4);
+  const auto b = root / "runBinary/dataset";
+  const SegmentationScene bee = load_segmentation_scene(
+      {(b / "images/005_bee.jpg").string(), (b / "seeds/005_bee.png").string(),
+       (b / "groundtruth/005_bee.png").string(), SeedConvention::binary});
+  CHECK(bee.shape().width == 427);
+  CHECK(bee.num_labels() == 2);
+}
+#endif
