@@ -2,6 +2,7 @@
 // data, with the Potts alpha-expansion baseline.
 //
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
+//                     [--configs A,B,...]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
@@ -78,6 +79,8 @@ const std::vector<Config>& configs() {
       {"c2f-slic-greedy-current", false, AuxStrategy::greedy, ExpansionStart::current,
        "slic:16 slic:8 flat", true, "flat-greedy-current"},
       {"c2f-paper-mm", false, AuxStrategy::mm, ExpansionStart::zero, "paper", false, "flat-mm"},
+      {"c2f-slic-mm", false, AuxStrategy::mm, ExpansionStart::zero, "slic:16 slic:8 flat", false,
+       "flat-mm"},
   };
   return all;
 }
@@ -145,7 +148,8 @@ const char* kColumns[] = {"image",
                           "deadline_error_c2f"};
 
 int run_image(const std::string& set, const std::string& name, const std::string& data,
-              const std::string& out, double time_limit, bool header) {
+              const std::string& out, double time_limit, bool header,
+              const std::vector<std::string>& selected) {
   const std::filesystem::path root(data);
   SegmentationFiles files;
   if (set == "multilabel") {
@@ -171,6 +175,13 @@ int run_image(const std::string& set, const std::string& name, const std::string
   }
   std::map<std::string, Run> runs;
   for (const Config& config : configs()) {
+    if (!selected.empty() &&
+        std::find(selected.begin(), selected.end(), config.name) == selected.end())
+      continue;
+    if (!config.flat.empty() && !runs.count(config.flat)) {
+      throw std::invalid_argument("--configs: " + config.name + " is compared with " + config.flat +
+                                  ", which is not in the list");
+    }
     std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
     Run run =
         solve(config, scene, problem, time_limit, out + "/" + name + "-" + config.name + ".csv");
@@ -293,6 +304,7 @@ int main(int argc, char** argv) {
     std::string data = "../shared/data", out = "out/bench-segment";
     double time_limit = 600;
     bool header = false;
+    std::vector<std::string> selected;
     for (int i = 4; i < argc; ++i) {
       const std::string arg = argv[i];
       if (arg == "--data" && i + 1 < argc) {
@@ -303,13 +315,21 @@ int main(int argc, char** argv) {
         const auto value = parse_real(argv[++i]);
         if (!value || *value <= 0) throw std::invalid_argument("--time-limit: a number > 0");
         time_limit = *value;
+      } else if (arg == "--configs" && i + 1 < argc) {
+        std::stringstream list(argv[++i]);
+        for (std::string name; std::getline(list, name, ',');) {
+          if (std::none_of(configs().begin(), configs().end(),
+                           [&](const Config& c) { return c.name == name; }))
+            throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
+          selected.push_back(name);
+        }
       } else if (arg == "--header") {
         header = true;
       } else {
         throw std::invalid_argument("unknown argument '" + arg + "'");
       }
     }
-    return run_image(argv[2], argv[3], data, out, time_limit, header);
+    return run_image(argv[2], argv[3], data, out, time_limit, header, selected);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

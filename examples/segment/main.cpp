@@ -103,7 +103,8 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
 
-    const SegmentationScene scene = load_segmentation_scene(command.files);
+    const SegmentationScene scene =
+        downscale(load_segmentation_scene(command.files), command.downscale);
     const Schedule schedule = schedule_for(command, scene.num_labels());
     std::filesystem::create_directories(command.out_dir);
     const TimedProblem built = build_problem(scene, command);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "c2f/core/enum_names.hpp"
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 
 namespace po = boost::program_options;
@@ -45,7 +46,7 @@ SegmentMethod segment_method_from_string(std::string_view text) {
 
 std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   SegmentCommand command;
-  std::string method = "coop", aux = "mm", start = "zero";
+  std::string method = "coop", aux = "mm", start = "zero", plateau = "auto";
   bool labels_from_gt = false, binary = false;
   po::options_description visible(
       "c2f-segment: interactive multi-label segmentation from seed scribbles with cooperative\n"
@@ -70,9 +71,10 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       "(majorise-minimise) or ceres (continuous relaxation)")(
       "start", po::value(&start)->default_value("zero"),
       "greedy's alpha-expansion start: zero (every trial from the all-zero labeling, the "
-      "reference) or current")("schedule", po::value(&command.schedule)->default_value("paper"),
-                               "flat, paper (cp:k,1 cp:k,2 with k = ceil(L/2)), paper-cc, or "
-                               "levels such as \"cp:2,1/cc slic:16 flat\"")(
+      "reference) or current")(
+      "schedule", po::value(&command.schedule)->default_value("paper"),
+      "flat, paper (cp:k,1 cp:k,2 with k = ceil(L/2)), paper-cc, superpixels (slic:16 slic:8), or "
+      "levels such as \"cp:2,1/cc slic:16 flat\"")(
       "lambda", po::value(&command.parameters.lambda)->default_value(1.5),
       "weight of the pairwise part")(
       "theta", po::value(&command.parameters.theta)->default_value(0.005),
@@ -80,13 +82,16 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       "alpha", po::value(&command.parameters.alpha)->default_value(0.0),
       "slope of the concave costs after the breakpoint, in [0, 1)")(
       "classes", po::value(&command.classes)->default_value(10), "edge classes K (k-means)")(
+      "downscale", po::value(&command.downscale)->default_value(1),
+      "shrink the image, seeds and GT by this integer factor first")(
       "time-limit", po::value(&command.time_limit)->default_value(0.0),
       "seconds on the run clock (0: none)")("max-steps",
                                             po::value(&command.max_steps)->default_value(0),
                                             "solver steps in the whole run (0: none)")(
-      "plateau", po::value(&command.plateau)->default_value(0),
-      "refine a coarse level after this many steps without decrease (0: the number of labels, or "
-      "one sweep when shorter)")(
+      "plateau", po::value(&plateau)->default_value("auto"),
+      "refine a coarse level after this many steps without decrease: a number, auto (the number "
+      "of labels, the reference's window, or one sweep when shorter) or sweep (a whole sweep: "
+      "L*K+1 flips for greedy)")(
       "final-plateau", po::value(&command.final_plateau)->default_value(0),
       "stop after this many steps without decrease on the original problem (0: one sweep: "
       "L*K+1 flips for greedy, 1 step for mm, 2 for ceres, L moves for potts)")(
@@ -136,10 +141,19 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   if (const std::string problem = command.parameters.validate(); !problem.empty())
     throw std::invalid_argument("--lambda/--theta/--alpha: " + problem);
   if (command.classes < 1) throw std::invalid_argument("--classes: must be >= 1");
+  if (command.downscale < 1) throw std::invalid_argument("--downscale: must be >= 1");
   if (!(command.time_limit >= 0.0) || !std::isfinite(command.time_limit))
     throw std::invalid_argument("--time-limit: must be finite and >= 0");
   if (command.max_steps < 0) throw std::invalid_argument("--max-steps: must be >= 0");
-  if (command.plateau < 0) throw std::invalid_argument("--plateau: must be >= 0");
+  if (plateau == "sweep") {
+    command.plateau = -1;
+  } else if (plateau != "auto") {
+    const auto value = parse_integer(plateau);
+    if (!value || *value < 1 || *value > 1'000'000)
+      throw std::invalid_argument("--plateau: '" + plateau +
+                                  "' is not auto, sweep or a number >= 1");
+    command.plateau = static_cast<int>(*value);
+  }
   if (command.final_plateau < 0) throw std::invalid_argument("--final-plateau: must be >= 0");
   // The schedule's grammar is checked now; presets and N_L once the labels are known.
   with_flag("--schedule", [&] { return vision::parse_segmentation_schedule(command.schedule, 2); });
@@ -156,9 +170,11 @@ Options run_options(const SegmentCommand& command, int num_labels, int num_class
           : CoopSolver::steps_per_sweep(command.coop.strategy, num_labels, num_classes);
   // Coarse levels: the reference's window of L trials, or one sweep when that is shorter (a
   // majorise-minimise step without decrease is already a fixed point).
-  options.plateau_steps = {command.plateau > 0
-                               ? command.plateau
-                               : static_cast<int>(std::min<std::size_t>(sweep, num_labels))};
+  options.plateau_steps = {
+      command.plateau > 0 ? command.plateau
+      : command.plateau < 0
+          ? static_cast<int>(sweep)
+          : static_cast<int>(std::min<std::size_t>(sweep, static_cast<std::size_t>(num_labels)))};
   options.plateau_steps_at_original =
       command.final_plateau > 0 ? command.final_plateau : static_cast<int>(sweep);
   options.time_limit_seconds = command.time_limit;

@@ -26,10 +26,13 @@ struct SegmentCommand {
   CoopSolverOptions coop;
   vision::CoopParameters parameters;
   int classes = 10;
+  int downscale = 1;
   std::string schedule = "paper";  ///< parsed once the label count is known
   double time_limit = 0.0;
   long max_steps = 0;
-  int plateau = 0;        ///< 0: the number of labels (the reference's window)
+  /// Steps without decrease that end a coarse level: 0 = the number of labels (the
+  /// reference's window) or one sweep when that is shorter; -1 = one whole sweep.
+  int plateau = 0;
   int final_plateau = 0;  ///< 0: one sweep of the solver
   std::string trace;
   bool save_partitions = false;

@@ -184,7 +184,7 @@ class RelaxedEnergy final : public ceres::FirstOrderFunction {
 
 }  // namespace
 
-/// The ceres strategy's state: the logits, warm-started from one step to the next.
+/// The ceres strategy's work array: the logits of the relaxation.
 struct CoopSolver::Relaxation {
   std::vector<double> logits;
 };
@@ -227,12 +227,9 @@ void CoopSolver::bind(const CoopEnergy& energy, std::span<const Label> start) {
   tried_unchanged_ = false;
   last_ = {};
   if (options_.strategy == AuxStrategy::ceres) {
-    // Logits from the start labeling: its label ahead by 2 at every variable.
-    const auto L = static_cast<std::size_t>(energy.num_labels());
     relaxation_ = std::make_unique<Relaxation>();
-    relaxation_->logits.assign(energy.num_variables() * L, 0.0);
-    for (std::size_t i = 0; i < labeling_.size(); ++i)
-      relaxation_->logits[i * L + static_cast<std::size_t>(labeling_[i])] = 2.0;
+    relaxation_->logits.assign(
+        energy.num_variables() * static_cast<std::size_t>(energy.num_labels()), 0.0);
   }
 }
 
@@ -307,11 +304,22 @@ void CoopSolver::mm_step() {
   keep_if_lower(expand_for(h, labeling_), h);
 }
 
+namespace {
+/// How far ahead the kept labeling's label starts in the logits (softmax: p = e^2 / (e^2 + L - 1)).
+constexpr double kStartMargin = 2.0;
+}  // namespace
+
 void CoopSolver::ceres_step() {
   // Ceres reports line-search corner cases through glog warnings on stderr; the solver's
   // outcome is what matters here, so only glog errors are shown.
   FLAGS_minloglevel = std::max(FLAGS_minloglevel, static_cast<int>(google::GLOG_ERROR));
   const auto start = std::chrono::steady_clock::now();
+  // Warm start: the logits of the previous step's solution, the labeling kept (its label ahead
+  // by 2 at every variable).
+  const auto L = static_cast<std::size_t>(energy_->num_labels());
+  std::fill(relaxation_->logits.begin(), relaxation_->logits.end(), 0.0);
+  for (std::size_t i = 0; i < labeling_.size(); ++i)
+    relaxation_->logits[i * L + static_cast<std::size_t>(labeling_[i])] = kStartMargin;
   auto* objective = new RelaxedEnergy(*energy_, options_.relaxation.smoothing);
   ceres::GradientProblem problem(objective);  // takes ownership
   ceres::GradientProblemSolver::Options options;

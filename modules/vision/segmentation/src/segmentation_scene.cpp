@@ -1,6 +1,7 @@
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <array>
@@ -183,6 +184,45 @@ SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
     }
   }
   require_seeds_for_every_label(scene, files.seeds);
+  return scene;
+}
+
+SegmentationScene downscale(SegmentationScene scene, int factor) {
+  if (factor < 1) throw std::invalid_argument("downscale: the factor must be >= 1");
+  if (factor == 1) return scene;
+  const int w = scene.image.cols / factor, h = scene.image.rows / factor;
+  if (w < 2 || h < 2) {
+    throw std::invalid_argument("downscale: a " + size_text(scene.image) + " image shrunk by " +
+                                std::to_string(factor) + " would be smaller than 2x2");
+  }
+  const int old_w = scene.image.cols;
+  cv::Mat image;
+  cv::resize(scene.image, image, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+  std::vector<int> seeds(static_cast<std::size_t>(w * h), kNoLabel), truth;
+  if (!scene.truth.empty()) truth.assign(seeds.size(), kNoLabel);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const auto i = static_cast<std::size_t>(y * w + x);
+      for (int dy = 0; dy < factor && seeds[i] == kNoLabel; ++dy) {
+        for (int dx = 0; dx < factor && seeds[i] == kNoLabel; ++dx)
+          seeds[i] =
+              scene.seeds[static_cast<std::size_t>((y * factor + dy) * old_w + x * factor + dx)];
+      }
+      if (!truth.empty())
+        truth[i] = scene.truth[static_cast<std::size_t>((y * factor) * old_w + x * factor)];
+    }
+  }
+  scene.image = image;
+  scene.seeds = std::move(seeds);
+  scene.truth = std::move(truth);
+  std::vector<std::size_t> count(scene.palette.size(), 0);
+  for (const int label : scene.seeds) {
+    if (label != kNoLabel) ++count[static_cast<std::size_t>(label)];
+  }
+  for (std::size_t l = 0; l < count.size(); ++l) {
+    if (count[l] == 0)
+      throw std::invalid_argument("downscale: label " + std::to_string(l) + " loses all its seeds");
+  }
   return scene;
 }
 

@@ -7,7 +7,8 @@ namespace c2f::vision {
 std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels) {
   const std::string k = std::to_string((num_labels + 1) / 2);
   return {{"paper", "cp:" + k + ",1 cp:" + k + ",2 flat"},
-          {"paper-cc", "cp:" + k + ",1/cc cp:" + k + ",2/cc flat"}};
+          {"paper-cc", "cp:" + k + ",1/cc cp:" + k + ",2/cc flat"},
+          {"superpixels", "slic:16 slic:8 flat"}};
 }
 
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels) {

@@ -13,8 +13,10 @@
 //   ceres   a continuous relaxation: label probabilities per pixel (softmax of free logits),
 //           relaxed directed cut sizes per (label, class), a smooth concave surrogate of F
 //           (soft minimum of its two branches); minimised with Ceres' L-BFGS, warm-started from
-//           the previous step's solution; h is read off the relaxed cut sizes, then alpha-
-//           expansion of E_h from x, kept only when the true energy decreases.
+//           the previous step's solution (the labeling kept, its label 2 ahead in the logits;
+//           a softer start drifts to many-boundary solutions of higher energy, measured); h is
+//           read off the relaxed cut sizes, then alpha-expansion of E_h from x, kept only when
+//           the true energy decreases.
 // h is solver state that means the same on every level (indexed by label and class), so it
 // carries over between levels of a coarse-to-fine run.
 

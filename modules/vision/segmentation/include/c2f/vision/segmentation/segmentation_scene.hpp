@@ -57,4 +57,11 @@ struct SegmentationFiles {
 /// the path of an unreadable file.
 SegmentationScene load_segmentation_scene(const SegmentationFiles& files);
 
+/// The scene shrunk by an integer factor: the image by area averaging; a pixel of the result
+/// is seeded with a label when any pixel of its block carries that seed (the first in raster
+/// order when several do, so thin scribbles survive); the truth by the block's top-left pixel.
+/// Factor 1 returns the scene unchanged. Throws std::invalid_argument for a factor < 1, an
+/// image that would be smaller than 2x2, or a label that would lose all its seeds.
+SegmentationScene downscale(SegmentationScene scene, int factor);
+
 }  // namespace c2f::vision
