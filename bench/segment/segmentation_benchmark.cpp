@@ -35,18 +35,15 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "support/anytime_trace.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
 
 namespace {
 
-struct Point {
-  double time, energy, error;
-};
-
 struct Run {
-  std::vector<Point> trace;
+  std::vector<bench::TracePoint> trace;
   Summary summary;
   double error = 0.0;
   double coop_energy = 0.0;
@@ -124,15 +121,6 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   return run;
 }
 
-double error_at(const std::vector<Point>& trace, double t) {
-  double error = trace.front().error;
-  for (const Point& p : trace) {
-    if (p.time > t) break;
-    error = p.error;
-  }
-  return error;
-}
-
 const char* kColumns[] = {"image",
                           "pixels",
                           "labels",
@@ -189,7 +177,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
            c2f_error = std::nan("");
     if (!config.flat.empty()) {
       const Run& flat = runs.at(config.flat);
-      for (const Point& p : run.trace) {
+      for (const bench::TracePoint& p : run.trace) {
         if (p.energy <= flat.summary.energy) {
           reach = p.time;
           break;
@@ -202,8 +190,8 @@ int run_image(const std::string& set, const std::string& name, const std::string
       flat_error = c2f_error = 0.0;
       for (int i = 0; i < 20; ++i) {
         const double t = deadline(rng);
-        flat_error += error_at(flat.trace, t) / 20;
-        c2f_error += error_at(run.trace, t) / 20;
+        flat_error += bench::error_at(flat.trace, t) / 20;
+        c2f_error += bench::error_at(run.trace, t) / 20;
       }
     }
     std::printf("%s\t%zu\t%d\t%s\t%.6f\t%.6f\t%.3f\t%ld\t%s\t%.3f\t%.4f\t%.6f\t%.6f\n",
@@ -215,13 +203,6 @@ int run_image(const std::string& set, const std::string& name, const std::string
     runs.emplace(config.name, std::move(run));
   }
   return 0;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
 int summarize(const std::string& path) {
@@ -279,12 +260,12 @@ int summarize(const std::string& path) {
     }
     if (error.empty()) continue;
     std::printf("| %s | %zu | %.2f%% | %.1f | %s | %s |\n", config.name.c_str(), error.size(),
-                100 * median(error), median(seconds),
-                ratio.empty() ? "" : std::to_string(median(ratio)).substr(0, 4).c_str(),
+                100 * bench::median(error), bench::median(seconds),
+                ratio.empty() ? "" : std::to_string(bench::median(ratio)).substr(0, 4).c_str(),
                 flat_error.empty()
                     ? ""
-                    : (std::to_string(100 * median(flat_error)).substr(0, 4) + "% / " +
-                       std::to_string(100 * median(c2f_error)).substr(0, 4) + "%")
+                    : (std::to_string(100 * bench::median(flat_error)).substr(0, 4) + "% / " +
+                       std::to_string(100 * bench::median(c2f_error)).substr(0, 4) + "%")
                           .c_str());
   }
   return 0;

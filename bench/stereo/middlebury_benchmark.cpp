@@ -40,18 +40,15 @@
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "support/anytime_trace.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
 
 namespace {
 
-struct Point {
-  double time, energy, error;
-};
-
 struct Run {
-  std::vector<Point> trace;
+  std::vector<bench::TracePoint> trace;
   Summary summary;
   BadPixelRates rates;
 };
@@ -76,15 +73,6 @@ const char* kColumns[] = {"scene",
                           "sgbm_seconds",
                           "flat_reason",
                           "c2f_reason"};
-
-double error_at(const std::vector<Point>& trace, double t) {
-  double error = trace.front().error;
-  for (const Point& p : trace) {
-    if (p.time > t) break;
-    error = p.error;
-  }
-  return error;
-}
 
 struct Settings {
   std::string schedule = "paper";
@@ -129,7 +117,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
-  for (const Point& p : c2f.trace) {
+  for (const bench::TracePoint& p : c2f.trace) {
     if (p.energy <= flat_final) {
       reach = p.time;
       break;
@@ -141,8 +129,8 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   double sum_flat = 0, sum_c2f = 0;
   for (int i = 0; i < 20; ++i) {
     const double t = deadline(rng);
-    sum_flat += error_at(flat.trace, t);
-    sum_c2f += error_at(c2f.trace, t);
+    sum_flat += bench::error_at(flat.trace, t);
+    sum_c2f += bench::error_at(c2f.trace, t);
   }
 
   // OpenCV StereoSGBM on the same views. SGBM leaves its leftmost numDisparities columns
@@ -184,15 +172,6 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
       std::string(to_string(flat.summary.reason)).c_str(),
       std::string(to_string(c2f.summary.reason)).c_str());
   return 0;
-}
-
-double median(std::vector<double> values) {
-  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
-               values.end());
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
 int summarize(const std::string& path) {
@@ -243,11 +222,12 @@ int summarize(const std::string& path) {
   std::printf(
       "| **median** | | | %.2f%% / %.2f%% | %.2f%% / %.2f%% | %.1f | %.1f | %.1f | %.3f | %.2f%% / "
       "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f |\n",
-      100 * median(columns[4]), 100 * median(columns[6]), 100 * median(columns[5]),
-      100 * median(columns[7]), median(columns[8]), median(columns[9]), median(columns[10]),
-      median(columns[11]), 100 * median(columns[12]), 100 * median(columns[13]),
-      100 * median(columns[14]), 100 * median(columns[15]), 100 * median(columns[16]),
-      median(columns[17]));
+      100 * bench::median(columns[4]), 100 * bench::median(columns[6]),
+      100 * bench::median(columns[5]), 100 * bench::median(columns[7]), bench::median(columns[8]),
+      bench::median(columns[9]), bench::median(columns[10]), bench::median(columns[11]),
+      100 * bench::median(columns[12]), 100 * bench::median(columns[13]),
+      100 * bench::median(columns[14]), 100 * bench::median(columns[15]),
+      100 * bench::median(columns[16]), bench::median(columns[17]));
   std::printf(
       "\n%zu scenes; C2F never reached flat's final energy on %zu (counted as infinite time in the "
       "medians); "

@@ -1,5 +1,7 @@
 #include "segment_options.hpp"
 
+#include "command_line.hpp"
+
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cmath>
@@ -15,25 +17,6 @@
 namespace po = boost::program_options;
 
 namespace c2f::examples {
-
-namespace {
-
-void require_file(const std::string& path, const char* flag) {
-  if (!path.empty() && !std::filesystem::is_regular_file(path)) {
-    throw std::invalid_argument(std::string(flag) + ": file '" + path + "' does not exist");
-  }
-}
-
-template <class F>
-auto with_flag(const char* flag, F parse) {
-  try {
-    return parse();
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string(flag) + ": " + error.what());
-  }
-}
-
-}  // namespace
 
 std::string_view to_string(SegmentMethod method) {
   return method == SegmentMethod::coop ? "coop" : "potts";
@@ -99,25 +82,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       "save-partitions", po::bool_switch(&command.save_partitions),
       "write pictures of each level's partition")("quiet,q", po::bool_switch(&command.quiet),
                                                   "no progress on stderr");
-  po::options_description hidden;
-  hidden.add_options()("inputs", po::value<std::vector<std::string>>(), "IMAGE SEEDS");
-  po::options_description all;
-  all.add(visible).add(hidden);
-  po::positional_options_description positional;
-  positional.add("inputs", -1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    po::notify(vm);
-  } catch (const po::error& error) {
-    throw std::invalid_argument(error.what());
-  }
-  if (vm.count("help")) {
-    std::cout << visible << "\n";
-    return std::nullopt;
-  }
-  const auto inputs =
-      vm.count("inputs") ? vm["inputs"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  const auto parsed = parse_command_line(argc, argv, visible);
+  if (!parsed) return std::nullopt;
+  const std::vector<std::string>& inputs = *parsed;
   if (inputs.size() != 2)
     throw std::invalid_argument("give IMAGE and SEEDS (got " + std::to_string(inputs.size()) +
                                 " positional arguments; see --help)");

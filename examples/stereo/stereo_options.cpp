@@ -1,5 +1,7 @@
 #include "stereo_options.hpp"
 
+#include "command_line.hpp"
+
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iostream>
@@ -10,15 +12,6 @@
 namespace po = boost::program_options;
 
 namespace c2f::examples {
-
-namespace {
-void require_file(const std::string& path, const char* flag) {
-  if (!path.empty() && !std::filesystem::is_regular_file(path)) {
-    throw std::invalid_argument(std::string(flag) + ": file '" + path + "' does not exist");
-  }
-}
-
-}  // namespace
 
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
@@ -75,33 +68,16 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "save-partitions", po::bool_switch(&command.save_partitions),
       "write pictures of each level's partition")("quiet,q", po::bool_switch(&command.quiet),
                                                   "no progress on stderr");
-  po::options_description hidden;
-  hidden.add_options()("images", po::value<std::vector<std::string>>(), "LEFT RIGHT");
-  po::options_description all;
-  all.add(visible).add(hidden);
-  po::positional_options_description positional;
-  positional.add("images", 2);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    po::notify(vm);
-  } catch (const po::error& error) {
-    throw std::invalid_argument(error.what());
-  }
-  if (vm.count("help")) {
-    std::cout << visible << "\n";
-    return std::nullopt;
-  }
-  const auto images =
-      vm.count("images") ? vm["images"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  const auto images = parse_command_line(argc, argv, visible);
+  if (!images) return std::nullopt;
   if (command.scene.empty()) {
-    if (images.size() != 2)
+    if (images->size() != 2)
       throw std::invalid_argument("give LEFT and RIGHT images, or --scene NAME (see --help)");
-    command.pair.left = images[0];
-    command.pair.right = images[1];
+    command.pair.left = (*images)[0];
+    command.pair.right = (*images)[1];
     require_file(command.pair.left, "LEFT");
     require_file(command.pair.right, "RIGHT");
-  } else if (!images.empty()) {
+  } else if (!images->empty()) {
     throw std::invalid_argument("--scene replaces LEFT RIGHT; give one or the other");
   } else if (!command.pair.gt.empty() || !command.pair.gt_right.empty() ||
              !command.pair.mask.empty()) {
@@ -125,28 +101,15 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   require_file(command.pair.gt, "--gt");
   require_file(command.pair.gt_right, "--gt-right");
   require_file(command.pair.mask, "--mask");
-  try {
-    command.solver.kind = solver_kind_from_string(solver);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string("--solver: ") + error.what());
-  }
-  try {
-    command.solver.order = visit_order_from_string(label_order);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string("--label-order: ") + error.what());
-  }
+  command.solver.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver); });
+  command.solver.order =
+      with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
   if (const std::string problem = command.solver.validate(); !problem.empty())
     throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
-  try {
-    command.tsgo.smoothness = vision::stereo_smoothness_from_string(smoothness);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string("--smoothness: ") + error.what());
-  }
-  try {
-    command.schedule = vision::parse_stereo_schedule(schedule);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string("--schedule: ") + error.what());
-  }
+  command.tsgo.smoothness =
+      with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
+  command.schedule =
+      with_flag("--schedule", [&] { return vision::parse_stereo_schedule(schedule); });
   if (const std::string problem = command.schedule.validate(command.tsgo.labels);
       !problem.empty()) {
     throw std::invalid_argument("--schedule: " + problem + " (--labels " +

@@ -8,6 +8,7 @@
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
+#include "c2f/vision/segmentation/coop_energy.hpp"
 
 namespace c2f::test {
 
@@ -31,6 +32,12 @@ DensePartition random_refinement(Rng& rng, const DensePartition& coarse, std::si
 
 /// A uniformly random labeling.
 Labeling random_labeling(Rng& rng, std::size_t num_variables, int num_labels);
+
+/// A random ground cooperative-cut energy on a w x h 8-connected grid: unaries in [0, 2),
+/// edge weights in [0.05, 1), each side's class drawn from 0..num_classes (K, linear, included).
+vision::CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, int num_labels,
+                                      int num_classes,
+                                      vision::CoopParameters parameters = {1.5, 0.05, 0.0});
 
 struct BruteForceResult {
   double energy;

@@ -17,35 +17,6 @@ using namespace c2f;
 using namespace c2f::vision;
 using namespace c2f::test;
 
-namespace {
-
-/// A random ground cooperative-cut energy on a w x h 8-connected grid.
-CoopEnergy random_coop(Rng& rng, std::size_t w, std::size_t h, int num_labels, int num_classes,
-                       CoopParameters parameters = {1.5, 0.05, 0.0}) {
-  std::uniform_real_distribution<double> unary(0.0, 2.0), weight(0.05, 1.0);
-  std::uniform_int_distribution<int> edge_class(0, num_classes);  // K (linear) included
-  const std::size_t n = w * h;
-  std::vector<double> unaries(n * static_cast<std::size_t>(num_labels));
-  for (double& u : unaries) u = unary(rng);
-  std::vector<CoopEdge> edges;
-  std::vector<ClassWeight> entries;
-  std::vector<double> totals(static_cast<std::size_t>(num_classes), 0.0);
-  for (const auto& [u, v] : grid_neighbour_pairs({w, h}, Connectivity::eight)) {
-    const auto first = static_cast<std::uint32_t>(entries.size());
-    const double w_e = weight(rng);
-    for (int side = 0; side < 2; ++side) {
-      const auto c = static_cast<std::uint32_t>(edge_class(rng));
-      entries.push_back({c, w_e});
-      if (c < static_cast<std::uint32_t>(num_classes)) totals[c] += w_e;
-    }
-    edges.push_back({u, v, first, first + 1, first + 2});
-  }
-  return CoopEnergy(n, num_labels, std::move(unaries), num_classes, std::move(totals), parameters,
-                    std::move(edges), std::move(entries));
-}
-
-}  // namespace
-
 TEST_CASE("the cooperative-cut energy of a tiny graph, by hand", "[segmentation][coop]") {
   // Chain 0 - 1 - 2, two labels, K = 1 (class 0 cooperative, class 1 linear).
   // Edge (0,1): u side class 0 weight 2, v side class 0 weight 2.
@@ -81,7 +52,7 @@ TEST_CASE("reducing a cooperative-cut energy is exact", "[segmentation][coop][re
   for (int trial = 0; trial < 40; ++trial) {
     const int L = 2 + trial % 3;
     const CoopEnergy energy =
-        random_coop(rng, 6, 5, L, 3, {1.0 + trial % 2, 0.1, 0.25 * (trial % 3)});
+        random_coop_energy(rng, 6, 5, L, 3, {1.0 + trial % 2, 0.1, 0.25 * (trial % 3)});
     const DensePartition coarse = random_partition(rng, energy.num_variables(), 8);
     const DensePartition fine = random_refinement(rng, coarse, 3);
     const CoopEnergy reduced = reduce(energy, coarse);
@@ -95,7 +66,7 @@ TEST_CASE("reducing a cooperative-cut energy is exact", "[segmentation][coop][re
       CHECK(close_relative(fine_reduced.evaluate(transfer_labels(y, coarse, fine)), ground, 1e-12));
     }
   }
-  CHECK_THROWS_WITH(reduce(random_coop(rng, 3, 3, 2, 2), DensePartition::identity(4)),
+  CHECK_THROWS_WITH(reduce(random_coop_energy(rng, 3, 3, 2, 2), DensePartition::identity(4)),
                     Catch::Contains("the partition has 4 variables, the energy 9"));
 }
 
@@ -104,7 +75,8 @@ TEST_CASE("E is the minimum over h of the pairwise energies E_h plus their const
   Rng rng(5);
   for (int trial = 0; trial < 30; ++trial) {
     const int L = 2 + trial % 3, K = 3;
-    const CoopEnergy energy = random_coop(rng, 5, 4, L, K, {1.5, 0.08, trial % 2 ? 0.3 : 0.0});
+    const CoopEnergy energy =
+        random_coop_energy(rng, 5, 4, L, K, {1.5, 0.08, trial % 2 ? 0.3 : 0.0});
     const DensePartition groups = random_partition(rng, energy.num_variables(), 7);
     for (const CoopEnergy& e : {energy, reduce(energy, groups)}) {
       for (int sample = 0; sample < 8; ++sample) {
@@ -130,7 +102,7 @@ TEST_CASE("E_h's expansion moves are submodular, so two-label moves are exact fo
           "[segmentation][coop][aux][brute-force]") {
   Rng rng(12);
   for (int trial = 0; trial < 20; ++trial) {
-    const CoopEnergy energy = random_coop(rng, 3, 3, 2, 2, {2.0, 0.1, 0.0});
+    const CoopEnergy energy = random_coop_energy(rng, 3, 3, 2, 2, {2.0, 0.1, 0.0});
     CoopAuxiliary h(2, 2);
     h.set(trial % 2, trial % 2, false);
     const PairwiseEnergy pairwise = pairwise_energy(energy, h);
@@ -147,7 +119,7 @@ TEST_CASE("E_h's expansion moves are submodular, so two-label moves are exact fo
 TEST_CASE("colour passing sees a cooperative-cut edge by its ordered side classes",
           "[segmentation][coop][lift]") {
   Rng rng(3);
-  const CoopEnergy energy = random_coop(rng, 4, 3, 3, 2);
+  const CoopEnergy energy = random_coop_energy(rng, 4, 3, 3, 2);
   const LiftingView view = lifting_view(energy);
   REQUIRE(view.factors.size() == energy.edges().size());
   for (std::size_t a = 0; a < view.factors.size(); ++a) {

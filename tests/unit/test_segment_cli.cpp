@@ -3,30 +3,17 @@
 
 #include <catch2/catch.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "support/run_tool.hpp"
 #include "support/synthetic_segmentation.hpp"
 
 namespace {
 
-struct Result {
-  int exit_code;
-  std::string output;
-};
-
-Result run(const std::string& arguments) {
-  const std::string command = std::string(C2F_SEGMENT_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  std::array<char, 512> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+c2f::test::ToolResult run(const std::string& arguments) {
+  return c2f::test::run_tool(C2F_SEGMENT_BINARY, arguments);
 }
 
 }  // namespace
@@ -37,7 +24,7 @@ TEST_CASE("c2f-segment rejects bad input with clear messages", "[segment][cli]")
   const std::string out = (dir / "out").string();
   const std::string inputs = files.image + " " + files.seeds;
 
-  Result r = run((dir / "missing.png").string() + " " + files.seeds + " -o " + out);
+  c2f::test::ToolResult r = run((dir / "missing.png").string() + " " + files.seeds + " -o " + out);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output,
              Catch::Contains("IMAGE: file '") && Catch::Contains("missing.png' does not exist"));
@@ -76,8 +63,8 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
                             "--aux ceres --schedule flat"}) {
     const std::string out = (dir / "out").string();
     std::filesystem::remove_all(out);
-    const Result r = run(files.image + " " + files.seeds + " --gt " + files.gt + " -o " + out +
-                         " -q --classes 4 " + flags);
+    const c2f::test::ToolResult r = run(files.image + " " + files.seeds + " --gt " + files.gt +
+                                        " -o " + out + " -q --classes 4 " + flags);
     INFO(flags << "\n" << r.output);
     REQUIRE(r.exit_code == 0);
     for (const char* file : {"labels.png", "overlay.png", "trace.csv", "summary.txt"})

@@ -3,30 +3,17 @@
 
 #include <catch2/catch.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "support/run_tool.hpp"
 #include "support/synthetic_stereo.hpp"
 
 namespace {
 
-struct Result {
-  int exit_code;
-  std::string output;
-};
-
-Result run(const std::string& arguments) {
-  const std::string command = std::string(C2F_STEREO_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  std::array<char, 512> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+c2f::test::ToolResult run(const std::string& arguments) {
+  return c2f::test::run_tool(C2F_STEREO_BINARY, arguments);
 }
 
 }  // namespace
@@ -41,7 +28,7 @@ TEST_CASE("c2f-stereo rejects bad input with clear messages", "[stereo][cli]") {
   cv::imwrite((dir / "small.png").string(), pair.left(cv::Rect(0, 0, 20, 20)));
   const std::string out = (dir / "out").string();
 
-  Result r = run((dir / "missing.png").string() + " " + right + " -o " + out);
+  c2f::test::ToolResult r = run((dir / "missing.png").string() + " " + right + " -o " + out);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output,
              Catch::Contains("LEFT: file '") && Catch::Contains("missing.png' does not exist"));
@@ -87,10 +74,11 @@ TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]"
   cv::Mat gt8;
   pair.gt.convertTo(gt8, CV_8U, 4.0);
   cv::imwrite((dir / "gt.png").string(), gt8);
-  const Result r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
-                       (dir / "out").string() + " --labels 10 --gt " + (dir / "gt.png").string() +
-                       " --gt-divisor 4 --save-partitions --label-order frequency"
-                       " --plateau-tolerance 1e-4 -q");
+  const c2f::test::ToolResult r =
+      run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+          (dir / "out").string() + " --labels 10 --gt " + (dir / "gt.png").string() +
+          " --gt-divisor 4 --save-partitions --label-order frequency"
+          " --plateau-tolerance 1e-4 -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* file : {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",

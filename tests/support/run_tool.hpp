@@ -1,0 +1,16 @@
+#pragma once
+// Runs a command-line tool for the CLI tests: its exit code and everything it printed.
+
+#include <string>
+
+namespace c2f::test {
+
+struct ToolResult {
+  int exit_code;       ///< -1 when the tool did not exit normally
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `binary arguments` through the shell. Throws std::runtime_error when it cannot start.
+ToolResult run_tool(const std::string& binary, const std::string& arguments);
+
+}  // namespace c2f::test
