@@ -226,26 +226,32 @@ int summarize(const std::string& path) {
     rows.push_back({f[0], f[3], f[8], number(f[4]), number(f[5]), number(f[6]), number(f[9]),
                     number(f[10]), number(f[11]), number(f[12])});
   }
+  auto fixed = [](double value, const char* format) {
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return std::string(text);
+  };
   std::printf(
       "| image | configuration | energy | pixel error | seconds | reaches flat E (s) | ratio |"
       " deadline error flat / C2F | end |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows) {
+    const bool compared = !std::isnan(r.flat_error);
+    const std::string reach = !compared             ? ""
+                              : std::isnan(r.reach) ? "never"
+                                                    : fixed(r.reach, "%.2f");
+    const std::string ratio = !compared || std::isnan(r.ratio) ? "" : fixed(r.ratio, "%.2f");
+    const std::string deadline = !compared ? ""
+                                           : fixed(100 * r.flat_error, "%.2f%%") + " / " +
+                                                 fixed(100 * r.c2f_error, "%.2f%%");
     std::printf("| %s | %s | %.2f | %.2f%% | %.1f | %s | %s | %s | %s |\n", r.image.c_str(),
-                r.config.c_str(), r.energy, 100 * r.error, r.seconds,
-                std::isnan(r.ratio) ? (r.flat_error >= 0 ? "never" : "")
-                                    : std::to_string(r.reach).substr(0, 5).c_str(),
-                std::isnan(r.ratio) ? "" : std::to_string(r.ratio).substr(0, 4).c_str(),
-                std::isnan(r.flat_error)
-                    ? ""
-                    : (std::to_string(100 * r.flat_error).substr(0, 4) + "% / " +
-                       std::to_string(100 * r.c2f_error).substr(0, 4) + "%")
-                          .c_str(),
-                r.reason.c_str());
+                r.config.c_str(), r.energy, 100 * r.error, r.seconds, reach.c_str(), ratio.c_str(),
+                deadline.c_str(), r.reason.c_str());
   }
   std::printf(
       "\nMedians per configuration (ratio: a run that never reaches flat's energy counts as "
-      "infinitely slow):\n\n| configuration | images | pixel error | seconds | ratio | "
-      "deadline error flat / C2F |\n|---|---|---|---|---|---|\n");
+      "infinitely slow; deadline error: the medians of the two runs' mean errors):\n\n"
+      "| configuration | images | pixel error | seconds | ratio | <= 0.67x | <= 0.4x | deadline "
+      "error flat / C2F |\n|---|---|---|---|---|---|---|---|\n");
   for (const Config& config : configs()) {
     std::vector<double> error, seconds, ratio, flat_error, c2f_error;
     for (const Row& r : rows) {
@@ -259,14 +265,19 @@ int summarize(const std::string& path) {
       }
     }
     if (error.empty()) continue;
-    std::printf("| %s | %zu | %.2f%% | %.1f | %s | %s |\n", config.name.c_str(), error.size(),
-                100 * bench::median(error), bench::median(seconds),
-                ratio.empty() ? "" : std::to_string(bench::median(ratio)).substr(0, 4).c_str(),
-                flat_error.empty()
-                    ? ""
-                    : (std::to_string(100 * bench::median(flat_error)).substr(0, 4) + "% / " +
-                       std::to_string(100 * bench::median(c2f_error)).substr(0, 4) + "%")
-                          .c_str());
+    const auto at_most = [&](double bound) {
+      return std::to_string(
+          std::count_if(ratio.begin(), ratio.end(), [&](double v) { return v <= bound; }));
+    };
+    const std::string deadline = flat_error.empty()
+                                     ? ""
+                                     : fixed(100 * bench::median(flat_error), "%.2f%%") + " / " +
+                                           fixed(100 * bench::median(c2f_error), "%.2f%%");
+    std::printf("| %s | %zu | %.2f%% | %.1f | %s | %s | %s | %s |\n", config.name.c_str(),
+                error.size(), 100 * bench::median(error), bench::median(seconds),
+                ratio.empty() ? "" : fixed(bench::median(ratio), "%.2f").c_str(),
+                ratio.empty() ? "" : at_most(0.67).c_str(),
+                ratio.empty() ? "" : at_most(0.4).c_str(), deadline.c_str());
   }
   return 0;
 }

@@ -54,10 +54,12 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       "(majorise-minimise) or ceres (continuous relaxation)")(
       "start", po::value(&start)->default_value("zero"),
       "greedy's alpha-expansion start: zero (every trial from the all-zero labeling, the "
-      "reference) or current")(
-      "schedule", po::value(&command.schedule)->default_value("paper"),
-      "flat, paper (cp:k,1 cp:k,2 with k = ceil(L/2)), paper-cc, superpixels (slic:16 slic:8), or "
-      "levels such as \"cp:2,1/cc slic:16 flat\"")(
+      "reference) or current")("schedule",
+                               po::value(&command.schedule)->default_value("superpixels"),
+                               "flat, superpixels (slic:16 slic:8 flat: with --aux mm the fastest "
+                               "measured, docs/results.md), paper (the paper's CP(k,2) CP(k,3), k "
+                               "= ceil(L/2): cp:k,1 cp:k,2), paper-cc, or "
+                               "levels such as \"cp:2,1/cc slic:16 flat\"")(
       "lambda", po::value(&command.parameters.lambda)->default_value(1.5),
       "weight of the pairwise part")(
       "theta", po::value(&command.parameters.theta)->default_value(0.005),

@@ -27,7 +27,7 @@ struct SegmentCommand {
   vision::CoopParameters parameters;
   int classes = 10;
   int downscale = 1;
-  std::string schedule = "paper";  ///< parsed once the label count is known
+  std::string schedule = "superpixels";  ///< parsed once the label count is known
   double time_limit = 0.0;
   long max_steps = 0;
   /// Steps without decrease that end a coarse level: 0 = the number of labels (the

@@ -48,6 +48,11 @@ TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[visio
   CHECK_THROWS_WITH(slic_hierarchy(image, {12, 24}), Catch::Contains("region sizes must decrease"));
   CHECK_THROWS_WITH(slic_partition(image, 1), Catch::Contains("region size must be >= 2"));
   CHECK_THROWS_WITH(slic_partition(cv::Mat(), 8), Catch::Contains("non-empty 8-bit 3-channel"));
+  // Regions larger than the image crashed inside OpenCV; they are refused by name.
+  CHECK_THROWS_WITH(
+      slic_partition(image, 49),
+      Catch::Contains("region size 49 is larger than the 64x48 image's shorter side"));
+  CHECK(slic_partition(image, 48).num_variables() == 64 * 48);
 }
 
 TEST_CASE("partition pictures colour the largest groups and group means", "[vision][render]") {

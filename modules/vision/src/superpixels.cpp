@@ -1,6 +1,7 @@
 #include "c2f/vision/superpixels.hpp"
 #include "c2f/core/enum_names.hpp"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/slic.hpp>
 #include <stdexcept>
@@ -13,6 +14,13 @@ DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicO
     throw std::invalid_argument("slic_partition: the image must be non-empty 8-bit 3-channel");
   }
   if (region_size < 2) throw std::invalid_argument("slic_partition: region size must be >= 2");
+  // OpenCV's SLIC reads out of bounds for regions much larger than the image; a region larger
+  // than the image's shorter side is refused.
+  if (region_size > std::min(image.cols, image.rows)) {
+    throw std::invalid_argument("slic_partition: region size " + std::to_string(region_size) +
+                                " is larger than the " + std::to_string(image.cols) + "x" +
+                                std::to_string(image.rows) + " image's shorter side");
+  }
   cv::Mat lab;
   cv::cvtColor(image, lab, cv::COLOR_BGR2Lab);
   const int algorithm =

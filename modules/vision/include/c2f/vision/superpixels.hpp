@@ -22,7 +22,7 @@ struct SlicOptions {
 
 /// Superpixels of an 8-bit colour image with the given region size (pixels per side), as a
 /// partition of its pixels (v = y * width + x). Throws std::invalid_argument for an empty or
-/// non-8-bit-3-channel image or region_size < 2.
+/// non-8-bit-3-channel image, region_size < 2, or a region larger than the image's shorter side.
 DensePartition slic_partition(const cv::Mat& image, int region_size,
                               const SlicOptions& options = {});
 
