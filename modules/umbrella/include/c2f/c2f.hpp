@@ -68,3 +68,4 @@
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/superpixels.hpp"
+#include "c2f/vision/synthetic_problem.hpp"

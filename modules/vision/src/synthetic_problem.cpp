@@ -1,4 +1,4 @@
-#include "synthetic_problem.hpp"
+#include "c2f/vision/synthetic_problem.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace c2f::examples {
+namespace c2f::vision {
 
 SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
   if (spec.shape.width < 2 || spec.shape.height < 2) {
@@ -61,12 +61,6 @@ SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
   return {std::move(truth), std::move(energy)};
 }
 
-double label_error(std::span<const Label> labeling, std::span<const Label> truth) {
-  std::size_t wrong = 0;
-  for (std::size_t v = 0; v < truth.size(); ++v) wrong += labeling[v] != truth[v];
-  return static_cast<double>(wrong) / static_cast<double>(truth.size());
-}
-
 void write_label_pgm(const std::string& path, std::span<const Label> labeling, GridShape shape,
                      int num_labels) {
   std::ofstream out(path, std::ios::binary);
@@ -78,4 +72,4 @@ void write_label_pgm(const std::string& path, std::span<const Label> labeling, G
   if (!out) throw std::runtime_error("writing '" + path + "' failed");
 }
 
-}  // namespace c2f::examples
+}  // namespace c2f::vision

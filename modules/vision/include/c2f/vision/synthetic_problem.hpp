@@ -1,16 +1,18 @@
 #pragma once
 // A synthetic labeling problem with known answer: a piecewise-constant label image seen
 // through Gaussian noise, restored with a truncated-quadratic unary and a truncated-linear
-// smoothness term on the 4-connected grid.
+// smoothness term on the 4-connected grid: the problem of c2f-synthetic, the driver's smallest
+// demo. Its error is pixel_error (c2f/vision/segmentation/segmentation_io.hpp).
 
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
-namespace c2f::examples {
+namespace c2f::vision {
 
 struct SyntheticSpec {
   GridShape shape{160, 120};
@@ -30,12 +32,9 @@ struct SyntheticProblem {
 /// Throws std::invalid_argument naming the field when the spec is unusable.
 SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec);
 
-/// Fraction of pixels whose label differs from the truth.
-double label_error(std::span<const Label> labeling, std::span<const Label> truth);
-
 /// Writes the labeling as an 8-bit binary PGM, labels scaled to 0..255. Throws
 /// std::runtime_error naming the path on failure.
 void write_label_pgm(const std::string& path, std::span<const Label> labeling, GridShape shape,
                      int num_labels);
 
-}  // namespace c2f::examples
+}  // namespace c2f::vision
