@@ -86,8 +86,8 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
           double time_limit, const std::string& trace_path) {
   const int L = scene.num_labels();
   const int K = problem.coop.num_classes();
-  SegmentationLevels levels(parse_segmentation_schedule(config.schedule, L), scene.shape(),
-                            slic_source(scene.image));
+  ScheduleProvider levels(parse_segmentation_schedule(config.schedule, L), scene.shape(),
+                          slic_source(scene.image));
   const std::size_t sweep = config.potts ? static_cast<std::size_t>(L)
                                          : CoopSolver::steps_per_sweep(config.strategy, L, K);
   Options options;

@@ -48,7 +48,7 @@ Schedule schedule_for(const examples::SegmentCommand& command, int num_labels) {
 }
 
 Summary solve(const examples::SegmentCommand& command, const SegmentationProblem& problem,
-              SegmentationLevels& levels, const Options& options, const Observer& observer) {
+              ScheduleProvider& levels, const Options& options, const Observer& observer) {
   if (command.method == examples::SegmentMethod::potts) {
     ExpansionSolver<> solver;
     return coarse_to_fine(problem.potts, levels, solver, options, observer);
@@ -59,7 +59,7 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
 
 void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
                    const SegmentationScene& scene, const TimedProblem& built,
-                   const SegmentationLevels& levels, const Summary& summary,
+                   const ScheduleProvider& levels, const Summary& summary,
                    const std::optional<double>& error) {
   std::ofstream report((out / "summary.txt").string());
   report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
@@ -70,11 +70,11 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
     if (command.coop.strategy == AuxStrategy::greedy)
       report << " (expansion from " << to_string(command.coop.start) << ")";
   }
-  report << ", schedule " << levels.schedule().schedule().to_string() << "\nlambda "
+  report << ", schedule " << levels.schedule().to_string() << "\nlambda "
          << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
          << command.parameters.alpha << ", " << command.classes << " edge classes\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n";
-  for (const LevelReport& level : levels.schedule().reports()) {
+  for (const LevelReport& level : levels.reports()) {
     report << "partition " << level.level << ": " << level.num_groups << " groups in "
            << level.seconds << " s\n";
   }
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(command.out_dir);
     const TimedProblem built = build_problem(scene, command);
 
-    SegmentationLevels levels(schedule, scene.shape(), slic_source(scene.image));
+    ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     std::ofstream trace_file = open_trace_file(command.trace);
     TraceWriter trace(trace_file, scene.truth.empty() ? TraceWriter::ErrorFunction{}
                                                       : pixel_error_function(scene));

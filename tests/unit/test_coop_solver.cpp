@@ -10,6 +10,7 @@
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 #include "support/random_models.hpp"
 
@@ -142,7 +143,7 @@ TEST_CASE("cooperative cuts run coarse to fine on colour-passing levels",
   Rng rng(44);
   const CoopEnergy energy = region_coop(rng, 12, 10, 3, 4, true);
   for (const AuxStrategy strategy : {AuxStrategy::greedy, AuxStrategy::mm}) {
-    SegmentationLevels levels(parse_segmentation_schedule("paper", 3), {12, 10});
+    ScheduleProvider levels(parse_segmentation_schedule("paper", 3), {12, 10});
     CoopSolver solver(options_for(strategy, ExpansionStart::current));
     Options options;
     options.plateau_steps = {3};
@@ -158,6 +159,6 @@ TEST_CASE("cooperative cuts run coarse to fine on colour-passing levels",
     CHECK(summary.levels.size() >= 2);
     CHECK(summary.levels[0].num_variables < energy.num_variables());
     CHECK(summary.energy == energy.evaluate(summary.labeling));
-    CHECK(levels.schedule().reports().front().level == "cp:2,1");
+    CHECK(levels.reports().front().level == "cp:2,1");
   }
 }

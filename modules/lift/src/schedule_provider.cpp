@@ -27,20 +27,6 @@ ScheduleProvider::~ScheduleProvider() = default;
 ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
 ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
 
-std::optional<DensePartition> ScheduleProvider::next(const PairwiseEnergy& energy) {
-  const auto start = std::chrono::steady_clock::now();
-  if (viewed_ != &energy) {
-    view_ = lifting_view(energy);
-    viewed_ = &energy;
-  }
-  std::optional<DensePartition> partition = next(*view_);
-  if (!reports_.empty() && partition) {  // the view is part of building the level
-    reports_.back().seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  return partition;
-}
-
 std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) {
   require_grid_size(energy.num_variables, shape_, "ScheduleProvider");
   const auto start = std::chrono::steady_clock::now();

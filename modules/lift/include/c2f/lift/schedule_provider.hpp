@@ -1,6 +1,8 @@
 #pragma once
 // ScheduleProvider: the PartitionProvider that builds a schedule's levels on demand.
 
+#include <chrono>
+#include <concepts>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -46,13 +48,31 @@ class ScheduleProvider {
   ScheduleProvider(ScheduleProvider&&) noexcept;
   ScheduleProvider& operator=(ScheduleProvider&&) noexcept;
 
-  /// The next level's partition, or std::nullopt after the last coarse level. The first call
-  /// resolves auto levels from `energy`. Throws std::invalid_argument naming the level when it
-  /// cannot be built for this energy (grid size, N_L above the label count).
-  std::optional<DensePartition> next(const PairwiseEnergy& energy);
-  /// The same for an energy of any kind, seen through its LiftingView (which must describe the
-  /// same energy on every call).
+  /// The next level's partition, or std::nullopt after the last coarse level, for an energy
+  /// of any kind seen through its LiftingView (which must describe the same energy on every
+  /// call). The first call resolves auto levels from it. Throws std::invalid_argument naming
+  /// the level when it cannot be built for this energy (grid size, N_L above the label count).
   std::optional<DensePartition> next(const LiftingView& energy);
+  /// The same for any energy with a `lifting_view(energy)` (a PairwiseEnergy here, the
+  /// cooperative-cut energy beside its type): the view is built on the first call for an
+  /// energy and kept, its cost counted in that level's report.
+  template <class E>
+  requires requires(const E& e) {
+    { lifting_view(e) } -> std::same_as<LiftingView>;
+  }
+  std::optional<DensePartition> next(const E& energy) {
+    const auto start = std::chrono::steady_clock::now();
+    if (viewed_ != static_cast<const void*>(&energy)) {
+      view_ = lifting_view(energy);
+      viewed_ = &energy;
+    }
+    std::optional<DensePartition> partition = next(*view_);
+    if (partition) {
+      reports_.back().seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    return partition;
+  }
 
   /// One report per level built so far.
   [[nodiscard]] const std::vector<LevelReport>& reports() const noexcept { return reports_; }
@@ -66,7 +86,7 @@ class ScheduleProvider {
   Schedule schedule_;
   GridShape shape_;
   std::unique_ptr<detail::LevelBuilder> builder_;
-  const PairwiseEnergy* viewed_ = nullptr;  ///< the pairwise energy view_ shows
+  const void* viewed_ = nullptr;  ///< the energy view_ shows
   std::optional<LiftingView> view_;
   bool started_ = false;
   std::vector<LevelSpec> levels_;

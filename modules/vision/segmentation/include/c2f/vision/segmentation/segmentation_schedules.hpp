@@ -1,15 +1,11 @@
 #pragma once
-// Schedules for segmentation: the application's presets, and a provider that builds schedule
-// levels for the cooperative-cut energy (through its LiftingView) and for the Potts baseline.
+// Schedules for segmentation: the application's presets. ScheduleProvider builds their levels
+// for the cooperative-cut energy (through lifting_view(CoopEnergy)) and the Potts baseline.
 
-#include <optional>
 #include <string_view>
 #include <vector>
 
-#include "c2f/core/grid.hpp"
-#include "c2f/core/pairwise_energy.hpp"
-#include "c2f/lift/schedule_provider.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/lift/schedule.hpp"
 
 namespace c2f::vision {
 
@@ -24,29 +20,5 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels);
 
 /// Schedule::parse with the segmentation presets for num_labels labels.
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels);
-
-/// ScheduleProvider for segmentation energies: the cooperative-cut energy is seen through
-/// lifting_view(CoopEnergy) (built once per energy), a PairwiseEnergy as usual.
-class SegmentationLevels {
- public:
-  SegmentationLevels(Schedule schedule, GridShape shape, SuperpixelSource superpixels = {})
-      : levels_(std::move(schedule), shape, std::move(superpixels)) {}
-
-  std::optional<DensePartition> next(const CoopEnergy& energy) {
-    if (viewed_ != &energy) {
-      view_ = lifting_view(energy);
-      viewed_ = &energy;
-    }
-    return levels_.next(*view_);
-  }
-  std::optional<DensePartition> next(const PairwiseEnergy& energy) { return levels_.next(energy); }
-
-  [[nodiscard]] const ScheduleProvider& schedule() const noexcept { return levels_; }
-
- private:
-  ScheduleProvider levels_;
-  const CoopEnergy* viewed_ = nullptr;
-  std::optional<LiftingView> view_;
-};
 
 }  // namespace c2f::vision
