@@ -1,7 +1,6 @@
 #include "c2f/vision/segmentation/coop_energy.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <map>
 #include <stdexcept>
