@@ -1,7 +1,9 @@
 // Max-flow backends on 4-connected grids (64x64, 512x512, 1024x1024): building the graph once
-// and solving it (capacities reset each time) are measured separately. The problem is a
-// segmentation-like cut: terminal capacities from a smooth random field plus noise,
-// neighbour capacities 1.
+// and solving it (capacities reset each time, every solve from zero flow) are measured
+// separately, and so are re-solves after changing 1% or 10% of the nodes' terminal capacities
+// (the graph alternates between two capacity sets; DynamicMaxFlow resumes from the previous
+// flow, the others solve from zero). The problem is a segmentation-like cut: terminal
+// capacities from a smooth random field plus noise, neighbour capacities 1.
 
 #include <benchmark/benchmark.h>
 
@@ -11,6 +13,7 @@
 #include <random>
 
 #include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/core/grid.hpp"
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
 #include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
@@ -24,7 +27,23 @@ struct GridFlow {
   std::size_t nodes;
   std::vector<FlowEdge> edges;
   FlowCapacities caps;
+  FlowCapacities changed_1, changed_10;  ///< caps with 1% / 10% of the terminal pairs redrawn
 };
+
+FlowCapacities with_changed_terminals(const FlowCapacities& caps, double share,
+                                      std::uint64_t seed) {
+  FlowCapacities changed = caps;
+  std::mt19937_64 rng(seed);
+  std::bernoulli_distribution pick(share);
+  std::normal_distribution<double> field(0.0, 3.0);
+  for (std::size_t i = 0; i < changed.source.size(); ++i) {
+    if (!pick(rng)) continue;
+    const double value = field(rng);
+    changed.source[i] = std::max(value, 0.0);
+    changed.sink[i] = std::max(-value, 0.0);
+  }
+  return changed;
+}
 
 const GridFlow& grid_flow(std::size_t side) {
   static std::map<std::size_t, GridFlow> cache;
@@ -46,6 +65,8 @@ const GridFlow& grid_flow(std::size_t side) {
   }
   std::fill(flow.caps.forward.begin(), flow.caps.forward.end(), 1.0);
   std::fill(flow.caps.backward.begin(), flow.caps.backward.end(), 1.0);
+  flow.changed_1 = with_changed_terminals(flow.caps, 0.01, side + 1);
+  flow.changed_10 = with_changed_terminals(flow.caps, 0.10, side + 2);
   return flow;
 }
 
@@ -65,10 +86,45 @@ void BM_Solve(benchmark::State& state) {
   Backend backend;
   backend.build(flow.nodes, flow.edges);
   double value = 0.0;
-  for (auto _ : state) benchmark::DoNotOptimize(value = backend.solve(flow.caps));
+  for (auto _ : state) {
+    if constexpr (ReusingMaxFlow<Backend>) backend.forget_flow();
+    benchmark::DoNotOptimize(value = backend.solve(flow.caps));
+  }
   state.counters["flow"] = value;
 }
 
+/// One re-solve per iteration, alternating between the base capacities and a copy with
+/// state.range(1)% of the terminal pairs changed.
+template <class Backend>
+void BM_Resolve(benchmark::State& state) {
+  const GridFlow& flow = grid_flow(static_cast<std::size_t>(state.range(0)));
+  const FlowCapacities& changed = state.range(1) == 1 ? flow.changed_1 : flow.changed_10;
+  Backend backend;
+  backend.build(flow.nodes, flow.edges);
+  backend.solve(flow.caps);
+  bool use_changed = true;
+  double value = 0.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(value = backend.solve(use_changed ? changed : flow.caps));
+    use_changed = !use_changed;
+  }
+  state.counters["flow"] = value;
+}
+
+#define C2F_RESOLVE_ARGS ->Args({512, 1})->Args({512, 10})->Args({1024, 1})->Args({1024, 10})
+
+BENCHMARK_TEMPLATE(BM_Build, DynamicMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Solve, DynamicMaxFlow)
+    ->Arg(64)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Resolve, DynamicMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Resolve, BoostMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Build, BoostMaxFlow)
     ->Arg(64)
     ->Arg(512)
@@ -90,6 +146,7 @@ BENCHMARK_TEMPLATE(BM_Solve, KolmogorovMaxFlow)
     ->Arg(512)
     ->Arg(1024)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Resolve, KolmogorovMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

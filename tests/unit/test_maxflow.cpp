@@ -82,16 +82,16 @@ TEST_CASE("max-flow backends agree on larger random graphs", "[maxflow]") {
   for (int trial = 0; trial < 40; ++trial) {
     const auto problem = random_flow_problem(rng, 500, 2000);
     const double boost_flow = solve_and_check_cut<BoostMaxFlow>(problem);
+    CHECK(close_relative(boost_flow, solve_and_check_cut<DynamicMaxFlow>(problem), 1e-9));
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
     CHECK(close_relative(boost_flow, solve_and_check_cut<KolmogorovMaxFlow>(problem), 1e-9));
-#else
-    CHECK(boost_flow >= 0.0);
 #endif
   }
 }
 
-TEST_CASE("max-flow backends validate topology and capacities", "[maxflow][validation]") {
-  BoostMaxFlow flow;
+TEMPLATE_TEST_CASE("max-flow backends validate topology and capacities", "[maxflow][validation]",
+                   C2F_MAXFLOW_BACKENDS) {
+  TestType flow;
   const std::vector<FlowEdge> self_loop{{1, 1}};
   CHECK_THROWS_WITH(flow.build(3, self_loop),
                     Catch::Contains("edge 0 (1, 1) must join two different nodes < 3"));
@@ -107,4 +107,124 @@ TEST_CASE("max-flow backends validate topology and capacities", "[maxflow][valid
   caps.forward[0] = -1.0;
   CHECK_THAT(check_capacities(caps, 2, 1),
              Catch::Contains("forward[0] = -1.000000 is not a finite capacity >= 0"));
+}
+
+namespace {
+
+/// Changes a share of the capacities of `caps` (terminal pairs and edges), drawn like
+/// random_flow_problem's, with integers when `integral` (exact in doubles).
+void change_capacities(Rng& rng, FlowCapacities& caps, double share, bool integral) {
+  std::bernoulli_distribution pick(share);
+  std::bernoulli_distribution zero(0.3);
+  std::uniform_real_distribution<double> real(0.0, 4.0);
+  std::uniform_int_distribution<int> whole(0, 6);
+  auto draw = [&] { return zero(rng) ? 0.0 : integral ? whole(rng) : real(rng); };
+  for (std::size_t i = 0; i < caps.source.size(); ++i) {
+    if (!pick(rng)) continue;
+    caps.source[i] = draw();
+    caps.sink[i] = draw();
+  }
+  for (std::size_t e = 0; e < caps.forward.size(); ++e) {
+    if (!pick(rng)) continue;
+    caps.forward[e] = draw();
+    caps.backward[e] = draw();
+  }
+}
+
+std::vector<char> source_set(const auto& backend) {
+  std::vector<char> in_source(backend.num_nodes());
+  for (std::size_t i = 0; i < in_source.size(); ++i)
+    in_source[i] = backend.in_source_set(static_cast<FlowNode>(i));
+  return in_source;
+}
+
+}  // namespace
+
+TEST_CASE("dynamic max-flow: re-solves after capacity changes equal solves from zero flow",
+          "[maxflow][dynamic]") {
+  Rng rng(2024);
+  for (const double share : {0.01, 0.1, 0.5, 1.0}) {
+    for (int trial = 0; trial < 12; ++trial) {
+      auto problem = random_flow_problem(rng, 400, 1600);
+      DynamicMaxFlow dynamic;
+      dynamic.build(problem.num_nodes, problem.edges);
+      BoostMaxFlow boost;
+      boost.build(problem.num_nodes, problem.edges);
+      dynamic.solve(problem.caps);
+      for (int round = 0; round < 8; ++round) {
+        change_capacities(rng, problem.caps, share, false);
+        INFO("share " << share << ", trial " << trial << ", round " << round);
+        const double resumed = dynamic.solve(problem.caps);
+        CHECK(dynamic.last_solve().reused);
+        const double fresh = boost.solve(problem.caps);
+        CHECK(close_relative(resumed, fresh, 1e-9));
+        CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
+                             resumed, 1e-9));
+      }
+    }
+  }
+}
+
+TEST_CASE(
+    "dynamic max-flow: with integral capacities a re-solve finds exactly the source set "
+    "of a solve from zero flow",
+    "[maxflow][dynamic]") {
+  // The nodes reachable from the source in the residual graph of any maximum flow are the same
+  // set, so with exact arithmetic every backend must report it.
+  Rng rng(77);
+  for (int trial = 0; trial < 20; ++trial) {
+    auto problem = random_flow_problem(rng, 300, 1200);
+    change_capacities(rng, problem.caps, 1.0, true);
+    DynamicMaxFlow dynamic, fresh;
+    dynamic.build(problem.num_nodes, problem.edges);
+    fresh.build(problem.num_nodes, problem.edges);
+    BoostMaxFlow boost;
+    boost.build(problem.num_nodes, problem.edges);
+    for (int round = 0; round < 10; ++round) {
+      INFO("trial " << trial << ", round " << round);
+      const double resumed = dynamic.solve(problem.caps);
+      fresh.forget_flow();
+      CHECK(fresh.solve(problem.caps) == resumed);
+      CHECK_FALSE(fresh.last_solve().reused);
+      CHECK(boost.solve(problem.caps) == resumed);
+      CHECK(source_set(dynamic) == source_set(boost));
+      CHECK(source_set(fresh) == source_set(boost));
+      change_capacities(rng, problem.caps, round % 2 == 0 ? 0.05 : 0.5, true);
+    }
+  }
+}
+
+TEST_CASE("dynamic max-flow: tiny graphs, every re-solve equals the brute-force minimum cut",
+          "[maxflow][dynamic][brute-force]") {
+  Rng rng(5150);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 9)(rng);
+    auto problem =
+        random_flow_problem(rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
+    DynamicMaxFlow dynamic;
+    dynamic.build(problem.num_nodes, problem.edges);
+    for (int round = 0; round < 6; ++round) {
+      INFO("trial " << trial << ", round " << round);
+      const double flow = dynamic.solve(problem.caps);
+      CHECK(close_relative(flow, brute_force_min_cut(problem), 1e-9));
+      change_capacities(rng, problem.caps, 0.3, false);
+    }
+  }
+}
+
+TEST_CASE("dynamic max-flow: an unchanged re-solve touches nothing and keeps the cut",
+          "[maxflow][dynamic]") {
+  Rng rng(8);
+  const auto problem = random_flow_problem(rng, 200, 800);
+  DynamicMaxFlow dynamic;
+  dynamic.build(problem.num_nodes, problem.edges);
+  const double flow = dynamic.solve(problem.caps);
+  const auto cut = source_set(dynamic);
+  CHECK(dynamic.solve(problem.caps) == flow);
+  CHECK(dynamic.last_solve().reused);
+  CHECK(dynamic.last_solve().changed_nodes == 0);
+  CHECK(dynamic.last_solve().changed_edges == 0);
+  CHECK(dynamic.last_solve().augmentations == 0);
+  CHECK(source_set(dynamic) == cut);
+  CHECK(dynamic.memory_bytes() == DynamicMaxFlow::memory_bytes_for(200, 800));
 }
