@@ -53,7 +53,8 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
   std::ofstream report((out / "summary.txt").string());
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
-         << ", solver " << to_string(command.solver.kind) << "\n"
+         << ", solver " << to_string(command.solver.kind) << ", max-flow "
+         << to_string(command.solver.maxflow) << "\n"
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
   for (const LevelReport& level : levels.reports()) {

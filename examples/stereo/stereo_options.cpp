@@ -16,7 +16,8 @@ namespace c2f::examples {
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
   std::string schedule = "paper", solver = "expansion", smoothness = "tsgo_step",
-              label_order = "sequential";
+              label_order = "sequential", maxflow = "dynamic";
+  double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
   po::options_description visible(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -40,6 +41,13 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "allow-non-refining", po::bool_switch(&command.allow_non_refining),
       "accept levels that do not refine each other (labels handed down by majority vote)")(
       "solver", po::value(&solver)->default_value("expansion"), "expansion, swap, lbp or icm")(
+      "maxflow", po::value(&maxflow)->default_value("dynamic"),
+      "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move from "
+      "its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov (GPL-3 "
+      "libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")(
+      "graph-memory", po::value(&graph_memory_gib)->default_value(graph_memory_gib),
+      "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a graph "
+      "solved from zero flow; 0: no recycling)")(
       "label-order", po::value(&label_order)->default_value("sequential"),
       "order of expansion / swap moves (icm: of the pixels): sequential (0, 1, ...), random, or "
       "frequency (labels of most variables first, counted when each level starts)")(
@@ -106,6 +114,17 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
   if (const std::string problem = command.solver.validate(); !problem.empty())
     throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
+  command.solver.maxflow =
+      with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
+  if (!maxflow_available(command.solver.maxflow)) {
+    throw std::invalid_argument("--maxflow " + maxflow +
+                                ": not in this build (configure with "
+                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
+  }
+  if (!(graph_memory_gib >= 0.0 && graph_memory_gib <= 1 << 20))
+    throw std::invalid_argument("--graph-memory: must be a number of GiB in [0, 2^20]");
+  command.solver.graph_memory_limit =
+      static_cast<std::size_t>(graph_memory_gib * static_cast<double>(std::size_t{1} << 30));
   command.tsgo.smoothness =
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
   command.schedule =

@@ -2,6 +2,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <tuple>
+
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "support/backends.hpp"
@@ -171,4 +174,112 @@ TEST_CASE("frequency order visits the labels the start labeling uses most first"
   const std::vector<std::pair<Label, Label>> expected{{0, 2}, {2, 3}, {0, 3},
                                                       {1, 2}, {0, 1}, {1, 3}};
   CHECK(pairs == expected);
+}
+
+namespace {
+
+/// A grid energy with integer unaries and weights, so every move's capacities are exact in
+/// doubles and every minimum cut (the source set of the residual graph) is the same for any
+/// backend and any flow history.
+PairwiseEnergy integral_grid_energy(Rng& rng, std::size_t side, int num_labels,
+                                    PairwiseTerm term) {
+  std::uniform_int_distribution<int> unary(0, 9);
+  std::uniform_int_distribution<int> weight(0, 4);
+  std::vector<double> unaries(side * side * static_cast<std::size_t>(num_labels));
+  for (double& u : unaries) u = unary(rng);
+  return make_grid_energy({side, side}, Connectivity::four, num_labels, std::move(unaries),
+                          std::move(term), [&](VariableIndex, VariableIndex) { return weight(rng); });
+}
+
+/// Runs `steps` steps of a solver and returns every labeling it passed through. Counts the
+/// steps that were solved on their move's own graph (recycled) and those that could have been:
+/// a move (label or pair) gets its own graph (plain or QPBO) on its second visit of that graph,
+/// so every visit from the third on.
+template <class Solver>
+std::vector<Labeling> labelings_of_run(Solver& solver, const PairwiseEnergy& energy, int steps,
+                                       std::size_t* recycled_steps = nullptr,
+                                       std::size_t* repeated_moves = nullptr) {
+  solver.bind(energy, Labeling(energy.num_variables(), 0));
+  std::vector<Labeling> labelings;
+  std::map<std::tuple<Label, Label, bool>, int> visits;
+  for (int s = 0; s < steps; ++s) {
+    solver.step();
+    const MoveStep& step = solver.last_step();
+    if (recycled_steps != nullptr) *recycled_steps += step.recycled;
+    if (repeated_moves != nullptr)
+      *repeated_moves += ++visits[{step.alpha, step.beta, step.used_qpbo}] >= 3;
+    labelings.emplace_back(solver.labeling().begin(), solver.labeling().end());
+  }
+  return labelings;
+}
+
+}  // namespace
+
+/// A TSGO-like step term with integer costs (0, 1, 4 for |a - b| = 0, 1, >= 2): not a metric,
+/// so expansion moves need QPBO, and exact in doubles.
+PairwiseTerm integral_step_term(int num_labels) {
+  std::vector<double> table(static_cast<std::size_t>(num_labels * num_labels));
+  for (int a = 0; a < num_labels; ++a) {
+    for (int b = 0; b < num_labels; ++b) {
+      const int gap = std::abs(a - b);
+      table[static_cast<std::size_t>(a * num_labels + b)] = gap == 0 ? 0.0 : gap == 1 ? 1.0 : 4.0;
+    }
+  }
+  return PairwiseTerm::table(num_labels, std::move(table));
+}
+
+TEST_CASE("recycled and shared move graphs make exactly the moves of graphs solved from zero flow",
+          "[expansion][swap][recycling]") {
+  Rng rng(99);
+  for (int trial = 0; trial < 9; ++trial) {
+    const int num_labels = 3 + trial % 4;
+    const PairwiseTerm terms[] = {PairwiseTerm::potts(), PairwiseTerm::truncated_linear(2.0),
+                                  integral_step_term(num_labels)};
+    const PairwiseEnergy energy = integral_grid_energy(rng, 12, num_labels, terms[trial % 3]);
+    INFO("trial " << trial);
+    ExpansionOptions recycling;  // the default: every label has its own graphs
+    ExpansionOptions shared;     // one graph, re-solved from the previous move's flow
+    shared.graph_memory_limit = 0;
+    std::size_t recycled = 0, repeated = 0;
+    std::size_t recycled_with_shared = 0;
+    ExpansionSolver<DynamicMaxFlow> with_recycling(recycling);
+    ExpansionSolver<DynamicMaxFlow> with_shared(shared);
+    ExpansionSolver<BoostMaxFlow> boost;  // every move from zero flow
+    const int steps = 6 * num_labels;
+    const auto recycled_run =
+        labelings_of_run(with_recycling, energy, steps, &recycled, &repeated);
+    CHECK(recycled_run == labelings_of_run(with_shared, energy, steps, &recycled_with_shared));
+    CHECK(recycled_run == labelings_of_run(boost, energy, steps));
+    CHECK(recycled == repeated);
+    CHECK(repeated >= static_cast<std::size_t>(steps - 4 * num_labels));
+    CHECK(recycled_with_shared == 0);
+    if (trial % 3 != 2) {  // swap needs a semi-metric
+      std::size_t swap_recycled = 0, swap_repeated = 0;
+      SwapSolver<DynamicMaxFlow> swap_recycling(recycling);
+      SwapSolver<BoostMaxFlow> swap_boost;
+      const auto swap_run =
+          labelings_of_run(swap_recycling, energy, 2 * steps, &swap_recycled, &swap_repeated);
+      CHECK(swap_run == labelings_of_run(swap_boost, energy, 2 * steps));
+      const auto pairs = static_cast<std::size_t>(num_labels * (num_labels - 1) / 2);
+      CHECK(swap_recycled == swap_repeated);
+      CHECK(swap_repeated == static_cast<std::size_t>(2 * steps) - 2 * pairs);  // swap: no QPBO
+    }
+  }
+}
+
+TEST_CASE("the graph memory limit bounds how many labels recycle their graphs",
+          "[expansion][recycling]") {
+  Rng rng(3);
+  const PairwiseEnergy energy = integral_grid_energy(rng, 10, 5, PairwiseTerm::potts());
+  // Potts moves are submodular: one plain graph per label, with the problem it holds (d, p).
+  const std::size_t per_label =
+      DynamicMaxFlow::memory_bytes_for(100, 180) + (100 + 180) * sizeof(double);
+  for (const std::size_t labels_that_fit : {0, 1, 2, 5}) {
+    ExpansionOptions options;
+    options.graph_memory_limit = labels_that_fit * per_label + per_label / 2;
+    ExpansionSolver<DynamicMaxFlow> solver(options);
+    std::size_t recycled = 0;
+    labelings_of_run(solver, energy, 15, &recycled);  // three sweeps of 5 labels
+    CHECK(recycled == labels_that_fit);
+  }
 }

@@ -152,23 +152,21 @@ TEST_CASE("dynamic max-flow: re-solves after capacity changes equal solves from 
       boost.build(problem.num_nodes, problem.edges);
       dynamic.solve(problem.caps);
       for (int round = 0; round < 8; ++round) {
+        const FlowCapacities before = problem.caps;
         change_capacities(rng, problem.caps, share, false);
         INFO("share " << share << ", trial " << trial << ", round " << round);
-        const double resumed = dynamic.solve(problem.caps);
+        resolve_with(dynamic, before, problem.caps);
         CHECK(dynamic.last_solve().reused);
-        const double fresh = boost.solve(problem.caps);
-        CHECK(close_relative(resumed, fresh, 1e-9));
-        CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
-                             resumed, 1e-9));
+        const double resumed = cut_capacity(problem.caps, problem.edges, source_set(dynamic));
+        CHECK(close_relative(resumed, boost.solve(problem.caps), 1e-9));
       }
     }
   }
 }
 
-TEST_CASE(
-    "dynamic max-flow: with integral capacities a re-solve finds exactly the source set "
-    "of a solve from zero flow",
-    "[maxflow][dynamic]") {
+TEST_CASE("dynamic max-flow: with integral capacities a re-solve finds exactly the source set "
+          "of a solve from zero flow",
+          "[maxflow][dynamic]") {
   // The nodes reachable from the source in the residual graph of any maximum flow are the same
   // set, so with exact arithmetic every backend must report it.
   Rng rng(77);
@@ -180,16 +178,18 @@ TEST_CASE(
     fresh.build(problem.num_nodes, problem.edges);
     BoostMaxFlow boost;
     boost.build(problem.num_nodes, problem.edges);
+    dynamic.solve(problem.caps);
     for (int round = 0; round < 10; ++round) {
       INFO("trial " << trial << ", round " << round);
-      const double resumed = dynamic.solve(problem.caps);
-      fresh.forget_flow();
-      CHECK(fresh.solve(problem.caps) == resumed);
+      const double flow = boost.solve(problem.caps);
+      CHECK(fresh.solve(problem.caps) == flow);
       CHECK_FALSE(fresh.last_solve().reused);
-      CHECK(boost.solve(problem.caps) == resumed);
+      CHECK(cut_capacity(problem.caps, problem.edges, source_set(dynamic)) == flow);
       CHECK(source_set(dynamic) == source_set(boost));
       CHECK(source_set(fresh) == source_set(boost));
+      const FlowCapacities before = problem.caps;
       change_capacities(rng, problem.caps, round % 2 == 0 ? 0.05 : 0.5, true);
+      resolve_with(dynamic, before, problem.caps);
     }
   }
 }
@@ -199,32 +199,42 @@ TEST_CASE("dynamic max-flow: tiny graphs, every re-solve equals the brute-force 
   Rng rng(5150);
   for (int trial = 0; trial < 200; ++trial) {
     const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 9)(rng);
-    auto problem =
-        random_flow_problem(rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
+    auto problem = random_flow_problem(
+        rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
     DynamicMaxFlow dynamic;
     dynamic.build(problem.num_nodes, problem.edges);
+    dynamic.solve(problem.caps);
     for (int round = 0; round < 6; ++round) {
       INFO("trial " << trial << ", round " << round);
-      const double flow = dynamic.solve(problem.caps);
-      CHECK(close_relative(flow, brute_force_min_cut(problem), 1e-9));
+      CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
+                           brute_force_min_cut(problem), 1e-9));
+      const FlowCapacities before = problem.caps;
       change_capacities(rng, problem.caps, 0.3, false);
+      resolve_with(dynamic, before, problem.caps);
     }
   }
 }
 
-TEST_CASE("dynamic max-flow: an unchanged re-solve touches nothing and keeps the cut",
+TEST_CASE("dynamic max-flow: an unchanged re-solve does no work; a copy resumes like the original",
           "[maxflow][dynamic]") {
   Rng rng(8);
-  const auto problem = random_flow_problem(rng, 200, 800);
+  auto problem = random_flow_problem(rng, 200, 800);
   DynamicMaxFlow dynamic;
   dynamic.build(problem.num_nodes, problem.edges);
-  const double flow = dynamic.solve(problem.caps);
+  dynamic.solve(problem.caps);
   const auto cut = source_set(dynamic);
-  CHECK(dynamic.solve(problem.caps) == flow);
+  CHECK(resolve_with(dynamic, problem.caps, problem.caps) == 0);
   CHECK(dynamic.last_solve().reused);
-  CHECK(dynamic.last_solve().changed_nodes == 0);
-  CHECK(dynamic.last_solve().changed_edges == 0);
   CHECK(dynamic.last_solve().augmentations == 0);
   CHECK(source_set(dynamic) == cut);
+  DynamicMaxFlow copy(dynamic);
+  const FlowCapacities before = problem.caps;
+  change_capacities(rng, problem.caps, 0.2, false);
+  CHECK(resolve_with(copy, before, problem.caps) > 0);
+  resolve_with(dynamic, before, problem.caps);
+  CHECK(source_set(copy) == source_set(dynamic));
   CHECK(dynamic.memory_bytes() == DynamicMaxFlow::memory_bytes_for(200, 800));
+  DynamicMaxFlow unsolved;
+  unsolved.build(2, std::vector<FlowEdge>{{0, 1}});
+  CHECK_THROWS_WITH(unsolved.resolve(), Catch::Contains("solve() first"));
 }

@@ -24,6 +24,24 @@ SolverKind solver_kind_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "solver");
 }
 
+std::string_view to_string(MaxFlowKind kind) {
+  switch (kind) {
+    case MaxFlowKind::dynamic:
+      return "dynamic";
+    case MaxFlowKind::boost:
+      return "boost";
+    case MaxFlowKind::kolmogorov:
+      return "kolmogorov";
+  }
+  return "unknown";
+}
+
+MaxFlowKind maxflow_kind_from_string(std::string_view text) {
+  constexpr MaxFlowKind kAll[] = {MaxFlowKind::dynamic, MaxFlowKind::boost,
+                                  MaxFlowKind::kolmogorov};
+  return enum_from_string(text, kAll, "max-flow backend");
+}
+
 std::string SolverChoice::validate() const {
   if (kind == SolverKind::lbp && order != VisitOrder::sequential) {
     return "lbp visits every message in every step; the order '" + std::string(to_string(order)) +

@@ -1,6 +1,10 @@
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -35,6 +39,27 @@ struct Arc {
   Index sister = 0;  ///< the reverse arc
 };
 
+/// Fills `to` with `from`, asking the kernel for transparent huge pages first when the block is
+/// large: a graph of many megabytes otherwise costs one page fault per 4 KiB as it is first
+/// written, which dominates copying or building it.
+template <class T>
+void assign_huge(std::vector<T>& to, const std::vector<T>& from) {
+  to.clear();
+  to.shrink_to_fit();
+  to.reserve(from.size());
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::size_t kHuge = std::size_t{2} << 20;
+  const std::size_t bytes = from.size() * sizeof(T);
+  if (bytes >= 2 * kHuge) {
+    const auto begin = reinterpret_cast<std::uintptr_t>(to.data());
+    const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
+    const std::uintptr_t last = (begin + bytes) & ~(kHuge - 1);
+    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  }
+#endif
+  to.assign(from.begin(), from.end());
+}
+
 }  // namespace
 
 struct DynamicMaxFlow::Impl {
@@ -43,14 +68,31 @@ struct DynamicMaxFlow::Impl {
   std::vector<Node> nodes;  // num_nodes + 1 (the last one only closes the arc ranges)
   std::vector<Arc> arcs;
   std::vector<Index> forward_arc;  // edge e: its from -> to arc; the sister is to -> from
-  // The capacities of the last solve, against which the next one is compared.
-  std::vector<double> terminal_net;  // source - sink per node
-  std::vector<double> forward_cap, backward_cap;
-  bool has_flow = false;
+  bool has_flow = false;  // solve() ran since build(): the dynamic changes apply
   Index time = 0;
   Index first_active = kNone, last_active = kNone;
   std::vector<Index> orphans, touched;
   DynamicSolveStats stats;
+
+  Impl() = default;
+  /// A copy with the same flow and trees (the graph arrays on huge pages where possible).
+  Impl(const Impl& other)
+      : num_nodes(other.num_nodes),
+        num_edges(other.num_edges),
+        forward_arc(other.forward_arc),
+        has_flow(other.has_flow),
+        time(other.time),
+        first_active(other.first_active),
+        last_active(other.last_active),
+        orphans(other.orphans),
+        touched(other.touched),
+        stats(other.stats) {
+    assign_huge(nodes, other.nodes);
+    assign_huge(arcs, other.arcs);
+    orphans.reserve(num_nodes);
+    touched.reserve(num_nodes);
+  }
+  Impl& operator=(const Impl&) = delete;
 
   void activate(Index i) {
     Node& node = nodes[i];
@@ -93,11 +135,18 @@ struct DynamicMaxFlow::Impl {
     return node.tree == kSourceTree ? arcs[up.sister].residual > 0.0 : up.residual > 0.0;
   }
 
+  /// Whether every capacity is finite and >= 0 (one pass, folded into the solve's own loops
+  /// by the compiler's vectoriser; cheaper than check_capacities' per-entry messages).
+  [[nodiscard]] static bool all_valid(std::span<const double> values) {
+    bool valid = true;
+    for (const double c : values) valid &= c >= 0.0 && c <= std::numeric_limits<double>::max();
+    return valid;
+  }
+
   void start_from_zero_flow(const FlowCapacities& caps) {
     for (std::size_t i = 0; i < num_nodes; ++i) {
       Node& node = nodes[i];
       node.excess = caps.source[i] - caps.sink[i];
-      terminal_net[i] = node.excess;
       node.next_active = kNone;
       node.stamp = 0;
       node.distance = 1;
@@ -118,8 +167,6 @@ struct DynamicMaxFlow::Impl {
       forward.residual = caps.forward[e];
       arcs[forward.sister].residual = caps.backward[e];
     }
-    forward_cap = caps.forward;
-    backward_cap = caps.backward;
     time = 0;
   }
 
@@ -129,50 +176,42 @@ struct DynamicMaxFlow::Impl {
     touched.push_back(i);
   }
 
-  /// Applies the capacities that differ from the last solve's to the solved graph and marks
-  /// the nodes they touch.
-  void apply_changes(const FlowCapacities& caps) {
-    for (std::size_t i = 0; i < num_nodes; ++i) {
-      const double net = caps.source[i] - caps.sink[i];
-      if (net == terminal_net[i]) continue;
-      nodes[i].excess += net - terminal_net[i];
-      terminal_net[i] = net;
-      touch(static_cast<Index>(i));
-      ++stats.changed_nodes;
+  /// Moves node i's residual terminal capacity by delta (a change of source - sink).
+  void change_terminal(Index i, double delta) {
+    nodes[i].excess += delta;
+    touch(i);
+    ++stats.changed_nodes;
+  }
+
+  /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
+  /// cancelled and handed to the endpoints' terminal arcs.
+  void change_edge(std::size_t e, double delta_forward, double delta_backward) {
+    Arc& forward = arcs[forward_arc[e]];
+    Arc& backward = arcs[forward.sister];
+    const Index from = backward.head;
+    const Index to = forward.head;
+    double forward_residual = forward.residual + delta_forward;
+    double backward_residual = backward.residual + delta_backward;
+    if (forward_residual < 0.0) {
+      // More flow from -> to than the new capacity: cancel the surplus; `from` keeps it
+      // (towards its sink arc), `to` misses it (from its source arc).
+      const double surplus = -forward_residual;
+      nodes[from].excess += surplus;
+      nodes[to].excess -= surplus;
+      backward_residual += forward_residual;
+      forward_residual = 0.0;
+    } else if (backward_residual < 0.0) {
+      const double surplus = -backward_residual;
+      nodes[to].excess += surplus;
+      nodes[from].excess -= surplus;
+      forward_residual += backward_residual;
+      backward_residual = 0.0;
     }
-    for (std::size_t e = 0; e < num_edges; ++e) {
-      const double forward_new = caps.forward[e];
-      const double backward_new = caps.backward[e];
-      if (forward_new == forward_cap[e] && backward_new == backward_cap[e]) continue;
-      Arc& forward = arcs[forward_arc[e]];
-      Arc& backward = arcs[forward.sister];
-      const Index from = backward.head;
-      const Index to = forward.head;
-      double forward_residual = forward.residual + (forward_new - forward_cap[e]);
-      double backward_residual = backward.residual + (backward_new - backward_cap[e]);
-      if (forward_residual < 0.0) {
-        // More flow from -> to than the new capacity: cancel the surplus; `from` keeps it
-        // (towards its sink arc), `to` misses it (from its source arc).
-        const double surplus = -forward_residual;
-        nodes[from].excess += surplus;
-        nodes[to].excess -= surplus;
-        forward_residual = 0.0;
-        backward_residual = forward_new + backward_new;
-      } else if (backward_residual < 0.0) {
-        const double surplus = -backward_residual;
-        nodes[to].excess += surplus;
-        nodes[from].excess -= surplus;
-        backward_residual = 0.0;
-        forward_residual = forward_new + backward_new;
-      }
-      forward.residual = forward_residual;
-      backward.residual = backward_residual;
-      forward_cap[e] = forward_new;
-      backward_cap[e] = backward_new;
-      touch(from);
-      touch(to);
-      ++stats.changed_edges;
-    }
+    forward.residual = std::max(forward_residual, 0.0);  // max: rounding below zero
+    backward.residual = std::max(backward_residual, 0.0);
+    touch(from);
+    touch(to);
+    ++stats.changed_edges;
   }
 
   /// Node o leaves its tree: its children there become orphans, and the neighbours there with
@@ -394,6 +433,12 @@ struct DynamicMaxFlow::Impl {
 
 DynamicMaxFlow::DynamicMaxFlow() : impl_(std::make_unique<Impl>()) {}
 DynamicMaxFlow::~DynamicMaxFlow() = default;
+DynamicMaxFlow::DynamicMaxFlow(const DynamicMaxFlow& other)
+    : impl_(std::make_unique<Impl>(*other.impl_)) {}
+DynamicMaxFlow& DynamicMaxFlow::operator=(const DynamicMaxFlow& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
 DynamicMaxFlow::DynamicMaxFlow(DynamicMaxFlow&&) noexcept = default;
 DynamicMaxFlow& DynamicMaxFlow::operator=(DynamicMaxFlow&&) noexcept = default;
 
@@ -430,9 +475,6 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
     m.arcs[backward] = {0.0, edges[e].from, forward};
     m.forward_arc[e] = forward;
   }
-  m.terminal_net.assign(num_nodes, 0.0);
-  m.forward_cap.assign(edges.size(), 0.0);
-  m.backward_cap.assign(edges.size(), 0.0);
   m.orphans.clear();
   m.touched.clear();
   m.orphans.reserve(num_nodes);
@@ -442,33 +484,61 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
 }
 
 double DynamicMaxFlow::solve(const FlowCapacities& caps) {
-  Impl& m = *impl_;
-  if (m.nodes.empty()) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
-  if (const std::string problem = check_capacities(caps, m.num_nodes, m.num_edges);
-      !problem.empty()) {
-    throw std::invalid_argument("DynamicMaxFlow::solve: " + problem);
-  }
-  m.stats = {};
-  if (m.has_flow) {
-    m.stats.reused = true;
-    ++m.time;
-    m.apply_changes(caps);
-    m.repair_touched_nodes();
-    m.adopt_orphans();
-  } else {
-    m.start_from_zero_flow(caps);
-    m.has_flow = true;
-  }
-  m.run();
-  return m.cut_value(caps);
+  solve_cut(caps);
+  return impl_->cut_value(caps);
 }
 
-void DynamicMaxFlow::forget_flow() noexcept {
-  impl_->has_flow = false;
+void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
+  Impl& m = *impl_;
+  if (m.nodes.empty()) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
+  const bool sizes_fit = caps.source.size() == m.num_nodes && caps.sink.size() == m.num_nodes &&
+                         caps.forward.size() == m.num_edges &&
+                         caps.backward.size() == m.num_edges;
+  if (!sizes_fit || !Impl::all_valid(caps.source) || !Impl::all_valid(caps.sink) ||
+      !Impl::all_valid(caps.forward) || !Impl::all_valid(caps.backward)) {
+    throw std::invalid_argument("DynamicMaxFlow::solve: " +
+                                check_capacities(caps, m.num_nodes, m.num_edges));
+  }
+  m.stats = {};
+  m.start_from_zero_flow(caps);
+  m.has_flow = true;
+  m.run();
+}
+
+void DynamicMaxFlow::change_terminal(FlowNode node, double delta) {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_terminal: solve() first");
+  if (m.touched.empty()) m.stats = {};
+  m.change_terminal(node, delta);
+}
+
+void DynamicMaxFlow::change_edge(std::size_t edge, double delta_forward, double delta_backward) {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_edge: solve() first");
+  if (m.touched.empty()) m.stats = {};
+  m.change_edge(edge, delta_forward, delta_backward);
+}
+
+void DynamicMaxFlow::resolve() {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::resolve: solve() first");
+  if (m.touched.empty()) m.stats = {};
+  m.stats.reused = true;
+  ++m.time;
+  m.repair_touched_nodes();
+  m.adopt_orphans();
+  m.run();
 }
 
 bool DynamicMaxFlow::in_source_set(FlowNode node) const {
   return impl_->nodes[node].tree == kSourceTree;
+}
+
+void DynamicMaxFlow::source_set(std::span<char> in_source) const {
+  const Impl& m = *impl_;
+  if (in_source.size() != m.num_nodes)
+    throw std::invalid_argument("DynamicMaxFlow::source_set: wrong size");
+  for (std::size_t i = 0; i < m.num_nodes; ++i) in_source[i] = m.nodes[i].tree == kSourceTree;
 }
 
 std::size_t DynamicMaxFlow::num_nodes() const noexcept {
@@ -487,9 +557,34 @@ std::size_t DynamicMaxFlow::memory_bytes() const noexcept {
 
 std::size_t DynamicMaxFlow::memory_bytes_for(std::size_t num_nodes,
                                              std::size_t num_edges) noexcept {
-  const std::size_t per_node = sizeof(Node) + sizeof(double);  // + terminal_net
-  const std::size_t per_edge = 2 * sizeof(Arc) + sizeof(Index) + 2 * sizeof(double);
+  const std::size_t per_node = sizeof(Node);
+  const std::size_t per_edge = 2 * sizeof(Arc) + sizeof(Index);  // + forward_arc
   return (num_nodes + 1) * per_node + num_edges * per_edge;
+}
+
+std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
+                         const FlowCapacities& after) {
+  const std::size_t n = graph.num_nodes();
+  const std::size_t m = graph.num_edges();
+  for (const FlowCapacities* caps : {&before, &after}) {
+    if (const std::string problem = check_capacities(*caps, n, m); !problem.empty())
+      throw std::invalid_argument("resolve_with: " + problem);
+  }
+  std::size_t changes = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
+    if (delta == 0.0) continue;
+    graph.change_terminal(static_cast<FlowNode>(i), delta);
+    ++changes;
+  }
+  for (std::size_t e = 0; e < m; ++e) {
+    if (after.forward[e] == before.forward[e] && after.backward[e] == before.backward[e]) continue;
+    graph.change_edge(e, after.forward[e] - before.forward[e],
+                      after.backward[e] - before.backward[e]);
+    ++changes;
+  }
+  graph.resolve();
+  return changes;
 }
 
 }  // namespace c2f

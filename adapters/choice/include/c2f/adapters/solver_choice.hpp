@@ -1,7 +1,8 @@
 #pragma once
 // Choosing a shipped solver at run time (command lines, benchmarks): one enum in the
 // to_string/from_string vocabulary, each solver's sweep length, and coarse_to_fine with the
-// chosen solver. Graph-cut solvers run on the default max-flow backend (Boost).
+// chosen solver. Graph-cut solvers run on the chosen max-flow backend (ours, DynamicMaxFlow,
+// by default; Boost's; Kolmogorov's when the build has it).
 
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +13,11 @@
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "c2f/adapters/icm/icm.hpp"
 #include "c2f/adapters/lbp/lbp.hpp"
+#include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
+#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
+#include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
+#endif
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/visit_order.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
@@ -29,11 +35,66 @@ std::string_view to_string(SolverKind kind);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.
 SolverKind solver_kind_from_string(std::string_view text);
 
+/// The max-flow backend of the graph-cut solvers (expansion, swap).
+enum class MaxFlowKind {
+  dynamic,     ///< ours: DynamicMaxFlow, with recycled per-label graphs (the default)
+  boost,       ///< Boost Graph's boykov_kolmogorov_max_flow (BoostMaxFlow)
+  kolmogorov,  ///< Kolmogorov's maxflow 3.0, GPL-3, only in builds configured with it
+};
+
+std::string_view to_string(MaxFlowKind kind);
+/// Parses the names to_string produces; throws std::invalid_argument naming the text.
+MaxFlowKind maxflow_kind_from_string(std::string_view text);
+
+/// Whether this program was built with the backend (kolmogorov needs the optional target
+/// c2f::kolmogorov_maxflow, which defines C2F_HAVE_KOLMOGOROV_MAXFLOW for its users).
+constexpr bool maxflow_available(MaxFlowKind kind) noexcept {
+#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
+  (void)kind;
+  return true;
+#else
+  return kind != MaxFlowKind::kolmogorov;
+#endif
+}
+
+/// Calls f(Backend{}) with a value of the backend type `kind` names. Throws
+/// std::invalid_argument for a backend this build does not have.
+template <class F>
+decltype(auto) with_maxflow_backend(MaxFlowKind kind, F&& f) {
+  switch (kind) {
+    case MaxFlowKind::dynamic:
+      return f(DynamicMaxFlow{});
+    case MaxFlowKind::boost:
+      return f(BoostMaxFlow{});
+    case MaxFlowKind::kolmogorov:
+#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
+      return f(KolmogorovMaxFlow{});
+#else
+      break;
+#endif
+  }
+  throw std::invalid_argument(
+      "max-flow backend 'kolmogorov' is not in this build (configure with "
+      "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
+}
+
 /// A solver and the options every move-making solver shares (MoveOptions, IcmOptions).
 struct SolverChoice {
   SolverKind kind = SolverKind::expansion;
   VisitOrder order = VisitOrder::sequential;  ///< expansion, swap (labels), icm (variables)
   std::uint64_t seed = 1;                     ///< for VisitOrder::random
+  MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
+  /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
+  std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
+
+  /// The MoveOptions of expansion and swap.
+  [[nodiscard]] MoveOptions move_options() const {
+    MoveOptions options;
+    options.order = order;
+    options.seed = seed;
+    options.graph_memory_limit = graph_memory_limit;
+    return options;
+  }
 
   /// Empty when usable, else a message naming the field (an order the solver cannot take).
   [[nodiscard]] std::string validate() const;
@@ -51,14 +112,16 @@ Summary coarse_to_fine(const PairwiseEnergy& energy, P& levels, const SolverChoi
   if (const std::string problem = choice.validate(); !problem.empty())
     throw std::invalid_argument("solver choice: " + problem);
   switch (choice.kind) {
-    case SolverKind::expansion: {
-      ExpansionSolver<> solver(ExpansionOptions{choice.order, choice.seed});
-      return coarse_to_fine(energy, levels, solver, options, observer);
-    }
-    case SolverKind::swap: {
-      SwapSolver<> solver(SwapOptions{choice.order, choice.seed});
-      return coarse_to_fine(energy, levels, solver, options, observer);
-    }
+    case SolverKind::expansion:
+      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
+        ExpansionSolver<Backend> solver(choice.move_options());
+        return coarse_to_fine(energy, levels, solver, options, observer);
+      });
+    case SolverKind::swap:
+      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
+        SwapSolver<Backend> solver(choice.move_options());
+        return coarse_to_fine(energy, levels, solver, options, observer);
+      });
     case SolverKind::lbp: {
       LbpSolver solver;
       return coarse_to_fine(energy, levels, solver, options, observer);

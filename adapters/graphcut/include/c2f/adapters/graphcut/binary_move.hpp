@@ -10,15 +10,29 @@
 //
 // Numerics: capacities are doubles computed from the double costs of the energy; callers
 // accept a move only after checking its exact double energy.
+//
+// Recycling (Alahari, Kohli and Torr): with a backend that changes a solved graph and resumes
+// from its flow (ReusingMaxFlow), every graph remembers the problem it was last solved for and
+// a new problem only changes the nodes and pairs whose coefficients differ. A solver may give
+// each recurring move (a key, e.g. the label of an expansion move) a graph of its own, so that
+// the move costs in proportion to what changed since that key's last move. A key's first move
+// uses a shared graph, re-solved from whatever move it solved before (a better start than zero
+// flow even for another label); from its second move on it has a graph of its own (a copy of
+// the graph solved last) while such graphs fit in a memory limit. Other backends solve every move from
+// zero flow.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <memory>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -29,6 +43,7 @@ enum class MoveLabel : std::int8_t { zero = 0, one = 1, unlabeled = -1 };
 
 struct BinaryMoveStats {
   bool used_qpbo = false;     ///< some p[e] < 0: solved on the doubled graph
+  bool recycled = false;      ///< solved on the key's own graph, from its previous flow
   std::size_t unlabeled = 0;  ///< variables QPBO left open
   double flow_seconds = 0.0;  ///< time inside the max-flow backend
 };
@@ -45,14 +60,18 @@ template <MaxFlow Backend>
 class BinaryMoveSolver {
  public:
   /// Fixes the topology: n binary variables and the pairs (u, v) that carry pairwise terms.
-  /// Builds the n-node graph now and the 2n-node QPBO graph on first need.
+  /// The n-node graph and the 2n-node QPBO graph are built on first need.
   void bind(std::size_t num_nodes, std::span<const FlowEdge> pairs) {
     check_topology(num_nodes, pairs, "BinaryMoveSolver::bind");
     num_nodes_ = num_nodes;
     pairs_.assign(pairs.begin(), pairs.end());
-    plain_.build(num_nodes, pairs_);
-    plain_caps_.resize(num_nodes, pairs_.size());
-    qpbo_built_ = false;
+    doubled_pairs_.clear();
+    doubled_ready_ = false;
+    shared_[0] = MoveGraph{};
+    shared_[1] = MoveGraph{};
+    own_.clear();
+    last_key_[0] = last_key_[1] = kNoKey;
+    graph_bytes_ = 0;
   }
 
   /// The topology of the moves of a pairwise energy: one binary variable per variable, one
@@ -64,37 +83,68 @@ class BinaryMoveSolver {
     bind(energy.num_variables(), pairs);
   }
 
+  /// Lets moves with keys 0..num_keys-1 keep graphs of their own (recycling) while all such
+  /// graphs stay within memory_limit bytes. Only backends that resume from their flow
+  /// (ReusingMaxFlow) recycle. Call after bind(); a later bind() ends recycling.
+  void recycle(std::size_t num_keys, std::size_t memory_limit) {
+    own_.clear();
+    own_.resize(num_keys);
+    memory_limit_ = memory_limit;
+  }
+
+  /// Bytes of the graphs the keys own so far.
+  [[nodiscard]] std::size_t recycled_bytes() const noexcept { return graph_bytes_; }
+
   /// Minimises the problem above. With every p[e] >= 0 one max-flow gives an exact minimiser
   /// and every variable is labelled. Otherwise QPBO (Kolmogorov and Rother 2007) on the doubled
   /// graph gives a partial labelling with weak persistency: the labelled part can be imposed on
   /// any b without increasing the objective, so keeping unlabelled variables at 0 (the current
-  /// labels) never does worse than b = 0.
+  /// labels) never does worse than b = 0. `key` (see recycle()) names the recurring move this
+  /// is. Throws std::invalid_argument for sizes that do not fit or a coefficient that is not
+  /// finite.
   BinaryMoveStats solve(std::span<const double> d, std::span<const double> p,
-                        std::span<MoveLabel> out) {
+                        std::span<MoveLabel> out, std::size_t key = kNoKey) {
     if (d.size() != num_nodes_ || out.size() != num_nodes_ || p.size() != pairs_.size()) {
       throw std::invalid_argument("BinaryMoveSolver::solve: sizes do not match the bound topology");
     }
     BinaryMoveStats stats;
     bool submodular = true;
-    for (const double value : p) submodular = submodular && value >= 0.0;
+    bool finite = true;
+    for (const double value : p) {
+      submodular &= value >= 0.0;
+      finite &= std::isfinite(value);
+    }
+    for (const double value : d) finite &= std::isfinite(value);
+    if (!finite) throw std::invalid_argument("BinaryMoveSolver::solve: a coefficient is not finite");
     const auto start = std::chrono::steady_clock::now();
     if (submodular) {
-      for (std::size_t i = 0; i < num_nodes_; ++i) {
-        plain_caps_.source[i] = d[i] > 0.0 ? d[i] : 0.0;
-        plain_caps_.sink[i] = d[i] < 0.0 ? -d[i] : 0.0;
-      }
-      for (std::size_t e = 0; e < pairs_.size(); ++e) {
-        plain_caps_.forward[e] = p[e];
-        plain_caps_.backward[e] = 0.0;
-      }
-      plain_.solve(plain_caps_);
-      for (std::size_t i = 0; i < num_nodes_; ++i) {
-        out[i] = plain_.in_source_set(static_cast<FlowNode>(i)) ? MoveLabel::zero : MoveLabel::one;
-      }
+      node_values_.assign(d.begin(), d.end());
+      MoveGraph& graph = graph_for(key, GraphKind::plain, stats);
+      solve_graph(graph, GraphKind::plain, p);
+      for (std::size_t i = 0; i < num_nodes_; ++i)
+        out[i] = in_source_[i] ? MoveLabel::zero : MoveLabel::one;
     } else {
       stats.used_qpbo = true;
-      solve_qpbo(d, p, out);
-      for (const MoveLabel label : out) stats.unlabeled += label == MoveLabel::unlabeled;
+      // p (1 - b_u) b_v with p < 0 equals p (1 - b_u) + |p| (1 - b_u) (1 - b_v): the first part
+      // moves |p| onto b_u's coefficient (plus a constant), the second is submodular in
+      // (b_u, b'_v).
+      node_values_.assign(d.begin(), d.end());
+      for (std::size_t e = 0; e < pairs_.size(); ++e) {
+        if (p[e] < 0.0) node_values_[pairs_[e].from] -= p[e];
+      }
+      MoveGraph& graph = graph_for(key, GraphKind::qpbo, stats);
+      solve_graph(graph, GraphKind::qpbo, p);
+      const std::size_t n = num_nodes_;
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool node_source = in_source_[i] != 0;
+        const bool complement_source = in_source_[n + i] != 0;
+        if (node_source == complement_source) {
+          out[i] = MoveLabel::unlabeled;
+          ++stats.unlabeled;
+        } else {
+          out[i] = node_source ? MoveLabel::zero : MoveLabel::one;
+        }
+      }
     }
     stats.flow_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -102,70 +152,219 @@ class BinaryMoveSolver {
   }
 
  private:
-  // Node i stands for b_i and node n + i for its complement (b_i = 0 when n + i is on the sink
-  // side). Pair e owns edges 4e..4e+3: (u, v), (v', u'), (u, v'), (v, u'); the first two carry
-  // submodular terms, the last two non-submodular ones; backward capacities stay 0.
-  void build_qpbo() {
-    const auto n = static_cast<FlowNode>(num_nodes_);
-    std::vector<FlowEdge> doubled;
-    doubled.reserve(4 * pairs_.size());
-    for (const FlowEdge& pair : pairs_) {
-      doubled.push_back({pair.from, pair.to});
-      doubled.push_back({pair.to + n, pair.from + n});
-      doubled.push_back({pair.from, pair.to + n});
-      doubled.push_back({pair.to, pair.from + n});
-    }
-    qpbo_.build(2 * num_nodes_, doubled);
-    qpbo_caps_.resize(2 * num_nodes_, doubled.size());
-    adjusted_d_.resize(num_nodes_);
-    qpbo_built_ = true;
+  static constexpr std::size_t kNoKey = static_cast<std::size_t>(-1);
+
+  /// The n-node graph of submodular moves and the doubled graph of QPBO moves.
+  enum class GraphKind : std::size_t { plain = 0, qpbo = 1 };
+
+  /// A graph and, for a reusing backend, the problem it holds: the node coefficients (d, or
+  /// QPBO's adjusted d) and the pair coefficients p it was last solved for.
+  struct MoveGraph {
+    Backend graph;
+    bool built = false;
+    bool solved = false;
+    std::vector<double> node_values, pair_values;
+  };
+
+  [[nodiscard]] std::size_t graph_nodes(GraphKind kind) const noexcept {
+    return kind == GraphKind::plain ? num_nodes_ : 2 * num_nodes_;
+  }
+  [[nodiscard]] std::span<const FlowEdge> graph_edges(GraphKind kind) {
+    if (kind == GraphKind::plain) return pairs_;
+    if (!doubled_ready_) prepare_qpbo();
+    return doubled_pairs_;
   }
 
-  void solve_qpbo(std::span<const double> d, std::span<const double> p, std::span<MoveLabel> out) {
-    if (!qpbo_built_) build_qpbo();
+  /// The graph that solves a move of this key and kind. A key with a graph of its own gets it
+  /// back (stats.recycled). A key seen before without one gets one when it fits the memory
+  /// limit: a copy of the graph of this kind solved last. Otherwise (and on a key's first move,
+  /// which has nothing to recycle) the shared graph of this kind.
+  MoveGraph& graph_for(std::size_t key, GraphKind kind, BinaryMoveStats& stats) {
+    const auto k = static_cast<std::size_t>(kind);
+    MoveGraph* graph = nullptr;
+    if constexpr (ReusingMaxFlow<Backend>) {
+      if (key < own_.size()) {
+        OwnGraph& own = own_[key];
+        std::unique_ptr<MoveGraph>& mine = own.graphs[k];
+        const std::size_t bytes = graph_bytes(kind);
+        const bool seen = own.seen[k];
+        own.seen[k] = true;
+        if (mine) {
+          stats.recycled = true;
+        } else if (seen && graph_bytes_ + bytes <= memory_limit_) {
+          MoveGraph* last = last_graph(kind);
+          mine = last != nullptr ? std::make_unique<MoveGraph>(*last)
+                                 : std::make_unique<MoveGraph>();
+          graph_bytes_ += bytes;
+        }
+        graph = mine.get();
+      }
+    }
+    if (graph == nullptr) graph = &shared_[k];
+    if (!graph->built) {
+      graph->graph.build(graph_nodes(kind), graph_edges(kind));
+      graph->built = true;
+    }
+    last_key_[k] = graph == &shared_[k] ? kNoKey : key;
+    return *graph;
+  }
+
+  /// One graph of this kind with its problem (what a key's graphs cost), in bytes.
+  [[nodiscard]] std::size_t graph_bytes(GraphKind kind) {
+    std::size_t bytes = (graph_nodes(kind) + pairs_.size()) * sizeof(double);
+    if constexpr (ReusingMaxFlow<Backend>)
+      bytes += Backend::memory_bytes_for(graph_nodes(kind), graph_edges(kind).size());
+    return bytes;
+  }
+
+  /// The graph of this kind that solved last (null before the first such solve).
+  MoveGraph* last_graph(GraphKind kind) {
+    const auto k = static_cast<std::size_t>(kind);
+    if (last_key_[k] == kNoKey) return shared_[k].solved ? &shared_[k] : nullptr;
+    return own_[last_key_[k]].graphs[k].get();
+  }
+
+  /// Solves `graph` for node_values_ and p (a reusing backend: by changing what differs from
+  /// the problem it holds; else from zero flow) and leaves its source set in in_source_.
+  void solve_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
+    const std::size_t nodes = graph_nodes(kind);
+    in_source_.resize(nodes);
+    if constexpr (ReusingMaxFlow<Backend>) {
+      if (graph.solved) {
+        change_graph(graph, kind, p);
+        graph.graph.resolve();
+        graph.graph.source_set(in_source_);
+        return;
+      }
+    }
+    fill_capacities(kind, p);
+    const FlowCapacities& caps = kind == GraphKind::plain ? plain_caps_ : qpbo_caps_;
+    if constexpr (requires(const Backend& g, std::span<char> side) {
+                    graph.graph.solve_cut(caps);
+                    g.source_set(side);
+                  }) {
+      graph.graph.solve_cut(caps);
+      graph.graph.source_set(in_source_);
+    } else {
+      graph.graph.solve(caps);
+      for (std::size_t i = 0; i < nodes; ++i)
+        in_source_[i] = graph.graph.in_source_set(static_cast<FlowNode>(i));
+    }
+    if constexpr (ReusingMaxFlow<Backend>) {
+      graph.node_values = node_values_;
+      graph.pair_values.assign(p.begin(), p.end());
+      graph.solved = true;
+    }
+  }
+
+  // The plain graph: node i has source capacity max(d_i, 0) and sink capacity max(-d_i, 0);
+  // pair e's edge (u, v) carries p[e] forward.
+  //
+  // The QPBO graph: node i stands for b_i and node n + i for its complement (b_i = 0 when n + i
+  // is on the sink side); with h = adjusted d_i / 2, node i has source - sink = h and node n + i
+  // has -h. Pair e owns edges 4e..4e+3: (u, v), (v', u'), (u, v'), (v, u'); the first two carry
+  // p/2 when p >= 0 (submodular), the last two -p/2 when p < 0; backward capacities stay 0.
+  void fill_capacities(GraphKind kind, std::span<const double> p) {
     const std::size_t n = num_nodes_;
-    adjusted_d_.assign(d.begin(), d.end());
-    // p (1 - b_u) b_v with p < 0 equals p (1 - b_u) + |p| (1 - b_u) (1 - b_v): the first part
-    // moves |p| onto b_u's coefficient (plus a constant), the second is submodular in (b_u, b'_v).
-    for (std::size_t e = 0; e < pairs_.size(); ++e) {
-      if (p[e] < 0.0) adjusted_d_[pairs_[e].from] -= p[e];
+    if (kind == GraphKind::plain) {
+      plain_caps_.resize(n, pairs_.size());
+      for (std::size_t i = 0; i < n; ++i) {
+        plain_caps_.source[i] = std::max(node_values_[i], 0.0);
+        plain_caps_.sink[i] = std::max(-node_values_[i], 0.0);
+      }
+      std::copy(p.begin(), p.end(), plain_caps_.forward.begin());
+      std::fill(plain_caps_.backward.begin(), plain_caps_.backward.end(), 0.0);
+      return;
     }
     for (std::size_t i = 0; i < n; ++i) {
-      const double half = 0.5 * adjusted_d_[i];
-      qpbo_caps_.source[i] = half > 0.0 ? half : 0.0;
-      qpbo_caps_.sink[i] = half < 0.0 ? -half : 0.0;
-      qpbo_caps_.source[n + i] = half < 0.0 ? -half : 0.0;
-      qpbo_caps_.sink[n + i] = half > 0.0 ? half : 0.0;
+      const double half = 0.5 * node_values_[i];
+      qpbo_caps_.source[i] = std::max(half, 0.0);
+      qpbo_caps_.sink[i] = std::max(-half, 0.0);
+      qpbo_caps_.source[n + i] = std::max(-half, 0.0);
+      qpbo_caps_.sink[n + i] = std::max(half, 0.0);
     }
     for (std::size_t e = 0; e < pairs_.size(); ++e) {
       const double half = 0.5 * p[e];
-      const bool sub = half >= 0.0;
-      qpbo_caps_.forward[4 * e + 0] = sub ? half : 0.0;
-      qpbo_caps_.forward[4 * e + 1] = sub ? half : 0.0;
-      qpbo_caps_.forward[4 * e + 2] = sub ? 0.0 : -half;
-      qpbo_caps_.forward[4 * e + 3] = sub ? 0.0 : -half;
+      qpbo_caps_.forward[4 * e + 0] = qpbo_caps_.forward[4 * e + 1] = std::max(half, 0.0);
+      qpbo_caps_.forward[4 * e + 2] = qpbo_caps_.forward[4 * e + 3] = std::max(-half, 0.0);
     }
     std::fill(qpbo_caps_.backward.begin(), qpbo_caps_.backward.end(), 0.0);
-    qpbo_.solve(qpbo_caps_);
+  }
+
+  /// Changes a solved graph from the problem it holds to (node_values_, p): only the nodes and
+  /// pairs whose coefficients differ, by the differences of the capacities above.
+  void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
+    const std::size_t n = num_nodes_;
+    Backend& g = graph.graph;
     for (std::size_t i = 0; i < n; ++i) {
-      const bool node_source = qpbo_.in_source_set(static_cast<FlowNode>(i));
-      const bool complement_source = qpbo_.in_source_set(static_cast<FlowNode>(n + i));
-      if (node_source == complement_source) {
-        out[i] = MoveLabel::unlabeled;
+      const double before = graph.node_values[i];
+      const double after = node_values_[i];
+      if (after == before) continue;
+      graph.node_values[i] = after;
+      const auto node = static_cast<FlowNode>(i);
+      if (kind == GraphKind::plain) {
+        g.change_terminal(node, after - before);
       } else {
-        out[i] = node_source ? MoveLabel::zero : MoveLabel::one;
+        const double delta = 0.5 * after - 0.5 * before;
+        g.change_terminal(node, delta);
+        g.change_terminal(static_cast<FlowNode>(n + i), -delta);
+      }
+    }
+    for (std::size_t e = 0; e < pairs_.size(); ++e) {
+      const double before = graph.pair_values[e];
+      const double after = p[e];
+      if (after == before) continue;
+      graph.pair_values[e] = after;
+      if (kind == GraphKind::plain) {
+        g.change_edge(e, after - before, 0.0);
+        continue;
+      }
+      const double submodular = std::max(0.5 * after, 0.0) - std::max(0.5 * before, 0.0);
+      const double crossing = std::max(-0.5 * after, 0.0) - std::max(-0.5 * before, 0.0);
+      if (submodular != 0.0) {
+        g.change_edge(4 * e + 0, submodular, 0.0);
+        g.change_edge(4 * e + 1, submodular, 0.0);
+      }
+      if (crossing != 0.0) {
+        g.change_edge(4 * e + 2, crossing, 0.0);
+        g.change_edge(4 * e + 3, crossing, 0.0);
       }
     }
   }
 
+  void prepare_qpbo() {
+    const auto n = static_cast<FlowNode>(num_nodes_);
+    doubled_pairs_.clear();
+    doubled_pairs_.reserve(4 * pairs_.size());
+    for (const FlowEdge& pair : pairs_) {
+      doubled_pairs_.push_back({pair.from, pair.to});
+      doubled_pairs_.push_back({pair.to + n, pair.from + n});
+      doubled_pairs_.push_back({pair.from, pair.to + n});
+      doubled_pairs_.push_back({pair.to, pair.from + n});
+    }
+    qpbo_caps_.resize(2 * num_nodes_, doubled_pairs_.size());
+    doubled_ready_ = true;
+  }
+
   std::size_t num_nodes_ = 0;
   std::vector<FlowEdge> pairs_;
-  Backend plain_;
+  std::vector<FlowEdge> doubled_pairs_;  // the QPBO graph's edges, once some move needs them
+  bool doubled_ready_ = false;
+  // Work arrays of every move, whichever graph solves it.
+  std::vector<double> node_values_;  // d, or QPBO's adjusted d
   FlowCapacities plain_caps_;
-  Backend qpbo_;
   FlowCapacities qpbo_caps_;
-  std::vector<double> adjusted_d_;
-  bool qpbo_built_ = false;
+  std::vector<char> in_source_;  // the last solve's source set
+  MoveGraph shared_[2];          // by GraphKind: moves without a graph of their own
+  struct OwnGraph {  // by GraphKind
+    std::array<std::unique_ptr<MoveGraph>, 2> graphs;
+    std::array<bool, 2> seen = {false, false};
+  };
+  std::vector<OwnGraph> own_;  // per key
+  std::size_t last_key_[2] = {kNoKey, kNoKey};  // whose graph of each kind solved last (kNoKey:
+                                               // the shared one)
+  std::size_t memory_limit_ = 0;
+  std::size_t graph_bytes_ = 0;
 };
 
 }  // namespace c2f

@@ -25,13 +25,13 @@
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
-#include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
 
-template <MaxFlow Backend = BoostMaxFlow>
+template <MaxFlow Backend = DynamicMaxFlow>
 class ExpansionSolver {
  public:
   /// Throws std::invalid_argument when options.validate() reports a problem.
@@ -49,7 +49,8 @@ class ExpansionSolver {
 
   /// Starts from `start` (validated); builds the move graph of the energy's topology.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
-    state_.bind(energy, start, "ExpansionSolver::bind: start");
+    state_.bind(energy, start, "ExpansionSolver::bind: start",
+                static_cast<std::size_t>(energy.num_labels()), options_.graph_memory_limit);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -81,7 +82,7 @@ class ExpansionSolver {
                       energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
                       energy.pairwise_cost(edge, alpha, alpha));
     }
-    last_ = state_.solve_move(alpha, alpha);
+    last_ = state_.solve_move(alpha, alpha, static_cast<std::size_t>(alpha));
     std::size_t changed = 0;
     for (std::size_t i = 0; i < labeling.size(); ++i) {
       const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;

@@ -18,6 +18,12 @@ struct MoveOptions {
   /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
   /// that lowers the energy is accepted (and no move that keeps it equal).
   double tolerance = 0.0;
+  /// Bytes the recycled move graphs may take (see binary_move.hpp): with a backend that
+  /// resumes from its previous flow (the default DynamicMaxFlow), each label (expansion) or
+  /// label pair (swap) keeps its own graphs while they fit, so a repeated move costs in
+  /// proportion to what changed since; moves beyond the limit share graphs solved from zero
+  /// flow. 0 turns recycling off. Results do not depend on it, only time and memory.
+  std::size_t graph_memory_limit = std::size_t{3} << 30;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
@@ -32,6 +38,7 @@ struct MoveStep : StepOutcome {
   Label beta = 0;             ///< swap: the pair's second label; expansion: equal to alpha
   std::size_t unlabeled = 0;  ///< variables QPBO left open (they kept their label)
   bool used_qpbo = false;     ///< the move was not submodular and went to QPBO
+  bool recycled = false;      ///< solved on the move's own graph, resumed from its last flow
   double flow_seconds = 0.0;  ///< time inside the max-flow backend
 };
 

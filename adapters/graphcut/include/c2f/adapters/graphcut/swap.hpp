@@ -18,7 +18,7 @@
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
-#include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -28,7 +28,7 @@ namespace c2f {
 /// edge weight is >= 0 (what swap moves need to be submodular).
 void require_semi_metric(const PairwiseEnergy& energy, const char* who);
 
-template <MaxFlow Backend = BoostMaxFlow>
+template <MaxFlow Backend = DynamicMaxFlow>
 class SwapSolver {
  public:
   /// Throws std::invalid_argument when options.validate() reports a problem.
@@ -47,7 +47,9 @@ class SwapSolver {
 
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     require_semi_metric(energy, "SwapSolver::bind");
-    state_.bind(energy, start, "SwapSolver::bind: start");
+    const auto num_labels = static_cast<std::size_t>(energy.num_labels());
+    state_.bind(energy, start, "SwapSolver::bind: start", num_labels * num_labels,
+                options_.graph_memory_limit);
     std::vector<std::pair<Label, Label>> label_pairs;
     for (Label a = 0; a < energy.num_labels(); ++a) {
       for (Label b = a + 1; b < energy.num_labels(); ++b) label_pairs.emplace_back(a, b);
@@ -96,7 +98,10 @@ class SwapSolver {
         d[edge.v] += energy.pairwise_cost(edge, xu, beta) - energy.pairwise_cost(edge, xu, alpha);
       }
     }
-    last_ = state_.solve_move(alpha, beta);
+    const auto pair_key = static_cast<std::size_t>(alpha) *
+                              static_cast<std::size_t>(state_.energy->num_labels()) +
+                          static_cast<std::size_t>(beta);
+    last_ = state_.solve_move(alpha, beta, pair_key);
     std::size_t changed = 0;
     for (std::size_t i = 0; i < labeling.size(); ++i) {
       state_.candidate[i] = labeling[i];

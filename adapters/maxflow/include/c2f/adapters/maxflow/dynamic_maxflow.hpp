@@ -3,6 +3,7 @@
 // (Kohli and Torr, "Dynamic graph cuts", PAMI 2007). MIT, like the rest of c2f; the default
 // backend of the graph-cut solvers.
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -21,42 +22,55 @@ struct DynamicSolveStats {
 };
 
 /// Boykov-Kolmogorov max-flow on flat arrays (nodes; arcs sorted by tail, each with its
-/// reverse), built once per topology; solve() allocates nothing once the work lists have
-/// grown to their largest size.
+/// reverse), built once per topology; a solve allocates nothing once the work lists have grown
+/// to their largest size.
 ///
-/// The first solve() after build() (or forget_flow()) starts from zero flow. Every later
-/// solve() keeps the flow and the two search trees of the previous one and applies only the
-/// capacities that differ: a changed terminal pair moves the node's residual terminal
-/// capacity by the difference of (source - sink), which is a reparametrisation (adding the
-/// same amount to both terminal arcs changes every cut by that constant); a changed edge moves
-/// its residuals by the capacity change, and flow above a lowered capacity is cancelled and
-/// handed to the endpoints' terminal arcs. Tree arcs that lost their residual make orphans,
-/// nodes whose terminal residual changed sign change tree, and every touched node is searched
-/// again; the search then resumes. The result is a maximum flow of the new capacities: the
-/// same minimum cut value as a solve from zero (to floating-point rounding), and the same
-/// source set (the nodes reachable from the source in the residual graph) whenever the
-/// residuals agree exactly. A re-solve costs in proportion to what changed and to the paths it
-/// must find.
+/// solve(caps) starts from zero flow (the MaxFlow contract). A solved graph can then be changed
+/// and solved again from its flow and search trees (Kohli and Torr's dynamic graph cuts):
+/// change_terminal() moves a node's source - sink capacity difference (adding the same amount
+/// to both terminal arcs changes every cut by that constant, so only the difference matters: a
+/// reparametrisation), change_edge() moves an edge's capacities, cancelling flow above a
+/// lowered capacity and handing it to the endpoints' terminal arcs; resolve() then orphans the
+/// tree arcs that lost their residual, moves nodes whose terminal residual changed sign to the
+/// other tree, searches every touched node again and resumes. The result is a maximum flow of
+/// the changed capacities: the same minimum cut value as a solve from zero (to floating-point
+/// rounding), and the same source set (the nodes reachable from the source in the residual
+/// graph) whenever the arithmetic is exact. A re-solve costs in proportion to what changed and
+/// to the paths it must find. A copy keeps the flow and trees: it resolves from them too.
 class DynamicMaxFlow {
  public:
   DynamicMaxFlow();
   ~DynamicMaxFlow();
+  DynamicMaxFlow(const DynamicMaxFlow& other);
+  DynamicMaxFlow& operator=(const DynamicMaxFlow& other);
   DynamicMaxFlow(DynamicMaxFlow&&) noexcept;
   DynamicMaxFlow& operator=(DynamicMaxFlow&&) noexcept;
 
   /// Throws std::invalid_argument for an edge with an endpoint >= num_nodes or a loop, or
-  /// more than 2^31 arcs.
+  /// more than 2^31 edges.
   void build(std::size_t num_nodes, std::span<const FlowEdge> edges);
-  /// Maximum flow value (= minimum cut capacity) for these capacities; see the class comment.
-  /// Throws std::invalid_argument when caps do not fit the graph, std::logic_error before
-  /// build().
+  /// Maximum flow value (= minimum cut capacity) from zero flow. Throws std::invalid_argument
+  /// when caps do not fit the graph, std::logic_error before build().
   double solve(const FlowCapacities& caps);
-  /// Makes the next solve() start from zero flow.
-  void forget_flow() noexcept;
-  /// After solve(): whether node is reachable from the source in the residual graph.
+  /// solve() without computing the flow value (an O(nodes + edges) pass): for callers that
+  /// need only the cut.
+  void solve_cut(const FlowCapacities& caps);
+
+  /// After a solve: adds delta to the node's source capacity minus its sink capacity.
+  void change_terminal(FlowNode node, double delta);
+  /// After a solve: adds the deltas to the edge's forward and backward capacities (which must
+  /// stay >= 0).
+  void change_edge(std::size_t edge, double delta_forward, double delta_backward);
+  /// The minimum cut after the changes since the last solve or resolve, from the current flow.
+  void resolve();
+
+  /// After a solve: whether node is reachable from the source in the residual graph.
   [[nodiscard]] bool in_source_set(FlowNode node) const;
+  /// in_source_set of every node at once; in_source.size() must be num_nodes().
+  void source_set(std::span<char> in_source) const;
   [[nodiscard]] std::size_t num_nodes() const noexcept;
   [[nodiscard]] std::size_t num_edges() const noexcept;
+  /// What the last solve() or resolve() did.
   [[nodiscard]] const DynamicSolveStats& last_solve() const noexcept;
   /// Bytes held by the graph (excluding the small work lists).
   [[nodiscard]] std::size_t memory_bytes() const noexcept;
@@ -71,12 +85,24 @@ class DynamicMaxFlow {
 
 static_assert(MaxFlow<DynamicMaxFlow>);
 
-/// A MaxFlow backend whose solve() resumes from its previous flow; forget_flow() makes the
-/// next solve start afresh. Solvers keep one such graph per recurring problem (recycling).
+/// A MaxFlow backend that can change a solved graph's capacities and re-solve from its flow,
+/// and be copied with that flow. Solvers keep one such graph per recurring problem (recycling).
 template <class G>
-concept ReusingMaxFlow = MaxFlow<G> && requires(G& g, std::size_t n, std::size_t m) {
-  g.forget_flow();
-  { G::memory_bytes_for(n, m) } -> std::convertible_to<std::size_t>;
-};
+concept ReusingMaxFlow =
+    MaxFlow<G> && std::copy_constructible<G> &&
+    requires(G& g, FlowNode i, std::size_t e, double delta, std::size_t n, std::size_t m) {
+      g.change_terminal(i, delta);
+      g.change_edge(e, delta, delta);
+      g.resolve();
+      { G::memory_bytes_for(n, m) } -> std::convertible_to<std::size_t>;
+    };
+
+static_assert(ReusingMaxFlow<DynamicMaxFlow>);
+
+/// Applies to a solved graph the differences between two capacity sets (terminal pairs whose
+/// source - sink differs, edges whose capacities differ), then resolve(). Returns the number of
+/// changed nodes and edges. Throws std::invalid_argument when the sets do not fit the graph.
+std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
+                         const FlowCapacities& after);
 
 }  // namespace c2f

@@ -29,28 +29,33 @@ struct MoveState {
   std::vector<MoveLabel> out;  ///< its solution
 
   /// Validates `start` against the energy (messages begin with `context`), takes it as the
-  /// current labeling and builds the move graph of the energy's topology.
-  void bind(const PairwiseEnergy& e, std::span<const Label> start, std::string_view context) {
+  /// current labeling and fixes the move graphs' topology; moves with keys 0..num_keys-1 may
+  /// recycle their graphs within graph_memory_limit bytes (BinaryMoveSolver::recycle).
+  void bind(const PairwiseEnergy& e, std::span<const Label> start, std::string_view context,
+            std::size_t num_keys, std::size_t graph_memory_limit) {
     validate_labeling(start, e.num_variables(), e.num_labels(), context);
     energy = &e;
     labeling.assign(start.begin(), start.end());
     candidate.resize(labeling.size());
     moves.bind(e);
+    moves.recycle(num_keys, graph_memory_limit);
     d.resize(e.num_variables());
     p.resize(e.edges().size());
     out.resize(e.num_variables());
     value = e.evaluate_unchecked(labeling);
   }
 
-  /// Solves the move's binary problem (d, p) into `out`; returns the step record of a move
-  /// between alpha and beta (expansion: beta == alpha) with the solver's statistics.
-  MoveStep solve_move(Label alpha, Label beta) {
-    const BinaryMoveStats stats = moves.solve(d, p, out);
+  /// Solves the move's binary problem (d, p) into `out` on the graphs of `key`; returns the
+  /// step record of a move between alpha and beta (expansion: beta == alpha) with the solver's
+  /// statistics.
+  MoveStep solve_move(Label alpha, Label beta, std::size_t key) {
+    const BinaryMoveStats stats = moves.solve(d, p, out, key);
     MoveStep step;
     step.alpha = alpha;
     step.beta = beta;
     step.unlabeled = stats.unlabeled;
     step.used_qpbo = stats.used_qpbo;
+    step.recycled = stats.recycled;
     step.flow_seconds = stats.flow_seconds;
     return step;
   }
