@@ -1,137 +1,221 @@
-// c2f-bench-expansion: alpha-expansion on a Middlebury energy with each max-flow backend.
-// Time of the first full sweep (one move per label) and to convergence (a whole sweep without
-// a change), for a Potts term (submodular moves) and the TSGO step term (QPBO moves). The
-// energy: Teddy (2003, quarter size) with a truncated absolute-difference cost volume.
+// c2f-bench-expansion: flat alpha-expansion on a scene's TSGO energy with each max-flow backend,
+// in one process: the same energy, start labeling, label order, moves and clock.
 //
-// Usage: c2f-bench-expansion [DATA_DIR] [--labels L] [--max-sweeps S]
-//   DATA_DIR defaults to ../shared/data (the repository's sibling shared folder).
+//   c2f-bench-expansion run SCENE [--data DIR] [--downscale K] [--labels L] [--graph-memory GIB]
+//                       [--header]
+//       Runs expansion from the unary argmin until a whole sweep (one move per label) lowers
+//       nothing, once per backend (boost, dynamic, and kolmogorov when built), and prints one
+//       tab-separated row: per backend the first-sweep time, the convergence time, the sweeps,
+//       the final energy, the share of moves that needed QPBO and the share solved on a
+//       recycled graph, then the peak resident size after the Boost run and after the dynamic
+//       run (the dynamic run comes second, so its figure is the process's peak).
+//   c2f-bench-expansion summarize ROWS.tsv
+//       Prints the markdown table of all rows and the medians of the dynamic / Boost ratios.
+//
+// The TSGO energy is built once per scene (its cost volume is on no clock). --downscale shrinks
+// the views by an integer factor and --labels sets the label count (default 85; scale it with
+// the size for the scaling study).
+
+#include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <cstdio>
-#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "c2f/c2f.hpp"
-#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-#include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
-#endif
+#include "c2f/core/number_text.hpp"
+#include "c2f/vision/stereo/middlebury.hpp"
+#include "c2f/vision/stereo/stereo_scene.hpp"
+#include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "support/anytime_trace.hpp"
 
 namespace {
 
 using namespace c2f;
 using Clock = std::chrono::steady_clock;
 
-struct Result {
+struct BackendRun {
   double first_sweep_s = 0.0;
   double converge_s = 0.0;
   int sweeps = 0;
-  bool converged = false;
-  double start_energy = 0.0;
   double final_energy = 0.0;
-  double flow_share = 0.0;
   double qpbo_share = 0.0;
+  double recycled_share = 0.0;
 };
 
+constexpr int kMaxSweeps = 40;
+
 template <class Backend>
-Result run(const PairwiseEnergy& energy, int max_sweeps) {
-  ExpansionSolver<Backend> solver;
-  const auto start_labeling = initial_labeling(energy, InitialLabeling::unary_argmin);
+BackendRun run_flat(const PairwiseEnergy& energy, std::size_t graph_memory_limit) {
+  MoveOptions options;
+  options.graph_memory_limit = graph_memory_limit;
+  ExpansionSolver<Backend> solver(options);
+  const Labeling start = initial_labeling(energy, InitialLabeling::unary_argmin);
   const auto t0 = Clock::now();
-  solver.bind(energy, start_labeling);
-  Result result;
-  result.start_energy = solver.energy();
-  double flow_seconds = 0.0;
-  long moves = 0, qpbo_moves = 0;
-  for (int sweep = 0; sweep < max_sweeps; ++sweep) {
-    bool changed = false;
-    for (std::size_t m = 0; m < solver.steps_per_sweep(energy.num_labels()); ++m) {
+  solver.bind(energy, start);
+  BackendRun result;
+  long moves = 0, qpbo = 0, recycled = 0;
+  const std::size_t sweep = solver.steps_per_sweep(energy.num_labels());
+  for (int s = 0; s < kMaxSweeps; ++s) {
+    bool improved = false;
+    for (std::size_t m = 0; m < sweep; ++m) {
       solver.step();
-      changed = changed || solver.last_step().improved;
-      flow_seconds += solver.last_step().flow_seconds;
-      qpbo_moves += solver.last_step().used_qpbo;
+      improved = improved || solver.last_step().improved;
+      qpbo += solver.last_step().used_qpbo;
+      recycled += solver.last_step().recycled;
       ++moves;
     }
     ++result.sweeps;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (sweep == 0) result.first_sweep_s = elapsed;
-    std::fprintf(stderr, "  sweep %d: energy %.3f at %.2f s\n", sweep + 1, solver.energy(),
-                 elapsed);
-    if (!changed) {
-      result.converged = true;
-      break;
-    }
+    if (s == 0) result.first_sweep_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (!improved) break;
   }
   result.converge_s = std::chrono::duration<double>(Clock::now() - t0).count();
   result.final_energy = solver.energy();
-  result.flow_share = flow_seconds / result.converge_s;
-  result.qpbo_share = static_cast<double>(qpbo_moves) / static_cast<double>(moves);
+  result.qpbo_share = static_cast<double>(qpbo) / static_cast<double>(moves);
+  result.recycled_share = static_cast<double>(recycled) / static_cast<double>(moves);
+  std::fprintf(stderr, "  %d sweeps, first %.2f s, converged %.2f s, energy %.6f\n",
+               result.sweeps, result.first_sweep_s, result.converge_s, result.final_energy);
   return result;
 }
 
-void print_row(const char* term, const char* backend, const Result& r) {
-  std::printf("| %s | %s | %.2f | %.2f | %d%s | %.3f | %.3f | %.0f%% | %.0f%% |\n", term, backend,
-              r.first_sweep_s, r.converge_s, r.sweeps, r.converged ? "" : " (cap)", r.start_energy,
-              r.final_energy, 100 * r.flow_share, 100 * r.qpbo_share);
+double peak_resident_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+const char* kColumns[] = {
+    "scene",           "pixels",           "labels",           "boost_first_s",
+    "boost_s",         "boost_sweeps",     "boost_energy",     "dynamic_first_s",
+    "dynamic_s",       "dynamic_sweeps",   "dynamic_energy",   "qpbo_share",
+    "recycled_share",  "boost_peak_mib",   "dynamic_peak_mib", "kolmogorov_first_s",
+    "kolmogorov_s",    "kolmogorov_energy"};
+
+int run_scene(const std::string& name, const std::string& data, int downscale, int labels,
+              std::size_t graph_memory_limit, bool header) {
+  const vision::StereoScene scene = vision::downscale(vision::load_named_scene(data, name),
+                                                      downscale);
+  vision::TsgoOptions tsgo;
+  tsgo.labels = labels;
+  const PairwiseEnergy energy =
+      vision::tsgo_energy(vision::tsgo_cost(scene.left, scene.right, tsgo), tsgo);
+  std::fprintf(stderr, "%s: %zu pixels, %d labels; boost\n", name.c_str(), scene.shape().size(),
+               labels);
+  const BackendRun boost = run_flat<BoostMaxFlow>(energy, graph_memory_limit);
+  const double boost_peak = peak_resident_mib();
+  std::fprintf(stderr, "%s: dynamic\n", name.c_str());
+  const BackendRun dynamic = run_flat<DynamicMaxFlow>(energy, graph_memory_limit);
+  const double dynamic_peak = peak_resident_mib();
+  BackendRun kolmogorov{std::nan(""), std::nan(""), 0, std::nan(""), 0.0, 0.0};
+#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
+  std::fprintf(stderr, "%s: kolmogorov\n", name.c_str());
+  kolmogorov = run_flat<KolmogorovMaxFlow>(energy, graph_memory_limit);
+#endif
+  if (header) {
+    for (std::size_t i = 0; i < std::size(kColumns); ++i)
+      std::printf("%s%s", i ? "\t" : "", kColumns[i]);
+    std::printf("\n");
+  }
+  std::printf(
+      "%s\t%zu\t%d\t%.3f\t%.3f\t%d\t%.6f\t%.3f\t%.3f\t%d\t%.6f\t%.3f\t%.3f\t%.0f\t%.0f\t%.3f\t%.3f"
+      "\t%.6f\n",
+      name.c_str(), scene.shape().size(), labels, boost.first_sweep_s, boost.converge_s,
+      boost.sweeps, boost.final_energy, dynamic.first_sweep_s, dynamic.converge_s, dynamic.sweeps,
+      dynamic.final_energy, dynamic.qpbo_share, dynamic.recycled_share, boost_peak, dynamic_peak,
+      kolmogorov.first_sweep_s, kolmogorov.converge_s, kolmogorov.final_energy);
+  return 0;
+}
+
+int summarize(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::printf(
+      "| scene | pixels x labels | Boost first sweep (s) | dynamic first sweep (s) | ratio | Boost "
+      "converged (s) | dynamic converged (s) | ratio | sweeps Boost / dynamic | final energy "
+      "difference | QPBO moves | recycled moves | peak MiB Boost / dynamic |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<double> first_ratio, converge_ratio, energy_difference, peak;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.rfind("scene\t", 0) == 0) continue;
+    std::vector<std::string> f;
+    std::stringstream stream(line);
+    for (std::string field; std::getline(stream, field, '\t');) f.push_back(field);
+    if (f.size() != std::size(kColumns))
+      throw std::runtime_error("malformed row in '" + path + "': " + line);
+    auto number = [&](std::size_t i) {
+      const std::optional<double> value = parse_real(f[i]);
+      return value ? *value : std::nan("");
+    };
+    const double first = number(7) / number(3);
+    const double converge = number(8) / number(4);
+    const double difference = (number(10) - number(6)) / number(6);
+    first_ratio.push_back(first);
+    converge_ratio.push_back(converge);
+    energy_difference.push_back(difference);
+    peak.push_back(number(14));
+    std::printf(
+        "| %s | %.1fM | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s / %s | %+.1e | %.0f%% | "
+        "%.0f%% | %.0f / %.0f |\n",
+        f[0].c_str(), number(1) * number(2) / 1e6, number(3), number(7), first, number(4),
+        number(8), converge, f[5].c_str(), f[9].c_str(), difference, 100 * number(11),
+        100 * number(12), number(13), number(14));
+  }
+  std::printf(
+      "| **median** | | | | **%.2f** | | | **%.2f** | | %+.1e | | | - / %.0f |\n",
+      bench::median(first_ratio), bench::median(converge_ratio),
+      bench::median(energy_difference), bench::median(peak));
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string data = "../shared/data";
-  int num_labels = 60;
-  int max_sweeps = 8;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--labels" && i + 1 < argc) {
-      num_labels = std::stoi(argv[++i]);
-    } else if (arg == "--max-sweeps" && i + 1 < argc) {
-      max_sweeps = std::stoi(argv[++i]);
-    } else if (arg == "--help" || arg == "-h") {
-      std::cout << "usage: c2f-bench-expansion [DATA_DIR] [--labels L] [--max-sweeps S]\n";
-      return 0;
-    } else {
-      data = arg;
-    }
-  }
   try {
-    const std::string scene = data + "/middlebury/2003/Teddy";
-    const cv::Mat left = vision::load_colour_image(scene + "/left.png");
-    const cv::Mat right = vision::load_colour_image(scene + "/right.png");
-    const GridShape shape{static_cast<std::size_t>(left.cols), static_cast<std::size_t>(left.rows)};
-    const auto unaries = vision::absolute_difference_cost(left, right, num_labels, 20.0);
-    std::printf("Teddy %zux%zu, %d labels, truncated AD cost (20), 4-connected\n\n", shape.width,
-                shape.height, num_labels);
-    std::printf(
-        "| term | backend | first sweep (s) | to convergence (s) | sweeps | start energy | final "
-        "energy | "
-        "in max-flow | QPBO moves |\n|---|---|---|---|---|---|---|---|---|\n");
-    struct TermCase {
-      const char* name;
-      PairwiseTerm term;
-      double weight;
-    };
-    for (const TermCase& c : {TermCase{"Potts (w=8)", PairwiseTerm::potts(), 8.0},
-                              TermCase{"TSGO step (w=16)", PairwiseTerm::tsgo_step(), 16.0}}) {
-      const PairwiseEnergy energy =
-          make_grid_energy(shape, Connectivity::four, num_labels, unaries, c.term,
-                           [&](VariableIndex, VariableIndex) { return c.weight; });
-      std::fprintf(stderr, "%s, Boost:\n", c.name);
-      const Result boost = run<BoostMaxFlow>(energy, max_sweeps);
-      print_row(c.name, "Boost BK", boost);
-#ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-      std::fprintf(stderr, "%s, libmaxflow:\n", c.name);
-      const Result kolmogorov = run<KolmogorovMaxFlow>(energy, max_sweeps);
-      print_row(c.name, "libmaxflow", kolmogorov);
-      std::printf("| %s | ratio Boost/libmaxflow | %.2f | %.2f | | | | | |\n", c.name,
-                  boost.first_sweep_s / kolmogorov.first_sweep_s,
-                  boost.converge_s / kolmogorov.converge_s);
-#endif
-      std::fflush(stdout);
+    if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
+    if (argc < 3 || std::string(argv[1]) != "run") {
+      std::cerr << "usage: c2f-bench-expansion run SCENE [--data DIR] [--downscale K] "
+                   "[--labels L] [--graph-memory GIB] [--header]\n"
+                   "       c2f-bench-expansion summarize ROWS.tsv\n";
+      return 2;
     }
+    std::string data = "../shared/data";
+    long long downscale = 1, labels = 85;
+    double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+    bool header = false;
+    for (int i = 3; i < argc; ++i) {
+      const std::string arg = argv[i];
+      const bool has_value = i + 1 < argc;
+      if (arg == "--data" && has_value) {
+        data = argv[++i];
+      } else if (arg == "--downscale" && has_value) {
+        downscale = parse_integer(argv[++i]).value_or(0);
+        if (downscale < 1 || downscale > 16)
+          throw std::invalid_argument("--downscale: an integer in [1, 16]");
+      } else if (arg == "--labels" && has_value) {
+        labels = parse_integer(argv[++i]).value_or(0);
+        if (labels < 2 || labels > 1024)
+          throw std::invalid_argument("--labels: an integer in [2, 1024]");
+      } else if (arg == "--graph-memory" && has_value) {
+        graph_memory_gib = parse_real(argv[++i]).value_or(-1.0);
+        if (!(graph_memory_gib >= 0.0 && graph_memory_gib <= 1024.0))
+          throw std::invalid_argument("--graph-memory: must be in [0, 1024] GiB");
+      } else if (arg == "--header") {
+        header = true;
+      } else {
+        throw std::invalid_argument("unknown argument '" + arg + "'");
+      }
+    }
+    return run_scene(argv[2], data, static_cast<int>(downscale), static_cast<int>(labels),
+                     static_cast<std::size_t>(graph_memory_gib * (1 << 30)), header);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-expansion: error: " << error.what() << "\n";
     return 2;
   }
-  return 0;
 }

@@ -3,8 +3,10 @@
 //
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
+//                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
-//       with the same solver (alpha-expansion with the given label order, Boost max-flow),
+//       with the same solver (alpha-expansion with the given label order on the given max-flow
+//       backend, default dynamic),
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
@@ -35,6 +37,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
@@ -79,12 +82,16 @@ struct Settings {
   double time_limit = 600;
   VisitOrder label_order = VisitOrder::sequential;
   double coarse_tolerance = 0.0;
+  MaxFlowKind maxflow = MaxFlowKind::dynamic;
+  int downscale = 1;  ///< shrink the views by this factor (the scaling study)
+  int labels = 85;
 };
 
+template <class Backend>
 Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::string& schedule,
           const Settings& settings, const std::string& trace_path) {
   ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape());
-  ExpansionSolver<> solver(ExpansionOptions{settings.label_order});
+  ExpansionSolver<Backend> solver(ExpansionOptions{settings.label_order});
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
@@ -107,13 +114,19 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::str
 
 int run_scene(const std::string& name, const std::string& data, const std::string& out,
               const Settings& settings, bool header) {
-  const StereoScene scene = load_named_scene(data, name);
+  const StereoScene scene = downscale(load_named_scene(data, name), settings.downscale);
   const GridShape shape = scene.shape();
   TsgoOptions tsgo;
+  tsgo.labels = settings.labels;
   const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
   std::filesystem::create_directories(out);
-  const Run flat = solve(energy, scene, "flat", settings, out + "/" + name + "-flat.csv");
-  const Run c2f = solve(energy, scene, settings.schedule, settings, out + "/" + name + "-c2f.csv");
+  auto solve_with = [&](const std::string& schedule, const std::string& trace) {
+    return with_maxflow_backend(settings.maxflow, [&]<class Backend>(Backend) {
+      return solve<Backend>(energy, scene, schedule, settings, trace);
+    });
+  };
+  const Run flat = solve_with("flat", out + "/" + name + "-flat.csv");
+  const Run c2f = solve_with(settings.schedule, out + "/" + name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -244,7 +257,8 @@ int main(int argc, char** argv) {
     if (argc < 3 || std::string(argv[1]) != "run") {
       std::cerr << "usage: c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] "
                    "[--schedule TEXT]\n"
-                   "           [--label-order ORDER] [--coarse-tolerance T] [--header]\n"
+                   "           [--label-order ORDER] [--coarse-tolerance T] [--maxflow NAME] "
+                   "[--downscale K] [--labels L] [--header]\n"
                    "       c2f-bench-stereo summarize ROWS.tsv\n";
       return 2;
     }
@@ -265,12 +279,21 @@ int main(int argc, char** argv) {
         settings.label_order = visit_order_from_string(argv[++i]);
       else if (arg == "--coarse-tolerance" && i + 1 < argc)
         settings.coarse_tolerance = std::stod(argv[++i]);
+      else if (arg == "--downscale" && i + 1 < argc)
+        settings.downscale = static_cast<int>(parse_integer(argv[++i]).value_or(0));
+      else if (arg == "--labels" && i + 1 < argc)
+        settings.labels = static_cast<int>(parse_integer(argv[++i]).value_or(0));
+      else if (arg == "--maxflow" && i + 1 < argc)
+        settings.maxflow = maxflow_kind_from_string(argv[++i]);
       else if (arg == "--header")
         header = true;
       else
         throw std::invalid_argument("unknown argument '" + arg + "'");
     }
     parse_stereo_schedule(settings.schedule);  // a bad schedule fails before the first solve
+    if (settings.downscale < 1 || settings.downscale > 16 || settings.labels < 2 ||
+        settings.labels > 1024)
+      throw std::invalid_argument("--downscale must be an integer in [1, 16], --labels in [2, 1024]");
     if (!(settings.coarse_tolerance >= 0.0 && settings.coarse_tolerance < 1.0))
       throw std::invalid_argument("--coarse-tolerance must be in [0, 1)");
     return run_scene(argv[2], data, out, settings, header);
