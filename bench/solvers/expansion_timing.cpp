@@ -2,9 +2,10 @@
 // in one process: the same energy, start labeling, label order, moves and clock.
 //
 //   c2f-bench-expansion run SCENE [--data DIR] [--downscale K] [--labels L] [--graph-memory GIB]
-//                       [--header]
+//                       [--with-kolmogorov] [--header]
 //       Runs expansion from the unary argmin until a whole sweep (one move per label) lowers
-//       nothing, once per backend (boost, dynamic, and kolmogorov when built), and prints one
+//       nothing, once per backend (boost, dynamic, and with --with-kolmogorov in builds that
+//       have it libmaxflow), and prints one
 //       tab-separated row: per backend the first-sweep time, the convergence time, the sweeps,
 //       the final energy, the share of moves that needed QPBO and the share solved on a
 //       recycled graph, then the peak resident size after the Boost run and after the dynamic
@@ -98,7 +99,7 @@ const char* kColumns[] = {
     "kolmogorov_s",    "kolmogorov_energy"};
 
 int run_scene(const std::string& name, const std::string& data, int downscale, int labels,
-              std::size_t graph_memory_limit, bool header) {
+              std::size_t graph_memory_limit, bool with_kolmogorov, bool header) {
   const vision::StereoScene scene = vision::downscale(vision::load_named_scene(data, name),
                                                       downscale);
   vision::TsgoOptions tsgo;
@@ -113,10 +114,14 @@ int run_scene(const std::string& name, const std::string& data, int downscale, i
   const BackendRun dynamic = run_flat<DynamicMaxFlow>(energy, graph_memory_limit);
   const double dynamic_peak = peak_resident_mib();
   BackendRun kolmogorov{std::nan(""), std::nan(""), 0, std::nan(""), 0.0, 0.0};
+  if (with_kolmogorov) {
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
-  std::fprintf(stderr, "%s: kolmogorov\n", name.c_str());
-  kolmogorov = run_flat<KolmogorovMaxFlow>(energy, graph_memory_limit);
+    std::fprintf(stderr, "%s: kolmogorov\n", name.c_str());
+    kolmogorov = run_flat<KolmogorovMaxFlow>(energy, graph_memory_limit);
+#else
+    throw std::invalid_argument("--with-kolmogorov: this build has no libmaxflow backend");
 #endif
+  }
   if (header) {
     for (std::size_t i = 0; i < std::size(kColumns); ++i)
       std::printf("%s%s", i ? "\t" : "", kColumns[i]);
@@ -181,14 +186,14 @@ int main(int argc, char** argv) {
     if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
     if (argc < 3 || std::string(argv[1]) != "run") {
       std::cerr << "usage: c2f-bench-expansion run SCENE [--data DIR] [--downscale K] "
-                   "[--labels L] [--graph-memory GIB] [--header]\n"
+                   "[--labels L] [--graph-memory GIB] [--with-kolmogorov] [--header]\n"
                    "       c2f-bench-expansion summarize ROWS.tsv\n";
       return 2;
     }
     std::string data = "../shared/data";
     long long downscale = 1, labels = 85;
     double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
-    bool header = false;
+    bool header = false, with_kolmogorov = false;
     for (int i = 3; i < argc; ++i) {
       const std::string arg = argv[i];
       const bool has_value = i + 1 < argc;
@@ -206,6 +211,8 @@ int main(int argc, char** argv) {
         graph_memory_gib = parse_real(argv[++i]).value_or(-1.0);
         if (!(graph_memory_gib >= 0.0 && graph_memory_gib <= 1024.0))
           throw std::invalid_argument("--graph-memory: must be in [0, 1024] GiB");
+      } else if (arg == "--with-kolmogorov") {
+        with_kolmogorov = true;
       } else if (arg == "--header") {
         header = true;
       } else {
@@ -213,7 +220,8 @@ int main(int argc, char** argv) {
       }
     }
     return run_scene(argv[2], data, static_cast<int>(downscale), static_cast<int>(labels),
-                     static_cast<std::size_t>(graph_memory_gib * (1 << 30)), header);
+                     static_cast<std::size_t>(graph_memory_gib * (1 << 30)), with_kolmogorov,
+                     header);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-expansion: error: " << error.what() << "\n";
     return 2;
