@@ -14,7 +14,9 @@
 
 #include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
+#include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/core/grid.hpp"
+#include "support/stereo_sized_energy.hpp"
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
 #include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
 #endif
@@ -112,6 +114,63 @@ void BM_Resolve(benchmark::State& state) {
   }
 }
 
+/// The binary problem (d, p) of the expansion move to alpha from `labeling` (as ExpansionSolver
+/// builds it).
+void expansion_problem(const PairwiseEnergy& energy, const Labeling& labeling, Label alpha,
+                       std::vector<double>& d, std::vector<double>& p) {
+  d.assign(energy.num_variables(), 0.0);
+  p.assign(energy.edges().size(), 0.0);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    d[i] = energy.unary(i, alpha) - energy.unary(i, labeling[i]);
+  const auto edges = energy.edges();
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Edge& edge = edges[e];
+    const Label xu = labeling[edge.u], xv = labeling[edge.v];
+    add_binary_term(d, p, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
+                    energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
+                    energy.pairwise_cost(edge, alpha, alpha));
+  }
+}
+
+/// One expansion move per iteration, alternating between the unary argmin labeling and a copy
+/// with state.range(0)% of the pixels relabelled at random; the move is keyed, so DynamicMaxFlow
+/// re-solves its own graph.
+template <class Backend>
+void BM_ExpansionMove(benchmark::State& state) {
+  const PairwiseEnergy& energy = bench::stereo_sized_energy();
+  Labeling base(energy.num_variables());
+  for (std::size_t i = 0; i < base.size(); ++i) {
+    Label best = 0;
+    for (Label l = 1; l < energy.num_labels(); ++l)
+      if (energy.unary(i, l) < energy.unary(i, best)) best = l;
+    base[i] = best;
+  }
+  Labeling changed = base;
+  std::mt19937_64 rng(7);
+  std::bernoulli_distribution pick(static_cast<double>(state.range(0)) / 100.0);
+  std::uniform_int_distribution<Label> label(0, static_cast<Label>(energy.num_labels() - 1));
+  for (Label& l : changed)
+    if (pick(rng)) l = label(rng);
+  constexpr Label kAlpha = 40;
+  std::vector<double> d_base, p_base, d_changed, p_changed;
+  expansion_problem(energy, base, kAlpha, d_base, p_base);
+  expansion_problem(energy, changed, kAlpha, d_changed, p_changed);
+  BinaryMoveSolver<Backend> moves;
+  moves.bind(energy);
+  moves.recycle(1, std::size_t{1} << 32);
+  std::vector<MoveLabel> out(energy.num_variables());
+  moves.solve(d_base, p_base, out, 0);
+  moves.solve(d_changed, p_changed, out, 0);  // the key's own graph from here on
+  bool use_changed = false;
+  bool qpbo = false;
+  for (auto _ : state) {
+    qpbo = moves.solve(use_changed ? d_changed : d_base, use_changed ? p_changed : p_base, out, 0)
+               .used_qpbo;
+    use_changed = !use_changed;
+  }
+  state.counters["qpbo"] = qpbo;
+}
+
 #define C2F_RESOLVE_ARGS ->Args({512, 1})->Args({512, 10})->Args({1024, 1})->Args({1024, 10})
 
 BENCHMARK_TEMPLATE(BM_Build, DynamicMaxFlow)
@@ -126,6 +185,8 @@ BENCHMARK_TEMPLATE(BM_Solve, DynamicMaxFlow)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Resolve, DynamicMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Resolve, BoostMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ExpansionMove, DynamicMaxFlow)->Arg(1)->Arg(10)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ExpansionMove, BoostMaxFlow)->Arg(1)->Arg(10)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Build, BoostMaxFlow)
     ->Arg(64)
     ->Arg(512)
@@ -148,6 +209,10 @@ BENCHMARK_TEMPLATE(BM_Solve, KolmogorovMaxFlow)
     ->Arg(1024)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Resolve, KolmogorovMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ExpansionMove, KolmogorovMaxFlow)
+    ->Arg(1)
+    ->Arg(10)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "c2f/adapters/icm/icm.hpp"
 #include "c2f/adapters/lbp/lbp.hpp"
 #include "c2f/adapters/maxflow/boost_maxflow.hpp"
+#include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
 #include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/anytime_solver.hpp"
