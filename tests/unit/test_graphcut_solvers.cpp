@@ -2,12 +2,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <tuple>
 
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "support/backends.hpp"
+#include "support/random_models.hpp"
 #include "support/tiny_models.hpp"
 
 using namespace c2f;
@@ -274,12 +276,51 @@ TEST_CASE("the graph memory limit bounds how many labels recycle their graphs",
   // Potts moves are submodular: one plain graph per label, with the problem it holds (d, p).
   const std::size_t per_label =
       DynamicMaxFlow::memory_bytes_for(100, 180) + (100 + 180) * sizeof(double);
-  for (const std::size_t labels_that_fit : {0, 1, 2, 5}) {
+  // Limits below 4 x the five labels' move problems (5 x 280 doubles) keep no problems, so
+  // the whole limit goes to graphs.
+  for (const std::size_t labels_that_fit : {0, 1, 2, 3}) {
     ExpansionOptions options;
     options.graph_memory_limit = labels_that_fit * per_label + per_label / 2;
     ExpansionSolver<DynamicMaxFlow> solver(options);
     std::size_t recycled = 0;
     labelings_of_run(solver, energy, 15, &recycled);  // three sweeps of 5 labels
     CHECK(recycled == labels_that_fit);
+  }
+}
+
+TEST_CASE("patched expansion problems are bitwise the problems computed in full",
+          "[expansion][recycling]") {
+  Rng rng(17);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int num_labels = 3 + trial;
+    const PairwiseEnergy energy = random_grid_energy(rng, 9, 7, num_labels);  // real costs
+    detail::ExpansionProblems kept, scratch;
+    kept.bind(energy, std::size_t{1} << 30);
+    scratch.bind(energy, 0);  // nothing kept: every problem computed in full
+    REQUIRE(kept.memory_bytes() > 0);
+    REQUIRE(scratch.memory_bytes() == 0);
+    Labeling labeling = random_labeling(rng, energy.num_variables(), num_labels);
+    std::uniform_int_distribution<Label> label(0, static_cast<Label>(num_labels - 1));
+    std::uniform_int_distribution<VariableIndex> variable(
+        0, static_cast<VariableIndex>(energy.num_variables() - 1));
+    for (int move = 0; move < 60; ++move) {
+      const Label alpha = label(rng);
+      std::span<const double> d_kept, p_kept, d_full, p_full;
+      kept.update(alpha, labeling, d_kept, p_kept);
+      scratch.update(alpha, labeling, d_full, p_full);
+      INFO("trial " << trial << ", move " << move);
+      CHECK(std::equal(d_kept.begin(), d_kept.end(), d_full.begin(), d_full.end()));
+      CHECK(std::equal(p_kept.begin(), p_kept.end(), p_full.begin(), p_full.end()));
+      // An accepted move changes a few variables (fewer than N / 8, so the next problems of
+      // the labels seen before are patched).
+      std::vector<VariableIndex> changed;
+      for (int k = 0; k < 3; ++k) {
+        const VariableIndex v = variable(rng);
+        labeling[v] = label(rng);
+        changed.push_back(v);
+      }
+      kept.log_changes(changed);
+      scratch.log_changes(changed);
+    }
   }
 }

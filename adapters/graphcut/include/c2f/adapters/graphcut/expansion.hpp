@@ -7,6 +7,9 @@
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
 // level handed a labeling, or on the original problem after coarse levels, the moves that
 // matter come first and a plateau rule is not fired by a run of unused labels).
+// Each label's move problem is kept and patched where accepted moves changed the labeling
+// (detail/expansion_problems.hpp), and on the default backend each label's graph is recycled
+// (binary_move.hpp), so late moves cost in proportion to what changed since the label's last.
 // Each move's binary problem goes straight into the max-flow graph when all its pairwise
 // terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
 // QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/expansion_problems.hpp"
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
@@ -47,10 +51,14 @@ class ExpansionSolver {
     return static_cast<std::size_t>(num_labels);
   }
 
-  /// Starts from `start` (validated); builds the move graph of the energy's topology.
+  /// Starts from `start` (validated); fixes the move graphs' topology. Of
+  /// options.graph_memory_limit, up to a quarter keeps every label's move problem (d, p) for
+  /// patching, the rest recycled move graphs.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
+    problems_.bind(energy, options_.graph_memory_limit / 4);
     state_.bind(energy, start, "ExpansionSolver::bind: start",
-                static_cast<std::size_t>(energy.num_labels()), options_.graph_memory_limit);
+                static_cast<std::size_t>(energy.num_labels()),
+                options_.graph_memory_limit - problems_.memory_bytes());
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -65,31 +73,20 @@ class ExpansionSolver {
   double step() {
     if (state_.energy == nullptr)
       throw std::logic_error("ExpansionSolver::step: call bind() first");
-    const PairwiseEnergy& energy = *state_.energy;
     const Labeling& labeling = state_.labeling;
-    std::vector<double>& d = state_.d;
-    std::vector<double>& p = state_.p;
     const Label alpha = cycle_.next();
-    for (std::size_t i = 0; i < d.size(); ++i)
-      d[i] = energy.unary(i, alpha) - energy.unary(i, labeling[i]);
-    std::fill(p.begin(), p.end(), 0.0);
-    const auto edges = energy.edges();
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      const Edge& edge = edges[e];
-      const Label xu = labeling[edge.u];
-      const Label xv = labeling[edge.v];
-      add_binary_term(d, p, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
-                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
-                      energy.pairwise_cost(edge, alpha, alpha));
-    }
-    last_ = state_.solve_move(alpha, alpha, static_cast<std::size_t>(alpha));
-    std::size_t changed = 0;
+    std::span<const double> d, p;
+    problems_.update(alpha, labeling, d, p);
+    last_ = state_.solve_move(alpha, alpha, static_cast<std::size_t>(alpha), d, p);
+    moved_.clear();
     for (std::size_t i = 0; i < labeling.size(); ++i) {
       const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;
       state_.candidate[i] = to_alpha ? alpha : labeling[i];
-      changed += to_alpha;
+      if (to_alpha) moved_.push_back(static_cast<VariableIndex>(i));
     }
-    return state_.finish_move(last_, changed, options_.tolerance);
+    const double value = state_.finish_move(last_, moved_.size(), options_.tolerance);
+    if (last_.improved) problems_.log_changes(moved_);
+    return value;
   }
 
   [[nodiscard]] double energy() const noexcept { return state_.value; }
@@ -100,6 +97,8 @@ class ExpansionSolver {
  private:
   ExpansionOptions options_;
   detail::MoveState<Backend> state_;
+  detail::ExpansionProblems problems_;
+  std::vector<VariableIndex> moved_;  // the variables the last move proposed to change
   MoveCycle<Label> cycle_;
   MoveStep last_;
 };

@@ -18,12 +18,14 @@ struct MoveOptions {
   /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
   /// that lowers the energy is accepted (and no move that keeps it equal).
   double tolerance = 0.0;
-  /// Bytes the recycled move graphs may take (see binary_move.hpp): with a backend that
-  /// resumes from its previous flow (the default DynamicMaxFlow), each label (expansion) or
-  /// label pair (swap) keeps its own graphs while they fit, so a repeated move costs in
-  /// proportion to what changed since; moves beyond the limit share graphs solved from zero
-  /// flow. 0 turns recycling off. Results do not depend on it, only time and memory.
-  std::size_t graph_memory_limit = std::size_t{3} << 30;
+  /// Bytes recycling may take. With a backend that resumes from its flow (the default
+  /// DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move graphs from
+  /// its second move on while they fit (binary_move.hpp), so a repeated move costs in
+  /// proportion to what changed since; moves beyond the limit share one graph. Expansion also
+  /// keeps every label's move problem for patching when that fits in a quarter of the limit
+  /// (detail/expansion_problems.hpp). 0 turns both off. With exact arithmetic results do not
+  /// depend on it; with rounding, ties between minimum cuts may break differently.
+  std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;

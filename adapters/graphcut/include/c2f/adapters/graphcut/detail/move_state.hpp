@@ -49,7 +49,13 @@ struct MoveState {
   /// step record of a move between alpha and beta (expansion: beta == alpha) with the solver's
   /// statistics.
   MoveStep solve_move(Label alpha, Label beta, std::size_t key) {
-    const BinaryMoveStats stats = moves.solve(d, p, out, key);
+    return solve_move(alpha, beta, key, d, p);
+  }
+
+  /// The same for a binary problem held elsewhere.
+  MoveStep solve_move(Label alpha, Label beta, std::size_t key, std::span<const double> move_d,
+                      std::span<const double> move_p) {
+    const BinaryMoveStats stats = moves.solve(move_d, move_p, out, key);
     MoveStep step;
     step.alpha = alpha;
     step.beta = beta;
