@@ -2,8 +2,9 @@
 // and solving it (capacities reset each time, every solve from zero flow) are measured
 // separately, and so are re-solves after changing 1% or 10% of the nodes' terminal capacities
 // (the graph alternates between two capacity sets; DynamicMaxFlow changes what differs and
-// resumes from its flow, resolve_with, the others solve from zero). The problem is a segmentation-like cut: terminal
-// capacities from a smooth random field plus noise, neighbour capacities 1.
+// resumes from its flow, resolve_with, the others solve from zero). The problem is a
+// segmentation-like cut: terminal capacities from a smooth random field plus noise, neighbour
+// capacities 1.
 
 #include <benchmark/benchmark.h>
 
@@ -12,9 +13,9 @@
 #include <map>
 #include <random>
 
+#include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
-#include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/core/grid.hpp"
 #include "support/stereo_sized_energy.hpp"
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
@@ -185,7 +186,10 @@ BENCHMARK_TEMPLATE(BM_Solve, DynamicMaxFlow)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Resolve, DynamicMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Resolve, BoostMaxFlow) C2F_RESOLVE_ARGS->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_ExpansionMove, DynamicMaxFlow)->Arg(1)->Arg(10)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ExpansionMove, DynamicMaxFlow)
+    ->Arg(1)
+    ->Arg(10)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_ExpansionMove, BoostMaxFlow)->Arg(1)->Arg(10)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Build, BoostMaxFlow)
     ->Arg(64)

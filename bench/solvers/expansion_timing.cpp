@@ -21,10 +21,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -80,8 +80,8 @@ BackendRun run_flat(const PairwiseEnergy& energy, std::size_t graph_memory_limit
   result.final_energy = solver.energy();
   result.qpbo_share = static_cast<double>(qpbo) / static_cast<double>(moves);
   result.recycled_share = static_cast<double>(recycled) / static_cast<double>(moves);
-  std::fprintf(stderr, "  %d sweeps, first %.2f s, converged %.2f s, energy %.6f\n",
-               result.sweeps, result.first_sweep_s, result.converge_s, result.final_energy);
+  std::fprintf(stderr, "  %d sweeps, first %.2f s, converged %.2f s, energy %.6f\n", result.sweeps,
+               result.first_sweep_s, result.converge_s, result.final_energy);
   return result;
 }
 
@@ -92,16 +92,16 @@ double peak_resident_mib() {
 }
 
 const char* kColumns[] = {
-    "scene",           "pixels",           "labels",           "boost_first_s",
-    "boost_s",         "boost_sweeps",     "boost_energy",     "dynamic_first_s",
-    "dynamic_s",       "dynamic_sweeps",   "dynamic_energy",   "qpbo_share",
-    "recycled_share",  "boost_peak_mib",   "dynamic_peak_mib", "kolmogorov_first_s",
-    "kolmogorov_s",    "kolmogorov_energy"};
+    "scene",          "pixels",           "labels",           "boost_first_s",
+    "boost_s",        "boost_sweeps",     "boost_energy",     "dynamic_first_s",
+    "dynamic_s",      "dynamic_sweeps",   "dynamic_energy",   "qpbo_share",
+    "recycled_share", "boost_peak_mib",   "dynamic_peak_mib", "kolmogorov_first_s",
+    "kolmogorov_s",   "kolmogorov_energy"};
 
 int run_scene(const std::string& name, const std::string& data, int downscale, int labels,
               std::size_t graph_memory_limit, bool with_kolmogorov, bool header) {
-  const vision::StereoScene scene = vision::downscale(vision::load_named_scene(data, name),
-                                                      downscale);
+  const vision::StereoScene scene =
+      vision::downscale(vision::load_named_scene(data, name), downscale);
   vision::TsgoOptions tsgo;
   tsgo.labels = labels;
   const PairwiseEnergy energy =
@@ -172,10 +172,9 @@ int summarize(const std::string& path) {
         number(8), converge, f[5].c_str(), f[9].c_str(), difference, 100 * number(11),
         100 * number(12), number(13), number(14));
   }
-  std::printf(
-      "| **median** | | | | **%.2f** | | | **%.2f** | | %+.1e | | | - / %.0f |\n",
-      bench::median(first_ratio), bench::median(converge_ratio),
-      bench::median(energy_difference), bench::median(peak));
+  std::printf("| **median** | | | | **%.2f** | | | **%.2f** | | %+.1e | | | - / %.0f |\n",
+              bench::median(first_ratio), bench::median(converge_ratio),
+              bench::median(energy_difference), bench::median(peak));
   return 0;
 }
 

@@ -293,7 +293,8 @@ int main(int argc, char** argv) {
     parse_stereo_schedule(settings.schedule);  // a bad schedule fails before the first solve
     if (settings.downscale < 1 || settings.downscale > 16 || settings.labels < 2 ||
         settings.labels > 1024)
-      throw std::invalid_argument("--downscale must be an integer in [1, 16], --labels in [2, 1024]");
+      throw std::invalid_argument(
+          "--downscale must be an integer in [1, 16], --labels in [2, 1024]");
     if (!(settings.coarse_tolerance >= 0.0 && settings.coarse_tolerance < 1.0))
       throw std::invalid_argument("--coarse-tolerance must be in [0, 1)");
     return run_scene(argv[2], data, out, settings, header);

@@ -183,14 +183,14 @@ namespace {
 /// A grid energy with integer unaries and weights, so every move's capacities are exact in
 /// doubles and every minimum cut (the source set of the residual graph) is the same for any
 /// backend and any flow history.
-PairwiseEnergy integral_grid_energy(Rng& rng, std::size_t side, int num_labels,
-                                    PairwiseTerm term) {
+PairwiseEnergy integral_grid_energy(Rng& rng, std::size_t side, int num_labels, PairwiseTerm term) {
   std::uniform_int_distribution<int> unary(0, 9);
   std::uniform_int_distribution<int> weight(0, 4);
   std::vector<double> unaries(side * side * static_cast<std::size_t>(num_labels));
   for (double& u : unaries) u = unary(rng);
   return make_grid_energy({side, side}, Connectivity::four, num_labels, std::move(unaries),
-                          std::move(term), [&](VariableIndex, VariableIndex) { return weight(rng); });
+                          std::move(term),
+                          [&](VariableIndex, VariableIndex) { return weight(rng); });
 }
 
 /// Runs `steps` steps of a solver and returns every labeling it passed through. Counts the
@@ -248,8 +248,7 @@ TEST_CASE("recycled and shared move graphs make exactly the moves of graphs solv
     ExpansionSolver<DynamicMaxFlow> with_shared(shared);
     ExpansionSolver<BoostMaxFlow> boost;  // every move from zero flow
     const int steps = 6 * num_labels;
-    const auto recycled_run =
-        labelings_of_run(with_recycling, energy, steps, &recycled, &repeated);
+    const auto recycled_run = labelings_of_run(with_recycling, energy, steps, &recycled, &repeated);
     CHECK(recycled_run == labelings_of_run(with_shared, energy, steps, &recycled_with_shared));
     CHECK(recycled_run == labelings_of_run(boost, energy, steps));
     CHECK(recycled == repeated);

@@ -164,9 +164,10 @@ TEST_CASE("dynamic max-flow: re-solves after capacity changes equal solves from 
   }
 }
 
-TEST_CASE("dynamic max-flow: with integral capacities a re-solve finds exactly the source set "
-          "of a solve from zero flow",
-          "[maxflow][dynamic]") {
+TEST_CASE(
+    "dynamic max-flow: with integral capacities a re-solve finds exactly the source set "
+    "of a solve from zero flow",
+    "[maxflow][dynamic]") {
   // The nodes reachable from the source in the residual graph of any maximum flow are the same
   // set, so with exact arithmetic every backend must report it.
   Rng rng(77);
@@ -199,8 +200,8 @@ TEST_CASE("dynamic max-flow: tiny graphs, every re-solve equals the brute-force 
   Rng rng(5150);
   for (int trial = 0; trial < 200; ++trial) {
     const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 9)(rng);
-    auto problem = random_flow_problem(
-        rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
+    auto problem =
+        random_flow_problem(rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
     DynamicMaxFlow dynamic;
     dynamic.build(problem.num_nodes, problem.edges);
     dynamic.solve(problem.caps);

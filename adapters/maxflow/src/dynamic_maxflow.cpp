@@ -68,7 +68,7 @@ struct DynamicMaxFlow::Impl {
   std::vector<Node> nodes;  // num_nodes + 1 (the last one only closes the arc ranges)
   std::vector<Arc> arcs;
   std::vector<Index> forward_arc;  // edge e: its from -> to arc; the sister is to -> from
-  bool has_flow = false;  // solve() ran since build(): the dynamic changes apply
+  bool has_flow = false;           // solve() ran since build(): the dynamic changes apply
   Index time = 0;
   Index first_active = kNone, last_active = kNone;
   std::vector<Index> orphans, touched;
@@ -492,8 +492,7 @@ void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
   Impl& m = *impl_;
   if (m.nodes.empty()) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
   const bool sizes_fit = caps.source.size() == m.num_nodes && caps.sink.size() == m.num_nodes &&
-                         caps.forward.size() == m.num_edges &&
-                         caps.backward.size() == m.num_edges;
+                         caps.forward.size() == m.num_edges && caps.backward.size() == m.num_edges;
   if (!sizes_fit || !Impl::all_valid(caps.source) || !Impl::all_valid(caps.sink) ||
       !Impl::all_valid(caps.forward) || !Impl::all_valid(caps.backward)) {
     throw std::invalid_argument("DynamicMaxFlow::solve: " +

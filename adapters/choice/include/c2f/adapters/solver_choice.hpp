@@ -81,8 +81,8 @@ decltype(auto) with_maxflow_backend(MaxFlowKind kind, F&& f) {
 /// A solver and the options every move-making solver shares (MoveOptions, IcmOptions).
 struct SolverChoice {
   SolverKind kind = SolverKind::expansion;
-  VisitOrder order = VisitOrder::sequential;  ///< expansion, swap (labels), icm (variables)
-  std::uint64_t seed = 1;                     ///< for VisitOrder::random
+  VisitOrder order = VisitOrder::sequential;   ///< expansion, swap (labels), icm (variables)
+  std::uint64_t seed = 1;                      ///< for VisitOrder::random
   MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
   /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;

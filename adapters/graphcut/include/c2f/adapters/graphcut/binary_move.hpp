@@ -18,20 +18,19 @@
 // the move costs in proportion to what changed since that key's last move. A key's first move
 // uses a shared graph, re-solved from whatever move it solved before (a better start than zero
 // flow even for another label); from its second move on it has a graph of its own (a copy of
-// the graph solved last) while such graphs fit in a memory limit. Other backends solve every move from
-// zero flow.
+// the graph solved last) while such graphs fit in a memory limit. Other backends solve every move
+// from zero flow.
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
-#include <memory>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "c2f/adapters/graphcut/detail/move_graphs.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
 #include "c2f/core/pairwise_energy.hpp"
@@ -67,11 +66,7 @@ class BinaryMoveSolver {
     pairs_.assign(pairs.begin(), pairs.end());
     doubled_pairs_.clear();
     doubled_ready_ = false;
-    shared_[0] = MoveGraph{};
-    shared_[1] = MoveGraph{};
-    own_.clear();
-    last_key_[0] = last_key_[1] = kNoKey;
-    graph_bytes_ = 0;
+    graphs_.clear();
   }
 
   /// The topology of the moves of a pairwise energy: one binary variable per variable, one
@@ -87,13 +82,11 @@ class BinaryMoveSolver {
   /// graphs stay within memory_limit bytes. Only backends that resume from their flow
   /// (ReusingMaxFlow) recycle. Call after bind(); a later bind() ends recycling.
   void recycle(std::size_t num_keys, std::size_t memory_limit) {
-    own_.clear();
-    own_.resize(num_keys);
-    memory_limit_ = memory_limit;
+    graphs_.recycle(num_keys, memory_limit);
   }
 
   /// Bytes of the graphs the keys own so far.
-  [[nodiscard]] std::size_t recycled_bytes() const noexcept { return graph_bytes_; }
+  [[nodiscard]] std::size_t recycled_bytes() const noexcept { return graphs_.owned_bytes(); }
 
   /// Minimises the problem above. With every p[e] >= 0 one max-flow gives an exact minimiser
   /// and every variable is labelled. Otherwise QPBO (Kolmogorov and Rother 2007) on the doubled
@@ -115,7 +108,8 @@ class BinaryMoveSolver {
       finite &= std::isfinite(value);
     }
     for (const double value : d) finite &= std::isfinite(value);
-    if (!finite) throw std::invalid_argument("BinaryMoveSolver::solve: a coefficient is not finite");
+    if (!finite)
+      throw std::invalid_argument("BinaryMoveSolver::solve: a coefficient is not finite");
     const auto start = std::chrono::steady_clock::now();
     if (submodular) {
       node_values_.assign(d.begin(), d.end());
@@ -152,19 +146,9 @@ class BinaryMoveSolver {
   }
 
  private:
-  static constexpr std::size_t kNoKey = static_cast<std::size_t>(-1);
-
-  /// The n-node graph of submodular moves and the doubled graph of QPBO moves.
-  enum class GraphKind : std::size_t { plain = 0, qpbo = 1 };
-
-  /// A graph and, for a reusing backend, the problem it holds: the node coefficients (d, or
-  /// QPBO's adjusted d) and the pair coefficients p it was last solved for.
-  struct MoveGraph {
-    Backend graph;
-    bool built = false;
-    bool solved = false;
-    std::vector<double> node_values, pair_values;
-  };
+  static constexpr std::size_t kNoKey = detail::MoveGraphs<Backend>::kNoKey;
+  using GraphKind = detail::GraphKind;
+  using MoveGraph = detail::MoveGraph<Backend>;
 
   [[nodiscard]] std::size_t graph_nodes(GraphKind kind) const noexcept {
     return kind == GraphKind::plain ? num_nodes_ : 2 * num_nodes_;
@@ -175,38 +159,14 @@ class BinaryMoveSolver {
     return doubled_pairs_;
   }
 
-  /// The graph that solves a move of this key and kind. A key with a graph of its own gets it
-  /// back (stats.recycled). A key seen before without one gets one when it fits the memory
-  /// limit: a copy of the graph of this kind solved last. Otherwise (and on a key's first move,
-  /// which has nothing to recycle) the shared graph of this kind.
+  /// The graph that solves a move of this key and kind (detail::MoveGraphs), built.
   MoveGraph& graph_for(std::size_t key, GraphKind kind, BinaryMoveStats& stats) {
-    const auto k = static_cast<std::size_t>(kind);
-    MoveGraph* graph = nullptr;
-    if constexpr (ReusingMaxFlow<Backend>) {
-      if (key < own_.size()) {
-        OwnGraph& own = own_[key];
-        std::unique_ptr<MoveGraph>& mine = own.graphs[k];
-        const std::size_t bytes = graph_bytes(kind);
-        const bool seen = own.seen[k];
-        own.seen[k] = true;
-        if (mine) {
-          stats.recycled = true;
-        } else if (seen && graph_bytes_ + bytes <= memory_limit_) {
-          MoveGraph* last = last_graph(kind);
-          mine = last != nullptr ? std::make_unique<MoveGraph>(*last)
-                                 : std::make_unique<MoveGraph>();
-          graph_bytes_ += bytes;
-        }
-        graph = mine.get();
-      }
+    MoveGraph& graph = graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled);
+    if (!graph.built) {
+      graph.graph.build(graph_nodes(kind), graph_edges(kind));
+      graph.built = true;
     }
-    if (graph == nullptr) graph = &shared_[k];
-    if (!graph->built) {
-      graph->graph.build(graph_nodes(kind), graph_edges(kind));
-      graph->built = true;
-    }
-    last_key_[k] = graph == &shared_[k] ? kNoKey : key;
-    return *graph;
+    return graph;
   }
 
   /// One graph of this kind with its problem (what a key's graphs cost), in bytes.
@@ -215,13 +175,6 @@ class BinaryMoveSolver {
     if constexpr (ReusingMaxFlow<Backend>)
       bytes += Backend::memory_bytes_for(graph_nodes(kind), graph_edges(kind).size());
     return bytes;
-  }
-
-  /// The graph of this kind that solved last (null before the first such solve).
-  MoveGraph* last_graph(GraphKind kind) {
-    const auto k = static_cast<std::size_t>(kind);
-    if (last_key_[k] == kNoKey) return shared_[k].solved ? &shared_[k] : nullptr;
-    return own_[last_key_[k]].graphs[k].get();
   }
 
   /// Solves `graph` for node_values_ and p (a reusing backend: by changing what differs from
@@ -355,16 +308,7 @@ class BinaryMoveSolver {
   FlowCapacities plain_caps_;
   FlowCapacities qpbo_caps_;
   std::vector<char> in_source_;  // the last solve's source set
-  MoveGraph shared_[2];          // by GraphKind: moves without a graph of their own
-  struct OwnGraph {  // by GraphKind
-    std::array<std::unique_ptr<MoveGraph>, 2> graphs;
-    std::array<bool, 2> seen = {false, false};
-  };
-  std::vector<OwnGraph> own_;  // per key
-  std::size_t last_key_[2] = {kNoKey, kNoKey};  // whose graph of each kind solved last (kNoKey:
-                                               // the shared one)
-  std::size_t memory_limit_ = 0;
-  std::size_t graph_bytes_ = 0;
+  detail::MoveGraphs<Backend> graphs_;
 };
 
 }  // namespace c2f

@@ -98,9 +98,9 @@ class SwapSolver {
         d[edge.v] += energy.pairwise_cost(edge, xu, beta) - energy.pairwise_cost(edge, xu, alpha);
       }
     }
-    const auto pair_key = static_cast<std::size_t>(alpha) *
-                              static_cast<std::size_t>(state_.energy->num_labels()) +
-                          static_cast<std::size_t>(beta);
+    const auto pair_key =
+        static_cast<std::size_t>(alpha) * static_cast<std::size_t>(state_.energy->num_labels()) +
+        static_cast<std::size_t>(beta);
     last_ = state_.solve_move(alpha, beta, pair_key);
     std::size_t changed = 0;
     for (std::size_t i = 0; i < labeling.size(); ++i) {

@@ -88,14 +88,13 @@ static_assert(MaxFlow<DynamicMaxFlow>);
 /// A MaxFlow backend that can change a solved graph's capacities and re-solve from its flow,
 /// and be copied with that flow. Solvers keep one such graph per recurring problem (recycling).
 template <class G>
-concept ReusingMaxFlow =
-    MaxFlow<G> && std::copy_constructible<G> &&
+concept ReusingMaxFlow = MaxFlow<G> && std::copy_constructible<G> &&
     requires(G& g, FlowNode i, std::size_t e, double delta, std::size_t n, std::size_t m) {
-      g.change_terminal(i, delta);
-      g.change_edge(e, delta, delta);
-      g.resolve();
-      { G::memory_bytes_for(n, m) } -> std::convertible_to<std::size_t>;
-    };
+  g.change_terminal(i, delta);
+  g.change_edge(e, delta, delta);
+  g.resolve();
+  { G::memory_bytes_for(n, m) } -> std::convertible_to<std::size_t>;
+};
 
 static_assert(ReusingMaxFlow<DynamicMaxFlow>);
 

@@ -48,8 +48,7 @@ class ExpansionProblems {
   /// Bytes the kept problems take (0 when problems are not kept).
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     if (!kept_ || energy_ == nullptr) return 0;
-    return problems_.size() * (energy_->num_variables() + energy_->edges().size()) *
-           sizeof(double);
+    return problems_.size() * (energy_->num_variables() + energy_->edges().size()) * sizeof(double);
   }
 
   /// The problem of the move to alpha from `labeling` (the labeling the logged changes led to).
@@ -144,8 +143,8 @@ class ExpansionProblems {
 
   const PairwiseEnergy* energy_ = nullptr;
   bool kept_ = false;
-  std::vector<Problem> problems_;      // per label when kept, else one scratch problem
-  std::vector<VariableIndex> log_;     // variables changed by accepted moves, in order
+  std::vector<Problem> problems_;   // per label when kept, else one scratch problem
+  std::vector<VariableIndex> log_;  // variables changed by accepted moves, in order
   EdgeIncidence incidence_;
   std::vector<std::uint32_t> node_stamp_, edge_stamp_;
   std::uint32_t stamp_ = 0;
