@@ -60,7 +60,7 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
 void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
                    const SegmentationScene& scene, const TimedProblem& built,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const std::optional<double>& error) {
+                   const std::optional<double>& error, const InterruptWatch& interrupts) {
   std::ofstream report((out / "summary.txt").string());
   report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
          << ", " << scene.num_labels() << " labels (seeds: " << to_string(command.files.convention)
@@ -84,10 +84,18 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << "\nobserver (trace error, progress): " << summary.observer_seconds
          << " s off the run clock\n";
   if (error) report << "pixel error: " << 100.0 * *error << "%\n";
+  if (interrupts.interrupted()) {
+    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
+           << " steps: the labeling written is the best found so far\n";
+  }
 }
 
 void report_end(const examples::SegmentCommand& command, const Summary& summary,
-                const std::optional<double>& error) {
+                const std::optional<double>& error, const InterruptWatch& interrupts) {
+  if (interrupts.interrupted()) {
+    std::fprintf(stderr, "%s: interrupted by %s: wrote the best labeling found so far\n",
+                 "c2f-segment", interrupts.signal_name().c_str());
+  }
   if (command.quiet) return;
   if (error) std::fprintf(stderr, "c2f-segment: pixel error %.2f%%\n", 100.0 * *error);
   std::fprintf(stderr, "c2f-segment: final energy %.4f after %ld steps in %.2f s (%s); wrote %s\n",
@@ -99,6 +107,8 @@ void report_end(const examples::SegmentCommand& command, const Summary& summary,
 
 int main(int argc, char** argv) {
   try {
+    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+    const InterruptWatch interrupts;
     const auto parsed = examples::parse_segment_command(argc, argv);
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
@@ -118,12 +128,13 @@ int main(int argc, char** argv) {
         solve(command, built.problem, levels,
               examples::run_options(command, scene.num_labels(), command.classes),
               observe_all({std::ref(trace), ProgressPrinter("c2f-segment", command.quiet),
-                           std::ref(partitions)}));
+                           std::ref(partitions), interrupts.observer()}));
 
     const auto error = write_segmentation_outputs(command.out_dir, summary.labeling, scene);
-    write_summary(command.out_dir, command, scene, built, levels, summary, error);
+    write_summary(command.out_dir, command, scene, built, levels, summary, error, interrupts);
     partitions.write(command.out_dir, scene.shape());
-    report_end(command, summary, error);
+    report_end(command, summary, error, interrupts);
+    return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {
     std::cerr << "c2f-segment: error: " << error.what() << "\n";
     return 2;

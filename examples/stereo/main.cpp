@@ -48,7 +48,7 @@ StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, b
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const std::optional<BadPixelRates>& rates) {
+                   const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
   std::ofstream report((out / "summary.txt").string());
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
@@ -68,6 +68,10 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
            << "\nreference variant (bad>1 over all pixels): " << 100 * rates->reference_variant
            << "%\n";
   }
+  if (interrupts.interrupted()) {
+    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
+           << " steps: the labeling written is the best found so far\n";
+  }
 }
 
 void announce(const examples::StereoCommand& command, const StereoScene& scene) {
@@ -79,7 +83,11 @@ void announce(const examples::StereoCommand& command, const StereoScene& scene) 
 }
 
 void report_end(const examples::StereoCommand& command, const Summary& summary,
-                const std::optional<BadPixelRates>& rates) {
+                const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
+  if (interrupts.interrupted()) {
+    std::fprintf(stderr, "%s: interrupted by %s: wrote the best labeling found so far\n",
+                 "c2f-stereo", interrupts.signal_name().c_str());
+  }
   if (command.quiet) return;
   if (rates) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
   std::fprintf(stderr, "c2f-stereo: final energy %.4f after %ld steps in %.2f s (%s); wrote %s\n",
@@ -91,6 +99,8 @@ void report_end(const examples::StereoCommand& command, const Summary& summary,
 
 int main(int argc, char** argv) {
   try {
+    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+    const InterruptWatch interrupts;
     const auto parsed = examples::parse_stereo_command(argc, argv);
     if (!parsed) return 0;
     const examples::StereoCommand& command = *parsed;
@@ -109,13 +119,14 @@ int main(int argc, char** argv) {
     const Summary summary =
         coarse_to_fine(problem.energy, levels, command.solver, examples::run_options(command),
                        observe_all({std::ref(trace), ProgressPrinter("c2f-stereo", command.quiet),
-                                    std::ref(partitions)}));
+                                    std::ref(partitions), interrupts.observer()}));
 
     const auto rates =
         write_disparity_outputs(command.out_dir, summary.labeling, scene, command.tsgo.labels);
-    write_summary(out, command, scene, problem, levels, summary, rates);
+    write_summary(out, command, scene, problem, levels, summary, rates, interrupts);
     partitions.write(command.out_dir, scene.shape());
-    report_end(command, summary, rates);
+    report_end(command, summary, rates, interrupts);
+    return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {
     std::cerr << "c2f-stereo: error: " << error.what() << "\n";
     return 2;

@@ -1,6 +1,14 @@
 #include "support/run_tool.hpp"
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
 
 #include <array>
 #include <cstdio>
@@ -17,6 +25,28 @@ ToolResult run_tool(const std::string& binary, const std::string& arguments) {
   while (fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+ToolResult run_tool_interrupted(const std::string& binary, const std::string& arguments,
+                                double seconds, int signal) {
+  const auto log = std::filesystem::temp_directory_path() /
+                   ("c2f-interrupted-" + std::to_string(getpid()) + ".log");
+  const std::string command = "exec " + binary + " " + arguments + " > " + log.string() + " 2>&1";
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("cannot fork for '" + command + "'");
+  if (child == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+  kill(child, signal);
+  int status = 0;
+  waitpid(child, &status, 0);
+  std::ifstream in(log);
+  std::stringstream output;
+  output << in.rdbuf();
+  std::filesystem::remove(log);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output.str()};
 }
 
 }  // namespace c2f::test

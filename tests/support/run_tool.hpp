@@ -13,4 +13,9 @@ struct ToolResult {
 /// Runs `binary arguments` through the shell. Throws std::runtime_error when it cannot start.
 ToolResult run_tool(const std::string& binary, const std::string& arguments);
 
+/// Runs `binary arguments` (through the shell, which execs it), sends it `signal` after
+/// `seconds`, and waits for it. Throws std::runtime_error when it cannot start.
+ToolResult run_tool_interrupted(const std::string& binary, const std::string& arguments,
+                                double seconds, int signal);
+
 }  // namespace c2f::test

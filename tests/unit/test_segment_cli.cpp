@@ -3,8 +3,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "support/run_tool.hpp"
@@ -74,4 +76,24 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
     CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
+}
+
+TEST_CASE("c2f-segment stopped by SIGTERM writes the best labeling so far and exits 143",
+          "[segment][cli][interrupt]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-interrupt";
+  std::filesystem::remove_all(dir);
+  // Large enough, with the slow greedy strategy, that the run is still going at the signal.
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 400, 300, 4);
+  const std::string out = (dir / "out").string();
+  const auto r = c2f::test::run_tool_interrupted(
+      C2F_SEGMENT_BINARY,
+      files.image + " " + files.seeds + " -o " + out + " --aux greedy --schedule flat", 3.0,
+      SIGTERM);
+  INFO(r.output);
+  CHECK(r.exit_code == 143);
+  CHECK_THAT(r.output, Catch::Contains("interrupted by SIGTERM"));
+  std::ifstream summary(out + "/summary.txt");
+  const std::string text((std::istreambuf_iterator<char>(summary)), {});
+  CHECK_THAT(text, Catch::Contains("interrupted by SIGTERM after"));
+  CHECK(std::filesystem::exists(out + "/labels.png"));
 }

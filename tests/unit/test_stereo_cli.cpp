@@ -3,7 +3,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <csignal>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
@@ -116,4 +120,34 @@ TEST_CASE("c2f-stereo gives the same disparities on every max-flow backend", "[s
   const cv::Mat shared = solve("dynamic", " --graph-memory 0");
   CHECK(cv::countNonZero(boost != dynamic) == 0);
   CHECK(cv::countNonZero(boost != shared) == 0);
+}
+
+TEST_CASE("c2f-stereo stopped by SIGINT writes the best labeling so far and exits 130",
+          "[stereo][cli][interrupt]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-interrupt";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  // Large enough that the run is still going when the signal arrives (seconds of moves).
+  const auto pair = c2f::test::synthetic_pair(480, 360, 8, 40, 11);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  const std::string out = (dir / "out").string();
+  const auto r = c2f::test::run_tool_interrupted(C2F_STEREO_BINARY,
+                                                 (dir / "left.png").string() + " " +
+                                                     (dir / "right.png").string() + " -o " + out +
+                                                     " --labels 128 --schedule flat",
+                                                 2.5, SIGINT);
+  INFO(r.output);
+  CHECK(r.exit_code == 130);
+  CHECK_THAT(r.output, Catch::Contains("interrupted by SIGINT"));
+  std::ifstream summary(out + "/summary.txt");
+  const std::string text((std::istreambuf_iterator<char>(summary)), {});
+  CHECK_THAT(text, Catch::Contains("interrupted by SIGINT after") &&
+                       Catch::Contains("the labeling written is the best found so far"));
+  CHECK_THAT(text, Catch::Contains("(observer)"));
+  CHECK(cv::imread(out + "/disparity.png", cv::IMREAD_UNCHANGED).size() == cv::Size(480, 360));
+  std::ifstream trace(out + "/trace.csv");
+  std::string line, last;
+  while (std::getline(trace, line)) last = line;
+  CHECK(std::count(last.begin(), last.end(), ',') == 4);  // the last row is complete
 }

@@ -19,6 +19,7 @@
 #include "c2f/core/energy.hpp"
 #include "c2f/core/enum_names.hpp"
 #include "c2f/core/grid.hpp"
+#include "c2f/core/interrupt.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/observer.hpp"
