@@ -62,6 +62,7 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
                    const ScheduleProvider& levels, const Summary& summary,
                    const std::optional<double>& error, const InterruptWatch& interrupts) {
   std::ofstream report((out / "summary.txt").string());
+  if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
   report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
          << ", " << scene.num_labels() << " labels (seeds: " << to_string(command.files.convention)
          << ")\nmethod " << to_string(command.method);
@@ -88,6 +89,7 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
     report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
            << " steps: the labeling written is the best found so far\n";
   }
+  close_checked(report, "summary.txt");
 }
 
 void report_end(const examples::SegmentCommand& command, const Summary& summary,
@@ -116,13 +118,19 @@ int main(int argc, char** argv) {
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
     const Schedule schedule = schedule_for(command, scene.num_labels());
-    std::filesystem::create_directories(command.out_dir);
+    // Outputs are written into a staging folder and moved into place together at the end: a
+    // failed or crashed run leaves an earlier run's files as they were.
+    OutputFolder output(command.out_dir, {"labels.png", "overlay.png", "trace.csv", "summary.txt",
+                                          "partition-level*.png"});
+    const std::filesystem::path trace_path = output.stage(command.trace);
     const TimedProblem built = build_problem(scene, command);
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
-    std::ofstream trace_file = open_trace_file(command.trace);
-    TraceWriter trace(trace_file, scene.truth.empty() ? TraceWriter::ErrorFunction{}
-                                                      : pixel_error_function(scene));
+    std::ofstream trace_file = open_trace_file(trace_path.string());
+    TraceWriter trace(
+        trace_file,
+        scene.truth.empty() ? TraceWriter::ErrorFunction{} : pixel_error_function(scene),
+        "the trace '" + command.trace + "'");
     LevelPartitionRecorder partitions(command.save_partitions);
     const Summary summary =
         solve(command, built.problem, levels,
@@ -130,9 +138,12 @@ int main(int argc, char** argv) {
               observe_all({std::ref(trace), ProgressPrinter("c2f-segment", command.quiet),
                            std::ref(partitions), interrupts.observer()}));
 
-    const auto error = write_segmentation_outputs(command.out_dir, summary.labeling, scene);
-    write_summary(command.out_dir, command, scene, built, levels, summary, error, interrupts);
-    partitions.write(command.out_dir, scene.shape());
+    const auto error =
+        write_segmentation_outputs(output.staging().string(), summary.labeling, scene);
+    write_summary(output.staging(), command, scene, built, levels, summary, error, interrupts);
+    partitions.write(output.staging().string(), scene.shape());
+    close_checked(trace_file, "the trace '" + command.trace + "'");
+    output.commit();
     report_end(command, summary, error, interrupts);
     return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {

@@ -51,6 +51,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
                    const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
   std::ofstream report((out / "summary.txt").string());
+  if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
          << ", solver " << to_string(command.solver.kind) << ", max-flow "
@@ -72,6 +73,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
     report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
            << " steps: the labeling written is the best found so far\n";
   }
+  close_checked(report, "summary.txt");
 }
 
 void announce(const examples::StereoCommand& command, const StereoScene& scene) {
@@ -107,24 +109,31 @@ int main(int argc, char** argv) {
     const std::filesystem::path out(command.out_dir);
 
     const StereoScene scene = load_input(command);
-    std::filesystem::create_directories(out);
+    // Outputs are written into a staging folder and moved into place together at the end: a
+    // failed or crashed run leaves an earlier run's files as they were.
+    OutputFolder output(out, {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
+                              "trace.csv", "summary.txt", "partition-level*.png"});
+    const std::filesystem::path trace_path = output.stage(command.trace);
     announce(command, scene);
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.guide));
-    std::ofstream trace_file = open_trace_file(command.trace);
+    std::ofstream trace_file = open_trace_file(trace_path.string());
     TraceWriter trace(trace_file,
-                      scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene));
+                      scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
+                      "the trace '" + command.trace + "'");
     LevelPartitionRecorder partitions(command.save_partitions);
     const Summary summary =
         coarse_to_fine(problem.energy, levels, command.solver, examples::run_options(command),
                        observe_all({std::ref(trace), ProgressPrinter("c2f-stereo", command.quiet),
                                     std::ref(partitions), interrupts.observer()}));
 
-    const auto rates =
-        write_disparity_outputs(command.out_dir, summary.labeling, scene, command.tsgo.labels);
-    write_summary(out, command, scene, problem, levels, summary, rates, interrupts);
-    partitions.write(command.out_dir, scene.shape());
+    const auto rates = write_disparity_outputs(output.staging().string(), summary.labeling, scene,
+                                               command.tsgo.labels);
+    write_summary(output.staging(), command, scene, problem, levels, summary, rates, interrupts);
+    partitions.write(output.staging().string(), scene.shape());
+    close_checked(trace_file, "the trace '" + command.trace + "'");
+    output.commit();
     report_end(command, summary, rates, interrupts);
     return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
@@ -150,4 +151,55 @@ TEST_CASE("c2f-stereo stopped by SIGINT writes the best labeling so far and exit
   std::string line, last;
   while (std::getline(trace, line)) last = line;
   CHECK(std::count(last.begin(), last.end(), ',') == 4);  // the last row is complete
+}
+
+TEST_CASE("c2f-stereo replaces an earlier run's outputs only when it succeeds", "[stereo][cli]") {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / "c2f-test-cli-rerun";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 5);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  cv::Mat gt8;
+  pair.gt.convertTo(gt8, CV_8U, 4.0);
+  cv::imwrite((dir / "gt.png").string(), gt8);
+  const std::string inputs = (dir / "left.png").string() + " " + (dir / "right.png").string();
+  const fs::path out = dir / "out";
+  auto read_all = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      files[entry.path().filename().string()] = {std::istreambuf_iterator<char>(in), {}};
+    }
+    return files;
+  };
+  auto r = run(inputs + " -o " + out.string() + " --labels 10 --gt " + (dir / "gt.png").string() +
+               " --gt-divisor 4 --save-partitions -q");
+  REQUIRE(r.exit_code == 0);
+  {
+    std::ofstream notes(out / "notes.txt");
+    notes << "the user's own file";
+  }
+  const auto first = read_all();
+  REQUIRE(first.count("error.png") == 1);
+  REQUIRE(first.count("partition-level0.png") == 1);
+
+  // A run that fails late (every trace row is lost on /dev/full) changes nothing.
+  r = run(inputs + " -o " + out.string() + " --labels 12 --trace /dev/full -q");
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("the trace '/dev/full'"));
+  CHECK(read_all() == first);
+
+  // A successful run leaves exactly its own outputs (and the user's file).
+  r = run(inputs + " -o " + out.string() + " --labels 12 -q");
+  REQUIRE(r.exit_code == 0);
+  const auto second = read_all();
+  CHECK(second.count("error.png") == 0);
+  CHECK(second.count("partition-level0.png") == 0);
+  CHECK(second.at("notes.txt") == "the user's own file");
+  for (const char* file :
+       {"disparity.pfm", "disparity.png", "disparity-colour.png", "trace.csv", "summary.txt"})
+    CHECK(second.count(file) == 1);
+  CHECK(second.size() == 6);
 }

@@ -15,8 +15,8 @@ std::string trace_header(bool with_error) {
 
 }  // namespace
 
-TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error)
-    : out_(&out), error_(std::move(error)) {
+TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error, std::string name)
+    : out_(&out), error_(std::move(error)), name_(std::move(name)) {
   *out_ << trace_header(static_cast<bool>(error_)) << '\n';
 }
 
@@ -31,7 +31,7 @@ ObserverDecision TraceWriter::operator()(const StepEvent& event) {
     *out_ << row;
   }
   *out_ << '\n';
-  if (!*out_) throw std::runtime_error("trace: writing a row failed");
+  if (!*out_) throw std::runtime_error("writing a row of " + name_ + " failed");
   return ObserverDecision::continue_run;
 }
 

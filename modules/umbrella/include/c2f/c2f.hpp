@@ -23,6 +23,7 @@
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/observer.hpp"
+#include "c2f/core/output_folder.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/partition.hpp"

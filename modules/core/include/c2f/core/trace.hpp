@@ -17,14 +17,16 @@ class TraceWriter {
  public:
   using ErrorFunction = std::function<double(std::span<const Label> ground_labeling)>;
 
-  /// Writes the header immediately. The stream must outlive the writer.
-  explicit TraceWriter(std::ostream& out, ErrorFunction error = {});
+  /// Writes the header immediately. The stream must outlive the writer. `name` names the
+  /// trace in the error thrown when a write fails ("the trace 'run/trace.csv'").
+  explicit TraceWriter(std::ostream& out, ErrorFunction error = {}, std::string name = "the trace");
 
   ObserverDecision operator()(const StepEvent& event);
 
  private:
   std::ostream* out_;
   ErrorFunction error_;
+  std::string name_;
 };
 
 /// Opens `path` for writing a trace; throws std::runtime_error naming the path on failure.
