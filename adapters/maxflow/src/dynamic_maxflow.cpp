@@ -135,8 +135,8 @@ struct DynamicMaxFlow::Impl {
     return node.tree == kSourceTree ? arcs[up.sister].residual > 0.0 : up.residual > 0.0;
   }
 
-  /// Whether every capacity is finite and >= 0 (one pass, folded into the solve's own loops
-  /// by the compiler's vectoriser; cheaper than check_capacities' per-entry messages).
+  /// Whether every capacity is finite and >= 0: one branch-free pass; check_capacities, which
+  /// names the offending entry, runs only when this fails.
   [[nodiscard]] static bool all_valid(std::span<const double> values) {
     bool valid = true;
     for (const double c : values) valid &= c >= 0.0 && c <= std::numeric_limits<double>::max();
