@@ -13,9 +13,12 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "c2f/core/number_text.hpp"
 
 namespace {
 
@@ -48,8 +51,22 @@ Series read_trace(const std::string& name, const std::string& path, const std::s
       throw std::runtime_error("trace '" + path + "' line " + std::to_string(number) + " has " +
                                std::to_string(fields.size()) + " fields");
     }
-    series.time.push_back(std::stod(fields[static_cast<std::size_t>(time_col)]));
-    series.value.push_back(std::stod(fields[static_cast<std::size_t>(value_col)]));
+    // Strict numbers: finite, times >= 0, values within what a plot axis can span.
+    auto parse_field = [&](long col, bool is_time) {
+      const std::string& text = fields[static_cast<std::size_t>(col)];
+      const std::optional<double> value = c2f::parse_real(text);
+      const bool in_range =
+          value && (is_time ? *value >= 0.0 && *value <= 1e12 : std::abs(*value) <= 1e300);
+      if (!in_range) {
+        throw std::runtime_error("trace '" + path + "' line " + std::to_string(number) + ": " +
+                                 columns[static_cast<std::size_t>(col)] + " '" + text +
+                                 (is_time ? "' is not a time in [0, 1e12] s"
+                                          : "' is not a finite number within +-1e300"));
+      }
+      return *value;
+    };
+    series.time.push_back(parse_field(time_col, true));
+    series.value.push_back(parse_field(value_col, false));
   }
   if (series.time.empty()) throw std::runtime_error("trace '" + path + "' has no rows");
   return series;
@@ -94,7 +111,7 @@ int main(int argc, char** argv) {
       t_max = std::max(t_max, s.time.back());
       for (double v : s.value) v_min = std::min(v_min, v), v_max = std::max(v_max, v);
     }
-    if (v_max == v_min) v_max = v_min + 1;
+    if (!(v_max > v_min)) v_max = v_min + std::max(1.0, std::abs(v_min) * 1e-6);
     const int width = 900, height = 560, left = 110, right = 30, top = 50, bottom = 70;
     cv::Mat plot(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
     auto px = [&](double t) {

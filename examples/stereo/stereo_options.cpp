@@ -3,6 +3,7 @@
 #include "command_line.hpp"
 
 #include <boost/program_options.hpp>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -99,7 +100,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
     throw std::invalid_argument("--labels: must be >= 2, got " +
                                 std::to_string(command.tsgo.labels));
   if (command.downscale < 1) throw std::invalid_argument("--downscale: must be >= 1");
-  if (!(command.pair.gt_divisor > 0.0)) throw std::invalid_argument("--gt-divisor: must be > 0");
+  if (!(command.pair.gt_divisor > 0.0 && std::isfinite(command.pair.gt_divisor)))
+    throw std::invalid_argument("--gt-divisor: must be a finite number > 0");
   if (command.time_limit < 0.0) throw std::invalid_argument("--time-limit: must be >= 0");
   if (command.max_steps < 0) throw std::invalid_argument("--max-steps: must be >= 0");
   if (command.plateau < 1) throw std::invalid_argument("--plateau: must be >= 1");

@@ -45,6 +45,7 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
   CHECK_THROWS_WITH(Schedule::parse("spiral:3"), Catch::Contains("unknown level kind 'spiral'"));
   CHECK_THROWS_WITH(Schedule::parse("auto:0.2,0.02"), Catch::Contains("fractions must increase"));
   CHECK_THROWS_WITH(Schedule::parse("auto:0.2 cp:1,1"), Catch::Contains("stands alone"));
+  CHECK_THROWS_WITH(Schedule::parse("auto:"), Catch::Contains("auto needs at least one fraction"));
   CHECK_THROWS_WITH(Schedule::parse("paper flat", kPresets),
                     Catch::Contains("'paper' stands alone"));
   CHECK_THROWS_WITH(Schedule::parse("cp:1,1 two", kPresets), Catch::Contains("'two' stands alone"));

@@ -45,7 +45,10 @@ TEST_CASE("c2f-stereo rejects bad input with clear messages", "[stereo][cli]") {
   CHECK_THAT(r.output, Catch::Contains("--labels: must be >= 2, got 1"));
   r = run(left + " " + right + " -o " + out + " --gt " + left + " --gt-divisor 0");
   CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::Contains("--gt-divisor: must be > 0"));
+  CHECK_THAT(r.output, Catch::Contains("--gt-divisor: must be a finite number > 0"));
+  r = run(left + " " + right + " -o " + out + " --gt " + left + " --gt-divisor inf");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--gt-divisor: must be a finite number > 0"));
   r = run(left + " " + right + " -o " + out + " --schedule cp:1");
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("level 'cp:1': expected cp:N_L,N_iter"));

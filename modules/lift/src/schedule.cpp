@@ -95,6 +95,7 @@ std::vector<double> parse_auto_fractions(const std::string& token) {
       bad(token, "fractions must increase (coarsest first)");
     fractions.push_back(fraction);
   }
+  if (fractions.empty()) bad(token, "auto needs at least one fraction (e.g. auto:0.002,0.02,0.2)");
   return fractions;
 }
 

@@ -13,6 +13,17 @@ SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
     throw std::invalid_argument("synthetic problem: width and height must be >= 2");
   }
   if (spec.num_labels < 2) throw std::invalid_argument("synthetic problem: labels must be >= 2");
+  // Sizes checked before any arithmetic on them can wrap: each side at most 2^16, the unaries
+  // (pixels x labels doubles) at most 2^30 entries (8 GiB).
+  constexpr std::size_t kMaxSide = std::size_t{1} << 16;
+  if (spec.shape.width > kMaxSide || spec.shape.height > kMaxSide ||
+      spec.shape.width * spec.shape.height * static_cast<std::size_t>(spec.num_labels) >
+          (std::size_t{1} << 30)) {
+    throw std::invalid_argument(
+        "synthetic problem: " + std::to_string(spec.shape.width) + "x" +
+        std::to_string(spec.shape.height) + " pixels with " + std::to_string(spec.num_labels) +
+        " labels is too large (each side at most 65536, pixels x labels at most 2^30)");
+  }
   if (spec.num_shapes < 0) throw std::invalid_argument("synthetic problem: shapes must be >= 0");
   if (!(spec.noise_sigma >= 0.0) || !std::isfinite(spec.noise_sigma)) {
     throw std::invalid_argument("synthetic problem: noise must be finite and >= 0");
