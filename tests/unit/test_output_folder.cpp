@@ -82,3 +82,12 @@ TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]
   CHECK_THROWS_WITH(c2f::close_checked(full, "the test stream"),
                     Catch::Contains("writing the test stream failed"));
 }
+
+TEST_CASE("OutputFolder removes staging folders that killed runs left behind", "[output]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-output-folder-stale";
+  fs::remove_all(dir);
+  fs::create_directories(dir / ".c2f-staging-999999999");  // no such process
+  write_text(dir / ".c2f-staging-999999999" / "summary.txt", "from a killed run");
+  { c2f::OutputFolder output(dir, {"summary.txt"}); }
+  CHECK_FALSE(fs::exists(dir / ".c2f-staging-999999999"));
+}

@@ -1,6 +1,12 @@
 #include "c2f/core/output_folder.hpp"
 
+#include "c2f/core/number_text.hpp"
+
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <optional>
 
 #include <fstream>
 #include <stdexcept>
@@ -34,7 +40,18 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, std::vector<std:
     throw std::runtime_error("cannot create the output folder '" + folder_.string() +
                              "': " + (error ? error.message() : "not a folder"));
   }
-  staging_ = folder_ / (".c2f-staging-" + std::to_string(getpid()));
+  // Staging folders of runs that were killed (their process is gone) are left-overs.
+  const std::string prefix = ".c2f-staging-";
+  for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::optional<long long> pid = parse_integer(name.substr(prefix.size()));
+    if (pid && *pid > 0 && kill(static_cast<pid_t>(*pid), 0) == -1 && errno == ESRCH) {
+      std::error_code ignored;
+      std::filesystem::remove_all(entry.path(), ignored);
+    }
+  }
+  staging_ = folder_ / (prefix + std::to_string(getpid()));
   std::filesystem::remove_all(staging_, error);
   std::filesystem::create_directory(staging_, error);
   if (error) {

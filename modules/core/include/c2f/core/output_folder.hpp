@@ -19,8 +19,9 @@ namespace c2f {
 /// folder keeps what it held before; the destructor removes the staging folder.
 class OutputFolder {
  public:
-  /// Creates the output folder if needed and a staging folder inside it. Throws
-  /// std::runtime_error naming the folder when either cannot be created.
+  /// Creates the output folder if needed and a staging folder inside it (removing staging
+  /// folders that killed runs left behind). Throws std::runtime_error naming the folder when
+  /// either cannot be created.
   OutputFolder(const std::filesystem::path& folder, std::vector<std::string> owned);
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
