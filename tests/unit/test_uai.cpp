@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -9,7 +10,7 @@
 using namespace c2f;
 using namespace c2f::test;
 
-TEST_CASE("UAI round trips keep every energy value", "[uai]") {
+TEST_CASE("UAI round trips keep every energy difference", "[uai]") {
   Rng rng(3);
   for (int trial = 0; trial < 50; ++trial) {
     const int num_labels = 1 + trial % 4;
@@ -20,9 +21,14 @@ TEST_CASE("UAI round trips keep every energy value", "[uai]") {
     REQUIRE(back.num_variables() == energy.num_variables());
     REQUIRE(back.num_labels() == num_labels);
     CHECK(back.edges().size() == energy.edges().size());
+    // The file holds exp(-(cost - the factor's lowest cost)): energies come back shifted by
+    // one constant, the same for every labeling.
+    const Labeling reference = random_labeling(rng, energy.num_variables(), num_labels);
+    const double offset = energy.evaluate(reference) - back.evaluate(reference);
     for (int sample = 0; sample < 10; ++sample) {
       const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
-      CHECK(close_relative(back.evaluate(x), energy.evaluate(x), 1e-12));
+      CHECK(std::abs(back.evaluate(x) + offset - energy.evaluate(x)) <=
+            1e-12 * std::max(1.0, std::abs(energy.evaluate(x))));
     }
   }
 }
@@ -85,8 +91,33 @@ TEST_CASE("malformed UAI files give errors naming the problem", "[uai][validatio
   CHECK_THAT(error_of("MARKOV 1 2 1 1 0 2 1"), Catch::Contains("unexpected end of file"));
   CHECK_THROWS_WITH(read_uai_file("/nonexistent.uai"),
                     Catch::Contains("cannot open UAI file '/nonexistent.uai'"));
-  const PairwiseEnergy huge(1, 2, {0.0, 1000.0}, {}, {});
+  CHECK_THAT(error_of("MARKOV 1 2 1 1 0 2 1 1 7"),
+             Catch::Contains("unexpected '7' after the last table (trailing data)"));
+  // A 50-byte file claiming 2^40 factors or entries: refused before any allocation.
+  CHECK_THAT(error_of("MARKOV 1 2 1099511627776"),
+             Catch::Contains("the number of factors 1099511627776 is more than the file's"));
+  CHECK_THAT(error_of("MARKOV 2 1048576 1048576 1 2 0 1 1099511627776 1"),
+             Catch::Contains("the table size of factor 0 1099511627776 is more than the file's"));
+  std::string many_labels = "MARKOV 1100";
+  for (int v = 0; v < 1100; ++v) many_labels += " 1048576";
+  CHECK_THAT(error_of(many_labels + " 0"),
+             Catch::Contains("1100 variables x 1048576 labels need more than 8 GiB"));
+  const PairwiseEnergy spread(1, 2, {0.0, 1000.0}, {}, {});
   std::ostringstream out;
-  CHECK_THROWS_WITH(write_uai(huge, out),
-                    Catch::Contains("unary of variable 0: cost 1000.000000 cannot be written"));
+  CHECK_THROWS_WITH(write_uai(spread, out),
+                    Catch::Contains("unary of variable 0: costs 0.000000 and 1000.000000 are too "
+                                    "far apart"));
+}
+
+TEST_CASE("UAI keeps energy differences of costs far from zero", "[uai]") {
+  // Costs of 1e6 (beyond exp's range on their own) with small spreads per factor.
+  const PairwiseEnergy energy(2, 2, {1e6, 1e6 + 0.5, -3000.0, -2999.0},
+                              {PairwiseTerm::table(2, {700.0, 701.0, 702.0, 700.25})},
+                              {Edge{0, 1, 1.0, 0}});
+  std::stringstream file;
+  write_uai(energy, file);
+  const PairwiseEnergy back = read_uai(file, "far.uai");
+  const double base = energy.evaluate(Labeling{0, 0}) - back.evaluate(Labeling{0, 0});
+  for (const Labeling& x : {Labeling{0, 1}, Labeling{1, 0}, Labeling{1, 1}})
+    CHECK(back.evaluate(x) + base == Approx(energy.evaluate(x)).epsilon(1e-12));
 }

@@ -2,13 +2,17 @@
 
 #include "c2f/core/number_text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <istream>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -64,12 +68,25 @@ double cost_of(double potential, TokenReader& reader, const std::string& where) 
 
 }  // namespace
 
-PairwiseEnergy read_uai(std::istream& in, std::string_view source) {
+PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
+  // The whole text first: its size bounds every count the file declares, so a short file
+  // cannot make the reader allocate for 2^40 entries it does not hold.
+  const std::string text((std::istreambuf_iterator<char>(stream)),
+                         std::istreambuf_iterator<char>());
+  const auto bytes = static_cast<long long>(text.size());
+  std::istringstream in(text);
   TokenReader reader(in, source);
+  auto require_room = [&](long long count, long long bytes_each, const std::string& what) {
+    if (count > bytes / bytes_each) {
+      reader.fail(what + " " + std::to_string(count) + " is more than the file's " +
+                  std::to_string(bytes) + " bytes can hold");
+    }
+  };
   const std::string kind = reader.word("the network type");
   if (kind != "MARKOV")
     reader.fail("network type '" + kind + "' is not supported (expected MARKOV)");
   const long num_variables = reader.integer("the number of variables", 1, 0xffffffffL);
+  require_room(num_variables, 2, "the number of variables");
   long num_labels = 0;
   for (long v = 0; v < num_variables; ++v) {
     const long card =
@@ -81,6 +98,7 @@ PairwiseEnergy read_uai(std::istream& in, std::string_view source) {
     }
   }
   const long num_factors = reader.integer("the number of factors", 0, 1L << 40);
+  require_room(num_factors, 4, "the number of factors");
   std::vector<std::vector<VariableIndex>> scopes(static_cast<std::size_t>(num_factors));
   for (long f = 0; f < num_factors; ++f) {
     const std::string name = "factor " + std::to_string(f);
@@ -97,6 +115,11 @@ PairwiseEnergy read_uai(std::istream& in, std::string_view source) {
       reader.fail(name + " joins variable " + std::to_string(scopes[f][0]) + " to itself");
   }
   const auto L = static_cast<std::size_t>(num_labels);
+  constexpr std::size_t kMaxCosts = std::size_t{1} << 30;  // 8 GiB of unary costs
+  if (static_cast<std::size_t>(num_variables) > kMaxCosts / L) {
+    reader.fail(std::to_string(num_variables) + " variables x " + std::to_string(num_labels) +
+                " labels need more than 8 GiB of unary costs");
+  }
   std::vector<double> unaries(static_cast<std::size_t>(num_variables) * L, 0.0);
   std::vector<PairwiseTerm> terms;
   std::map<std::vector<double>, std::uint32_t> term_of_table;
@@ -109,6 +132,7 @@ PairwiseEnergy read_uai(std::istream& in, std::string_view source) {
       reader.fail(name + " has " + std::to_string(entries) + " table entries, expected " +
                   std::to_string(expected));
     }
+    require_room(entries, 2, "the table size of " + name);
     std::vector<double> costs(expected);
     for (std::size_t k = 0; k < expected; ++k)
       costs[k] = cost_of(reader.real("a potential of " + name), reader, name);
@@ -122,6 +146,8 @@ PairwiseEnergy read_uai(std::istream& in, std::string_view source) {
       edges.push_back(Edge{scopes[f][0], scopes[f][1], 1.0, it->second});
     }
   }
+  if (std::string extra; in >> extra)
+    reader.fail("unexpected '" + extra + "' after the last table (trailing data)");
   return PairwiseEnergy(static_cast<std::size_t>(num_variables), static_cast<int>(num_labels),
                         std::move(unaries), std::move(terms), std::move(edges));
 }
@@ -134,16 +160,27 @@ PairwiseEnergy read_uai_file(const std::string& path) {
 
 void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   const int L = energy.num_labels();
-  auto potential = [](double cost, const std::string& where) {
-    const double value = std::exp(-cost);
-    if (!(value > 0.0) || !std::isfinite(value)) {
-      throw std::invalid_argument(
-          "write_uai: " + where + ": cost " + std::to_string(cost) +
-          " cannot be written as a UAI potential exp(-cost) in double precision");
-    }
-    return value;
-  };
+  // Potentials exp(-(cost - the factor's minimum cost)) lie in (0, 1]: any finite costs whose
+  // spread within one factor stays below ~708 are written as normal doubles, and every energy
+  // difference survives the round trip (the energy read back is the original minus the sum of
+  // the factors' minima, a constant).
+  std::vector<double> costs(static_cast<std::size_t>(L) * static_cast<std::size_t>(L));
   char number[40];
+  auto write_table = [&](std::size_t count, const std::string& where) {
+    double lowest = costs[0];
+    for (std::size_t k = 0; k < count; ++k) lowest = std::min(lowest, costs[k]);
+    out << "\n" << count << "\n";
+    for (std::size_t k = 0; k < count; ++k) {
+      const double value = std::exp(-(costs[k] - lowest));
+      if (!(value >= std::numeric_limits<double>::min())) {
+        throw std::invalid_argument("write_uai: " + where + ": costs " + std::to_string(lowest) +
+                                    " and " + std::to_string(costs[k]) +
+                                    " are too far apart for a UAI potential (spread > 708)");
+      }
+      std::snprintf(number, sizeof number, "%.17g", value);
+      out << number << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
+    }
+  };
   out << "MARKOV\n" << energy.num_variables() << "\n";
   for (std::size_t v = 0; v < energy.num_variables(); ++v)
     out << L << (v + 1 < energy.num_variables() ? ' ' : '\n');
@@ -151,23 +188,16 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   for (std::size_t v = 0; v < energy.num_variables(); ++v) out << "1 " << v << "\n";
   for (const Edge& e : energy.edges()) out << "2 " << e.u << ' ' << e.v << "\n";
   for (std::size_t v = 0; v < energy.num_variables(); ++v) {
-    out << "\n" << L << "\n";
-    for (Label l = 0; l < L; ++l) {
-      std::snprintf(number, sizeof number, "%.17g",
-                    potential(energy.unary(v, l), "unary of variable " + std::to_string(v)));
-      out << number << (l + 1 < L ? ' ' : '\n');
-    }
+    for (Label l = 0; l < L; ++l) costs[static_cast<std::size_t>(l)] = energy.unary(v, l);
+    write_table(static_cast<std::size_t>(L), "unary of variable " + std::to_string(v));
   }
   for (std::size_t i = 0; i < energy.edges().size(); ++i) {
     const Edge& e = energy.edges()[i];
-    out << "\n" << L * L << "\n";
     for (Label a = 0; a < L; ++a) {
-      for (Label b = 0; b < L; ++b) {
-        std::snprintf(number, sizeof number, "%.17g",
-                      potential(energy.pairwise_cost(e, a, b), "edge " + std::to_string(i)));
-        out << number << (b + 1 < L ? ' ' : '\n');
-      }
+      for (Label b = 0; b < L; ++b)
+        costs[static_cast<std::size_t>(a * L + b)] = energy.pairwise_cost(e, a, b);
     }
+    write_table(costs.size(), "edge " + std::to_string(i));
   }
 }
 
