@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -87,7 +89,22 @@ TEST_CASE("GT loading, the left-right check and the scene table", "[stereo][midd
   CHECK(std::isnan(gt.at<float>(0, 0)));
   CHECK(gt.at<float>(0, 1) == 3.0F);
   CHECK_THROWS_WITH(load_gt_disparity((dir / "gt.png").string(), 0.0),
-                    Catch::Contains("GT divisor must be > 0"));
+                    Catch::Contains("GT divisor must be a finite number > 0"));
+  CHECK_THROWS_WITH(load_gt_disparity((dir / "gt.png").string(), INFINITY),
+                    Catch::Contains("GT divisor must be a finite number > 0"));
+  // A 16-bit GT keeps values above 255 (it was once read as 8 bits and cut).
+  const cv::Mat wide = (cv::Mat_<std::uint16_t>(1, 3) << 0, 300, 1000);
+  cv::imwrite((dir / "gt16.png").string(), wide);
+  const cv::Mat gt16 = load_gt_disparity((dir / "gt16.png").string(), 4.0);
+  CHECK(std::isnan(gt16.at<float>(0, 0)));
+  CHECK(gt16.at<float>(0, 1) == 75.0F);
+  CHECK(gt16.at<float>(0, 2) == 250.0F);
+  cv::imwrite((dir / "gt-grey-rgb.png").string(), cv::Mat(1, 2, CV_8UC3, cv::Scalar(8, 8, 8)));
+  CHECK(load_gt_disparity((dir / "gt-grey-rgb.png").string(), 4.0).at<float>(0, 1) == 2.0F);
+  cv::imwrite((dir / "gt-colour.png").string(), cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)));
+  CHECK_THROWS_WITH(
+      load_gt_disparity((dir / "gt-colour.png").string(), 1.0),
+      Catch::Contains("has 3 channels") && Catch::Contains("expected one channel of 8 or 16 bits"));
   CHECK_THROWS_WITH(load_gt_disparity((dir / "none.png").string(), 1.0),
                     Catch::Contains("does not exist"));
 
@@ -115,6 +132,19 @@ TEST_CASE("GT loading, the left-right check and the scene table", "[stereo][midd
   good.close();
   CHECK_THROWS_WITH(load_named_scene(dir.string(), "Teddy"),
                     Catch::Contains("no scene 'Teddy' in ") && Catch::Contains("(have: Toy)"));
+
+  // A scene whose GT has another size than its views is an error, not resized and scored.
+  std::filesystem::create_directories(dir / "toy");
+  cv::imwrite((dir / "toy" / "left.png").string(), cv::Mat(1, 4, CV_8UC3, cv::Scalar(9, 9, 9)));
+  cv::imwrite((dir / "toy" / "right.png").string(), cv::Mat(1, 4, CV_8UC3, cv::Scalar(9, 9, 9)));
+  cv::imwrite((dir / "toy" / "disp_left.png").string(), cv::Mat(2, 8, CV_8U, cv::Scalar(8)));
+  std::ofstream with_gt(dir / "scenes.csv");
+  with_gt << "year,scene,dir,width,height,scale,gt_divisor,files\n2003,Toy,toy,4,1,quarter,4,left."
+             "png right.png disp_left.png\n";
+  with_gt.close();
+  CHECK_THROWS_WITH(load_named_scene(dir.string(), "Toy"),
+                    Catch::Contains("scene Toy: ") && Catch::Contains("disp_left.png is 8x2") &&
+                        Catch::Contains("the views are 4x1"));
 }
 
 TEST_CASE("the shared Middlebury scenes load with their conventions",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -63,13 +64,14 @@ std::vector<SceneRow> read_scene_table(const std::string& path) {
 }
 
 cv::Mat load_gt_disparity(const std::string& path, double divisor) {
-  if (!(divisor > 0.0))
-    throw std::invalid_argument("GT divisor must be > 0, got " + std::to_string(divisor));
-  const cv::Mat raw = load_grey_image(path);
+  if (!(divisor > 0.0 && std::isfinite(divisor)))
+    throw std::invalid_argument("GT divisor must be a finite number > 0, got " +
+                                std::to_string(divisor));
+  const cv::Mat raw = load_single_channel_image(path);  // 8 or 16 bits, never cut
   cv::Mat gt(raw.size(), CV_32F);
   for (int y = 0; y < raw.rows; ++y) {
     for (int x = 0; x < raw.cols; ++x) {
-      const uchar v = raw.at<uchar>(y, x);
+      const int v = raw.depth() == CV_16U ? raw.at<std::uint16_t>(y, x) : raw.at<uchar>(y, x);
       gt.at<float>(y, x) =
           v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / divisor);
     }
@@ -109,15 +111,29 @@ StereoScene load_scene(const SceneRow& row, const std::string& data_root) {
   scene.name = row.scene;
   scene.left = load_colour_image((dir / "left.png").string());
   scene.right = load_colour_image((dir / "right.png").string());
-  if (has("disp_left.png"))
+  // Every picture of a scene must have the views' size: nothing is resized to fit.
+  auto require_view_size = [&](const cv::Mat& image, const std::string& name) {
+    if (image.size() != scene.left.size()) {
+      throw std::invalid_argument("scene " + row.scene + ": " + (dir / name).string() + " is " +
+                                  std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                                  ", the views are " + std::to_string(scene.left.cols) + "x" +
+                                  std::to_string(scene.left.rows));
+    }
+  };
+  require_view_size(scene.right, "right.png");
+  if (has("disp_left.png")) {
     scene.gt = load_gt_disparity((dir / "disp_left.png").string(), row.gt_divisor);
+    require_view_size(scene.gt, "disp_left.png");
+  }
   scene.nonoccluded_source = "none";
   if (has("nonocc.png")) {
     scene.nonoccluded = load_mask((dir / "nonocc.png").string());
+    require_view_size(scene.nonoccluded, "nonocc.png");
     scene.nonoccluded_source = "official mask";
   } else if (has("disp_right.png") && !scene.gt.empty()) {
-    scene.nonoccluded = left_right_nonoccluded(
-        scene.gt, load_gt_disparity((dir / "disp_right.png").string(), row.gt_divisor));
+    const cv::Mat right_gt = load_gt_disparity((dir / "disp_right.png").string(), row.gt_divisor);
+    require_view_size(right_gt, "disp_right.png");
+    scene.nonoccluded = left_right_nonoccluded(scene.gt, right_gt);
     scene.nonoccluded_source = "left-right check";
   }
   return scene;
