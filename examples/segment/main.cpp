@@ -118,32 +118,28 @@ int main(int argc, char** argv) {
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
     const Schedule schedule = schedule_for(command, scene.num_labels());
-    // Outputs are written into a staging folder and moved into place together at the end: a
-    // failed or crashed run leaves an earlier run's files as they were.
-    OutputFolder output(command.out_dir, {"labels.png", "overlay.png", "trace.csv", "summary.txt",
-                                          "partition-level*.png"});
-    const std::filesystem::path trace_path = output.stage(command.trace);
+    // Outputs are staged and moved into place together at the end: a failed or crashed run
+    // leaves an earlier run's files as they were.
+    RunRecord record(
+        command.out_dir,
+        {"labels.png", "overlay.png", "trace.csv", "summary.txt", "partition-level*.png"},
+        command.trace, "c2f-segment", command.quiet);
     const TimedProblem built = build_problem(scene, command);
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
-    std::ofstream trace_file = open_trace_file(trace_path.string());
-    TraceWriter trace(
-        trace_file,
-        scene.truth.empty() ? TraceWriter::ErrorFunction{} : pixel_error_function(scene),
-        "the trace '" + command.trace + "'");
     LevelPartitionRecorder partitions(command.save_partitions);
     const Summary summary =
         solve(command, built.problem, levels,
               examples::run_options(command, scene.num_labels(), command.classes),
-              observe_all({std::ref(trace), ProgressPrinter("c2f-segment", command.quiet),
-                           std::ref(partitions), interrupts.observer()}));
+              record.observer(
+                  scene.truth.empty() ? TraceWriter::ErrorFunction{} : pixel_error_function(scene),
+                  interrupts, {std::ref(partitions)}));
 
     const auto error =
-        write_segmentation_outputs(output.staging().string(), summary.labeling, scene);
-    write_summary(output.staging(), command, scene, built, levels, summary, error, interrupts);
-    partitions.write(output.staging().string(), scene.shape());
-    close_checked(trace_file, "the trace '" + command.trace + "'");
-    output.commit();
+        write_segmentation_outputs(record.staging().string(), summary.labeling, scene);
+    write_summary(record.staging(), command, scene, built, levels, summary, error, interrupts);
+    partitions.write(record.staging().string(), scene.shape());
+    record.commit();
     report_end(command, summary, error, interrupts);
     return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {

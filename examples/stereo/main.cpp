@@ -109,31 +109,27 @@ int main(int argc, char** argv) {
     const std::filesystem::path out(command.out_dir);
 
     const StereoScene scene = load_input(command);
-    // Outputs are written into a staging folder and moved into place together at the end: a
-    // failed or crashed run leaves an earlier run's files as they were.
-    OutputFolder output(out, {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
-                              "trace.csv", "summary.txt", "partition-level*.png"});
-    const std::filesystem::path trace_path = output.stage(command.trace);
+    // Outputs are staged and moved into place together at the end: a failed or crashed run
+    // leaves an earlier run's files as they were.
+    RunRecord record(out,
+                     {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
+                      "trace.csv", "summary.txt", "partition-level*.png"},
+                     command.trace, "c2f-stereo", command.quiet);
     announce(command, scene);
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.guide));
-    std::ofstream trace_file = open_trace_file(trace_path.string());
-    TraceWriter trace(trace_file,
-                      scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
-                      "the trace '" + command.trace + "'");
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary =
-        coarse_to_fine(problem.energy, levels, command.solver, examples::run_options(command),
-                       observe_all({std::ref(trace), ProgressPrinter("c2f-stereo", command.quiet),
-                                    std::ref(partitions), interrupts.observer()}));
+    const Summary summary = coarse_to_fine(
+        problem.energy, levels, command.solver, examples::run_options(command),
+        record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
+                        interrupts, {std::ref(partitions)}));
 
-    const auto rates = write_disparity_outputs(output.staging().string(), summary.labeling, scene,
+    const auto rates = write_disparity_outputs(record.staging().string(), summary.labeling, scene,
                                                command.tsgo.labels);
-    write_summary(output.staging(), command, scene, problem, levels, summary, rates, interrupts);
-    partitions.write(output.staging().string(), scene.shape());
-    close_checked(trace_file, "the trace '" + command.trace + "'");
-    output.commit();
+    write_summary(record.staging(), command, scene, problem, levels, summary, rates, interrupts);
+    partitions.write(record.staging().string(), scene.shape());
+    record.commit();
     report_end(command, summary, rates, interrupts);
     return interrupts.exit_code();
   } catch (const std::invalid_argument& error) {

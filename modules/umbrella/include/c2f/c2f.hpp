@@ -28,6 +28,7 @@
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/partition.hpp"
 #include "c2f/core/progress.hpp"
+#include "c2f/core/run_record.hpp"
 #include "c2f/core/trace.hpp"
 #include "c2f/core/uai.hpp"
 #include "c2f/core/visit_order.hpp"
