@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "c2f/core/number_text.hpp"
+#include "tool_options.hpp"
 
 namespace {
 
@@ -84,23 +85,20 @@ int main(int argc, char** argv) {
   std::string out, title = "energy against time", column = "energy";
   std::vector<std::pair<std::string, std::string>> inputs;
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if ((arg == "-o" || arg == "--out") && i + 1 < argc) {
-        out = argv[++i];
-      } else if (arg == "--title" && i + 1 < argc) {
-        title = argv[++i];
-      } else if (arg == "--column" && i + 1 < argc) {
-        column = argv[++i];
-      } else if (arg == "-h" || arg == "--help") {
-        std::cout << "usage: c2f-plot -o PLOT.png [--title T] [--column energy|error] "
-                     "NAME=TRACE.csv ...\n";
-        return 0;
-      } else if (arg.find('=') != std::string::npos) {
-        inputs.emplace_back(arg.substr(0, arg.find('=')), arg.substr(arg.find('=') + 1));
-      } else {
-        throw std::invalid_argument("unexpected argument '" + arg + "' (expected NAME=TRACE.csv)");
-      }
+    c2f::examples::ToolOptions options(
+        "c2f-plot: line plots of traces (a column against time) as PNG.\n\n"
+        "Usage: c2f-plot -o PLOT.png [options] NAME=TRACE.csv ...\n\nOptions");
+    options.path("out,o", &out, "the PNG to write")
+        .text("title", &title, "plot title")
+        .text("column", &column, "the trace column to plot: energy or error");
+    const auto arguments = options.parse(argc, argv, {"NAME=TRACE.csv ...", 64});
+    if (!arguments) return 0;
+    for (const std::string& argument : *arguments) {
+      const std::size_t equals = argument.find('=');
+      if (equals == std::string::npos || equals == 0 || equals + 1 == argument.size())
+        throw std::invalid_argument("unexpected argument '" + argument +
+                                    "' (expected NAME=TRACE.csv)");
+      inputs.emplace_back(argument.substr(0, equals), argument.substr(equals + 1));
     }
     if (out.empty() || inputs.empty())
       throw std::invalid_argument("need -o PLOT.png and at least one NAME=TRACE.csv");

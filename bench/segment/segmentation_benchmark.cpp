@@ -36,6 +36,7 @@
 
 #include "c2f/c2f.hpp"
 #include "support/anytime_trace.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
@@ -286,42 +287,32 @@ int summarize(const std::string& path) {
 
 int main(int argc, char** argv) {
   try {
-    const std::string command = argc > 1 ? argv[1] : "";
-    if (command == "summarize" && argc == 3) return summarize(argv[2]);
-    if (command != "run" || argc < 4) {
-      std::cerr << "usage: c2f-bench-segment run SET NAME [--data DIR] [--out DIR] "
-                   "[--time-limit S] [--header]\n       c2f-bench-segment summarize ROWS.tsv\n";
-      return 2;
-    }
-    std::string data = "../shared/data", out = "out/bench-segment";
+    std::string data = "../shared/data", out = "out/bench-segment", config_list;
     double time_limit = 600;
     bool header = false;
+    c2f::examples::ToolOptions options(
+        "c2f-bench-segment: cooperative-cut segmentation of one image, flat and coarse to fine, "
+        "one row per configuration.\n\nUsage: c2f-bench-segment run SET NAME [options]\n"
+        "       c2f-bench-segment summarize ROWS.tsv\n\nOptions");
+    options.path("data", &data, "data root")
+        .path("out", &out, "folder for traces and label images")
+        .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
+        .text("configs", &config_list, "comma-separated configurations (default: all)")
+        .flag("header", &header, "print the TSV header first");
+    const auto arguments = options.parse(argc, argv, {"run SET NAME | summarize ROWS.tsv", 3});
+    if (!arguments) return 0;
+    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
+    if (arguments->size() != 3 || (*arguments)[0] != "run")
+      throw std::invalid_argument("expected 'run SET NAME' or 'summarize ROWS.tsv' (see --help)");
     std::vector<std::string> selected;
-    for (int i = 4; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--data" && i + 1 < argc) {
-        data = argv[++i];
-      } else if (arg == "--out" && i + 1 < argc) {
-        out = argv[++i];
-      } else if (arg == "--time-limit" && i + 1 < argc) {
-        const auto value = parse_real(argv[++i]);
-        if (!value || *value <= 0) throw std::invalid_argument("--time-limit: a number > 0");
-        time_limit = *value;
-      } else if (arg == "--configs" && i + 1 < argc) {
-        std::stringstream list(argv[++i]);
-        for (std::string name; std::getline(list, name, ',');) {
-          if (std::none_of(configs().begin(), configs().end(),
-                           [&](const Config& c) { return c.name == name; }))
-            throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
-          selected.push_back(name);
-        }
-      } else if (arg == "--header") {
-        header = true;
-      } else {
-        throw std::invalid_argument("unknown argument '" + arg + "'");
-      }
+    std::stringstream list(config_list);
+    for (std::string name; std::getline(list, name, ',');) {
+      if (std::none_of(configs().begin(), configs().end(),
+                       [&](const Config& c) { return c.name == name; }))
+        throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
+      selected.push_back(name);
     }
-    return run_image(argv[2], argv[3], data, out, time_limit, header, selected);
+    return run_image((*arguments)[1], (*arguments)[2], data, out, time_limit, header, selected);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

@@ -35,6 +35,7 @@
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/anytime_trace.hpp"
+#include "tool_options.hpp"
 
 namespace {
 
@@ -182,43 +183,27 @@ int summarize(const std::string& path) {
 
 int main(int argc, char** argv) {
   try {
-    if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
-    if (argc < 3 || std::string(argv[1]) != "run") {
-      std::cerr << "usage: c2f-bench-expansion run SCENE [--data DIR] [--downscale K] "
-                   "[--labels L] [--graph-memory GIB] [--with-kolmogorov] [--header]\n"
-                   "       c2f-bench-expansion summarize ROWS.tsv\n";
-      return 2;
-    }
     std::string data = "../shared/data";
-    long long downscale = 1, labels = 85;
+    int downscale = 1, labels = 85;
     double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
     bool header = false, with_kolmogorov = false;
-    for (int i = 3; i < argc; ++i) {
-      const std::string arg = argv[i];
-      const bool has_value = i + 1 < argc;
-      if (arg == "--data" && has_value) {
-        data = argv[++i];
-      } else if (arg == "--downscale" && has_value) {
-        downscale = parse_integer(argv[++i]).value_or(0);
-        if (downscale < 1 || downscale > 16)
-          throw std::invalid_argument("--downscale: an integer in [1, 16]");
-      } else if (arg == "--labels" && has_value) {
-        labels = parse_integer(argv[++i]).value_or(0);
-        if (labels < 2 || labels > 1024)
-          throw std::invalid_argument("--labels: an integer in [2, 1024]");
-      } else if (arg == "--graph-memory" && has_value) {
-        graph_memory_gib = parse_real(argv[++i]).value_or(-1.0);
-        if (!(graph_memory_gib >= 0.0 && graph_memory_gib <= 1024.0))
-          throw std::invalid_argument("--graph-memory: must be in [0, 1024] GiB");
-      } else if (arg == "--with-kolmogorov") {
-        with_kolmogorov = true;
-      } else if (arg == "--header") {
-        header = true;
-      } else {
-        throw std::invalid_argument("unknown argument '" + arg + "'");
-      }
-    }
-    return run_scene(argv[2], data, static_cast<int>(downscale), static_cast<int>(labels),
+    c2f::examples::ToolOptions options(
+        "c2f-bench-expansion: flat expansion of one scene's TSGO energy with every max-flow "
+        "backend, one row each.\n\nUsage: c2f-bench-expansion run SCENE [options]\n"
+        "       c2f-bench-expansion summarize ROWS.tsv\n\nOptions");
+    options.path("data", &data, "data root (scenes.csv)")
+        .integer("downscale", &downscale, {1, 16}, "shrink the views by this factor")
+        .integer("labels", &labels, {2, 256}, "disparity labels")
+        .real("graph-memory", &graph_memory_gib, {0.0, 1024.0},
+              "GiB of recycled move graphs for the dynamic backend")
+        .flag("with-kolmogorov", &with_kolmogorov, "also time libmaxflow (when built)")
+        .flag("header", &header, "print the TSV header first");
+    const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
+    if (!arguments) return 0;
+    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
+    if (arguments->size() != 2 || (*arguments)[0] != "run")
+      throw std::invalid_argument("expected 'run SCENE' or 'summarize ROWS.tsv' (see --help)");
+    return run_scene((*arguments)[1], data, downscale, labels,
                      static_cast<std::size_t>(graph_memory_gib * (1 << 30)), with_kolmogorov,
                      header);
   } catch (const std::exception& error) {

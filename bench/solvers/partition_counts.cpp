@@ -12,6 +12,7 @@
 #include <string>
 
 #include "c2f/c2f.hpp"
+#include "tool_options.hpp"
 
 namespace {
 
@@ -27,16 +28,17 @@ struct Scene {
 int main(int argc, char** argv) {
   std::string data = "../shared/data";
   std::string out = "out/partitions";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      out = argv[++i];
-    } else if (arg == "--help" || arg == "-h") {
-      std::cout << "usage: c2f-bench-partitions [DATA_DIR] [--out DIR]\n";
-      return 0;
-    } else {
-      data = arg;
-    }
+  try {
+    c2f::examples::ToolOptions options(
+        "c2f-bench-partitions: group counts of colour passing and local grouping on Teddy and "
+        "Dolls.\n\nUsage: c2f-bench-partitions [DATA_DIR] [options]\n\nOptions");
+    options.path("out", &out, "folder for partition pictures");
+    const auto arguments = options.parse(argc, argv, {"DATA_DIR", 1});
+    if (!arguments) return 0;
+    if (!arguments->empty()) data = arguments->front();
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-bench-partitions: error: " << error.what() << "\n";
+    return 2;
   }
   try {
     std::filesystem::create_directories(out);

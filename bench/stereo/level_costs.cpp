@@ -16,6 +16,7 @@
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "tool_options.hpp"
 
 namespace {
 
@@ -47,21 +48,17 @@ void report(const char* name, const PairwiseEnergy& energy, std::span<const Labe
 
 int main(int argc, char** argv) {
   try {
-    if (argc < 2) {
-      std::cerr << "usage: c2f-bench-levels SCENE [--data DIR] [--schedule TEXT]\n";
-      return 2;
-    }
     std::string data = "../shared/data", schedule_text = "regions";
-    for (int i = 2; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--data" && i + 1 < argc)
-        data = argv[++i];
-      else if (arg == "--schedule" && i + 1 < argc)
-        schedule_text = argv[++i];
-      else
-        throw std::invalid_argument("unknown argument '" + arg + "'");
-    }
-    const StereoScene scene = load_named_scene(data, argv[1]);
+    c2f::examples::ToolOptions options(
+        "c2f-bench-levels: the cost of one expansion move on every level of a schedule.\n\n"
+        "Usage: c2f-bench-levels SCENE [options]\n\nOptions");
+    options.path("data", &data, "data root (scenes.csv)")
+        .text("schedule", &schedule_text, "schedule (as c2f-stereo --schedule)");
+    const auto arguments = options.parse(argc, argv, {"SCENE", 1});
+    if (!arguments) return 0;
+    if (arguments->size() != 1) throw std::invalid_argument("give SCENE (see --help)");
+    c2f::examples::with_flag("--schedule", [&] { return parse_stereo_schedule(schedule_text); });
+    const StereoScene scene = load_named_scene(data, arguments->front());
     const GridShape shape{static_cast<std::size_t>(scene.left.cols),
                           static_cast<std::size_t>(scene.left.rows)};
     TsgoOptions tsgo;

@@ -44,6 +44,7 @@
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/anytime_trace.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
@@ -253,51 +254,38 @@ int summarize(const std::string& path) {
 
 int main(int argc, char** argv) {
   try {
-    if (argc >= 3 && std::string(argv[1]) == "summarize") return summarize(argv[2]);
-    if (argc < 3 || std::string(argv[1]) != "run") {
-      std::cerr << "usage: c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] "
-                   "[--schedule TEXT]\n"
-                   "           [--label-order ORDER] [--coarse-tolerance T] [--maxflow NAME] "
-                   "[--downscale K] [--labels L] [--header]\n"
-                   "       c2f-bench-stereo summarize ROWS.tsv\n";
-      return 2;
-    }
-    std::string data = "../shared/data", out = "out/bench-stereo";
+    std::string data = "../shared/data", out = "out/bench-stereo", label_order = "sequential",
+                maxflow = "dynamic";
     Settings settings;
     bool header = false;
-    for (int i = 3; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--data" && i + 1 < argc)
-        data = argv[++i];
-      else if (arg == "--out" && i + 1 < argc)
-        out = argv[++i];
-      else if (arg == "--time-limit" && i + 1 < argc)
-        settings.time_limit = std::stod(argv[++i]);
-      else if (arg == "--schedule" && i + 1 < argc)
-        settings.schedule = argv[++i];
-      else if (arg == "--label-order" && i + 1 < argc)
-        settings.label_order = visit_order_from_string(argv[++i]);
-      else if (arg == "--coarse-tolerance" && i + 1 < argc)
-        settings.coarse_tolerance = std::stod(argv[++i]);
-      else if (arg == "--downscale" && i + 1 < argc)
-        settings.downscale = static_cast<int>(parse_integer(argv[++i]).value_or(0));
-      else if (arg == "--labels" && i + 1 < argc)
-        settings.labels = static_cast<int>(parse_integer(argv[++i]).value_or(0));
-      else if (arg == "--maxflow" && i + 1 < argc)
-        settings.maxflow = maxflow_kind_from_string(argv[++i]);
-      else if (arg == "--header")
-        header = true;
-      else
-        throw std::invalid_argument("unknown argument '" + arg + "'");
-    }
-    parse_stereo_schedule(settings.schedule);  // a bad schedule fails before the first solve
-    if (settings.downscale < 1 || settings.downscale > 16 || settings.labels < 2 ||
-        settings.labels > 1024)
-      throw std::invalid_argument(
-          "--downscale must be an integer in [1, 16], --labels in [2, 1024]");
-    if (!(settings.coarse_tolerance >= 0.0 && settings.coarse_tolerance < 1.0))
-      throw std::invalid_argument("--coarse-tolerance must be in [0, 1)");
-    return run_scene(argv[2], data, out, settings, header);
+    c2f::examples::ToolOptions options(
+        "c2f-bench-stereo: flat TSGO, C2F-TSGO and StereoSGBM on one Middlebury scene, one row "
+        "each.\n\nUsage: c2f-bench-stereo run SCENE [options]\n"
+        "       c2f-bench-stereo summarize ROWS.tsv\n\nOptions");
+    options.path("data", &data, "data root (scenes.csv)")
+        .path("out", &out, "folder for traces and disparity maps")
+        .real("time-limit", &settings.time_limit, {0.0, 1e7, true}, "seconds per run")
+        .text("schedule", &settings.schedule, "C2F schedule (as c2f-stereo --schedule)")
+        .text("label-order", &label_order, "sequential, random or frequency")
+        .real("coarse-tolerance", &settings.coarse_tolerance, {0.0, 1.0, false, true},
+              "plateau tolerance on coarse levels")
+        .text("maxflow", &maxflow, "dynamic, boost or kolmogorov")
+        .integer("downscale", &settings.downscale, {1, 16}, "shrink the views by this factor")
+        .integer("labels", &settings.labels, {2, 256}, "disparity labels")
+        .flag("header", &header, "print the TSV header first");
+    const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
+    if (!arguments) return 0;
+    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
+    if (arguments->size() != 2 || (*arguments)[0] != "run")
+      throw std::invalid_argument("expected 'run SCENE' or 'summarize ROWS.tsv' (see --help)");
+    settings.label_order = c2f::examples::with_flag(
+        "--label-order", [&] { return visit_order_from_string(label_order); });
+    settings.maxflow =
+        c2f::examples::with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
+    // A bad schedule fails before the first solve.
+    c2f::examples::with_flag("--schedule",
+                             [&] { return parse_stereo_schedule(settings.schedule); });
+    return run_scene((*arguments)[1], data, out, settings, header);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-stereo: error: " << error.what() << "\n";
     return 2;

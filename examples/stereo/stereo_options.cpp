@@ -1,16 +1,13 @@
 #include "stereo_options.hpp"
 
-#include "command_line.hpp"
+#include "tool_options.hpp"
 
-#include <boost/program_options.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
 #include "c2f/vision/stereo/stereo_schedules.hpp"
-
-namespace po = boost::program_options;
 
 namespace c2f::examples {
 
@@ -19,65 +16,66 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   std::string schedule = "paper", solver = "expansion", smoothness = "tsgo_step",
               label_order = "sequential", maxflow = "dynamic";
   double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
-  po::options_description visible(
+  ToolOptions options(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
       "       c2f-stereo --scene NAME [--data DIR] -o OUTDIR [options]\n\n"
       "Writes disparity.pfm, disparity.png (16-bit, value x 256), disparity-colour.png, "
       "trace.csv,\n"
       "summary.txt and, with ground truth, error.png. Progress goes to stderr.\n\nOptions");
-  visible.add_options()("help,h", "show this help")("out,o", po::value(&command.out_dir),
-                                                    "output directory (created)")(
-      "scene", po::value(&command.scene),
-      "scene name from DATA/scenes.csv (loads views, GT and masks)")(
-      "data", po::value(&command.data)->default_value("../shared/data"), "data root for --scene")(
-      "labels", po::value(&command.tsgo.labels)->default_value(85),
-      "number of disparity labels (>= 2)")(
-      "schedule", po::value(&schedule)->default_value("paper"),
-      "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic (the "
-      "same three levels with another partition kind), paper-cc (split into connected "
-      "components), regions (connected regions of equal best labels; fastest measured: "
-      "local:1,1/cc with --plateau-tolerance 3e-5), "
-      "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")(
-      "allow-non-refining", po::bool_switch(&command.allow_non_refining),
-      "accept levels that do not refine each other (labels handed down by majority vote)")(
-      "solver", po::value(&solver)->default_value("expansion"), "expansion, swap, lbp or icm")(
-      "maxflow", po::value(&maxflow)->default_value("dynamic"),
-      "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move from "
-      "its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov (GPL-3 "
-      "libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")(
-      "graph-memory", po::value(&graph_memory_gib)->default_value(graph_memory_gib),
-      "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a graph "
-      "solved from zero flow; 0: no recycling)")(
-      "label-order", po::value(&label_order)->default_value("sequential"),
-      "order of expansion / swap moves (icm: of the pixels): sequential (0, 1, ...), random, or "
-      "frequency (labels of most variables first, counted when each level starts)")(
-      "smoothness", po::value(&smoothness)->default_value("tsgo_step"),
-      "tsgo_step or truncated_linear (the paper's wording)")(
-      "time-limit", po::value(&command.time_limit)->default_value(0.0),
-      "seconds on the run clock (0: none)")("max-steps",
-                                            po::value(&command.max_steps)->default_value(0),
-                                            "solver steps in the whole run (0: none)")(
-      "plateau", po::value(&command.plateau)->default_value(4),
-      "refine after this many steps without decrease")(
-      "plateau-tolerance", po::value(&command.plateau_tolerance)->default_value(0.0),
-      "on coarse levels, a decrease over the --plateau steps counts only when larger than this "
-      "fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps down)")(
-      "final-plateau", po::value(&command.final_plateau)->default_value(0),
-      "stop after this many steps without decrease on the original problem (0: one sweep: labels "
-      "moves for expansion, label pairs for swap, 4 iterations for lbp, 1 for icm)")(
-      "trace", po::value(&command.trace), "trace CSV (default OUTDIR/trace.csv)")(
-      "gt", po::value(&command.pair.gt), "ground-truth disparity PNG (0 = unknown)")(
-      "gt-divisor", po::value(&command.pair.gt_divisor)->default_value(1.0),
-      "GT PNG value per disparity pixel")("gt-right", po::value(&command.pair.gt_right),
-                                          "right-view GT PNG, for a left-right occlusion mask")(
-      "mask", po::value(&command.pair.mask), "non-occluded mask PNG (255 = evaluate)")(
-      "downscale", po::value(&command.downscale)->default_value(1),
-      "shrink images by this integer factor (GT divided by it)")(
-      "save-partitions", po::bool_switch(&command.save_partitions),
-      "write pictures of each level's partition")("quiet,q", po::bool_switch(&command.quiet),
-                                                  "no progress on stderr");
-  const auto images = parse_command_line(argc, argv, visible);
+  command.data = "../shared/data";
+  options.path("out,o", &command.out_dir, "output directory (created)")
+      .text("scene", &command.scene, "scene name from DATA/scenes.csv (loads views, GT and masks)")
+      .path("data", &command.data, "data root for --scene")
+      .integer("labels", &command.tsgo.labels, {2, 256},
+               "number of disparity labels (disparity.png holds disparities below 256)")
+      .text("schedule", &schedule,
+            "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic "
+            "(the same three levels with another partition kind), paper-cc (split into connected "
+            "components), regions (connected regions of equal best labels; fastest measured: "
+            "local:1,1/cc with --plateau-tolerance 3e-5), "
+            "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")
+      .flag("allow-non-refining", &command.allow_non_refining,
+            "accept levels that do not refine each other (labels handed down by majority vote)")
+      .text("solver", &solver, "expansion, swap, lbp or icm")
+      .text("maxflow", &maxflow,
+            "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move "
+            "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
+            "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
+      .real("graph-memory", &graph_memory_gib, {0.0, 65536.0},
+            "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a "
+            "graph solved from zero flow; 0: no recycling)")
+      .text("label-order", &label_order,
+            "order of expansion / swap moves (icm: of the pixels): sequential (0, 1, ...), "
+            "random, or frequency (labels of most variables first, counted when each level "
+            "starts)")
+      .text("smoothness", &smoothness, "tsgo_step or truncated_linear (the paper's wording)")
+      .real("time-limit", &command.time_limit, kTimeLimitRange,
+            "seconds on the run clock (0: none)")
+      .integer("max-steps", &command.max_steps, {0, kMaxSteps},
+               "solver steps in the whole run (0: none)")
+      .integer("plateau", &command.plateau, {1, kMaxSteps},
+               "refine after this many steps without decrease")
+      .real("plateau-tolerance", &command.plateau_tolerance, {0.0, 1.0, false, true},
+            "on coarse levels, a decrease over the --plateau steps counts only when larger than "
+            "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
+            "down)")
+      .integer("final-plateau", &command.final_plateau, {0, kMaxSteps},
+               "stop after this many steps without decrease on the original problem (0: one "
+               "sweep: labels moves for expansion, label pairs for swap, 4 iterations for lbp, 1 "
+               "for icm)")
+      .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
+      .file("gt", &command.pair.gt, "ground-truth disparity PNG (0 = unknown)")
+      .real("gt-divisor", &command.pair.gt_divisor, {0.0, 65536.0, true},
+            "GT PNG value per disparity pixel")
+      .file("gt-right", &command.pair.gt_right,
+            "right-view GT PNG, for a left-right occlusion mask")
+      .file("mask", &command.pair.mask, "non-occluded mask PNG (255 = evaluate)")
+      .integer("downscale", &command.downscale, {1, 1024},
+               "shrink images by this integer factor (GT divided by it)")
+      .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
+      .flag("quiet,q", &command.quiet, "no progress on stderr");
+  const auto images = options.parse(argc, argv, {"LEFT RIGHT", 2});
   if (!images) return std::nullopt;
   if (command.scene.empty()) {
     if (images->size() != 2)
@@ -96,21 +94,6 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
-  if (command.tsgo.labels < 2)
-    throw std::invalid_argument("--labels: must be >= 2, got " +
-                                std::to_string(command.tsgo.labels));
-  if (command.downscale < 1) throw std::invalid_argument("--downscale: must be >= 1");
-  if (!(command.pair.gt_divisor > 0.0 && std::isfinite(command.pair.gt_divisor)))
-    throw std::invalid_argument("--gt-divisor: must be a finite number > 0");
-  if (command.time_limit < 0.0) throw std::invalid_argument("--time-limit: must be >= 0");
-  if (command.max_steps < 0) throw std::invalid_argument("--max-steps: must be >= 0");
-  if (command.plateau < 1) throw std::invalid_argument("--plateau: must be >= 1");
-  if (command.final_plateau < 0) throw std::invalid_argument("--final-plateau: must be >= 0");
-  if (!(command.plateau_tolerance >= 0.0 && command.plateau_tolerance < 1.0))
-    throw std::invalid_argument("--plateau-tolerance: must be in [0, 1)");
-  require_file(command.pair.gt, "--gt");
-  require_file(command.pair.gt_right, "--gt-right");
-  require_file(command.pair.mask, "--mask");
   command.solver.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver); });
   command.solver.order =
       with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
@@ -123,8 +106,6 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                                 ": not in this build (configure with "
                                 "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
   }
-  if (!(graph_memory_gib >= 0.0 && graph_memory_gib <= 1 << 20))
-    throw std::invalid_argument("--graph-memory: must be a number of GiB in [0, 2^20]");
   command.solver.graph_memory_limit =
       static_cast<std::size_t>(graph_memory_gib * static_cast<double>(std::size_t{1} << 30));
   command.tsgo.smoothness =

@@ -4,34 +4,40 @@
 // report, write.
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "c2f/c2f.hpp"
 #include "synthetic_options.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
 
 namespace {
 
-/// One ICM run over `levels`; prints its trace and summary, and writes the trace to
-/// `trace_path` unless that is empty.
+/// One ICM run over `levels`, stopped early by `interrupts`; prints its trace and summary, and
+/// writes the trace to `trace_path` unless that is empty.
 template <class Provider>
 Summary solve(const char* name, const SyntheticProblem& problem, Provider& levels,
-              const Options& options, const std::string& trace_path) {
+              const Options& options, const InterruptWatch& interrupts,
+              const std::filesystem::path& trace_path) {
   std::ostringstream trace;
   TraceWriter writer(
       trace, [&](std::span<const Label> ground) { return pixel_error(ground, problem.truth); });
   IcmSolver solver;
-  Summary summary = coarse_to_fine(problem.energy, levels, solver, options, std::ref(writer));
+  Summary summary = coarse_to_fine(problem.energy, levels, solver, options,
+                                   observe_all({std::ref(writer), interrupts.observer()}));
   std::cout << "# trace: " << name << "\n"
             << trace.str() << "# summary: " << name << "\n"
             << summary.report() << "\n";
   if (!trace_path.empty()) {
-    std::ofstream file = open_trace_file(trace_path);
+    std::ofstream file = open_trace_file(trace_path.string());
     file << trace.str();
+    close_checked(file, trace_path.string());
   }
   return summary;
 }
@@ -41,45 +47,65 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
             << pixel_error(summary.labeling, problem.truth) << ", " << summary.seconds << " s\n";
 }
 
-void write_pictures(const std::string& out_dir, const SyntheticProblem& problem,
+void write_pictures(const std::filesystem::path& folder, const SyntheticProblem& problem,
                     const vision::SyntheticSpec& spec, const Summary& flat, const Summary& c2f) {
-  const std::filesystem::path out(out_dir);
-  write_label_pgm((out / "truth.pgm").string(), problem.truth, spec.shape, spec.num_labels);
-  write_label_pgm((out / "flat.pgm").string(), flat.labeling, spec.shape, spec.num_labels);
-  write_label_pgm((out / "c2f.pgm").string(), c2f.labeling, spec.shape, spec.num_labels);
-  std::cerr << "c2f-synthetic: wrote traces and images to " << out_dir << "\n";
+  write_label_pgm((folder / "truth.pgm").string(), problem.truth, spec.shape, spec.num_labels);
+  write_label_pgm((folder / "flat.pgm").string(), flat.labeling, spec.shape, spec.num_labels);
+  write_label_pgm((folder / "c2f.pgm").string(), c2f.labeling, spec.shape, spec.num_labels);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
+    // Ctrl-C or SIGTERM: the running solve stops at its next step, and what was found is
+    // still reported and written.
+    const InterruptWatch interrupts;
     const auto parsed = examples::parse_synthetic_command(argc, argv);
     if (!parsed) return 0;
     const examples::SyntheticCommand& command = *parsed;
-    const bool files = !command.out_dir.empty();
-    if (files) std::filesystem::create_directories(command.out_dir);
-    const auto path = [&](const char* name) {
-      return files ? (std::filesystem::path(command.out_dir) / name).string() : std::string();
-    };
 
-    BlockHierarchy hierarchy(command.spec.shape, command.block_sizes);  // checks the sizes first
+    BlockHierarchy hierarchy = examples::with_flag("--blocks", [&] {  // checks the sizes first
+      return BlockHierarchy(command.spec.shape, command.block_sizes);
+    });
     const SyntheticProblem problem = make_synthetic_problem(command.spec);
+    // With -o, the files are staged and land together at the end (an earlier run's files stay
+    // as they were when this run fails).
+    std::optional<OutputFolder> output;
+    if (!command.out_dir.empty())
+      output.emplace(command.out_dir, std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv",
+                                                               "truth.pgm", "flat.pgm", "c2f.pgm"});
+    const auto staged = [&](const char* name) {
+      return output ? output->staging() / name : std::filesystem::path();
+    };
     std::cerr << "c2f-synthetic: " << command.spec.shape.width << "x" << command.spec.shape.height
               << " pixels, " << command.spec.num_labels << " labels, "
               << problem.energy.edges().size() << " edges\n";
 
     PartitionList flat_levels;
     const Summary flat =
-        solve("flat", problem, flat_levels, command.options, path("trace-flat.csv"));
-    const Summary c2f = solve("c2f", problem, hierarchy, command.options, path("trace-c2f.csv"));
+        solve("flat", problem, flat_levels, command.options, interrupts, staged("trace-flat.csv"));
+    // After an interrupt the coarse-to-fine run stops at its first step.
+    const Summary c2f =
+        solve("c2f", problem, hierarchy, command.options, interrupts, staged("trace-c2f.csv"));
 
     report("flat:", flat, problem);
     report("c2f: ", c2f, problem);
-    if (files) write_pictures(command.out_dir, problem, command.spec, flat, c2f);
-  } catch (const std::exception& error) {
+    if (output) {
+      write_pictures(output->staging(), problem, command.spec, flat, c2f);
+      output->commit();
+      std::cerr << "c2f-synthetic: wrote traces and images to " << command.out_dir << "\n";
+    }
+    if (interrupts.interrupted()) {
+      std::cerr << "c2f-synthetic: interrupted by " << interrupts.signal_name()
+                << ": reported the best labelings found so far\n";
+    }
+    return interrupts.exit_code();
+  } catch (const std::invalid_argument& error) {
     std::cerr << "c2f-synthetic: error: " << error.what() << "\n";
     return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-synthetic: error: " << error.what() << "\n";
+    return 1;
   }
-  return 0;
 }

@@ -1,16 +1,18 @@
 #include "synthetic_options.hpp"
 
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "c2f/core/number_text.hpp"
-#include "command_line.hpp"
-
-namespace po = boost::program_options;
+#include "tool_options.hpp"
 
 namespace c2f::examples {
 
 namespace {
+
+/// The longest side a synthetic problem may have (its memory is checked when it is made).
+constexpr long long kMaxSide = 1 << 16;
 
 std::vector<std::size_t> parse_block_sizes(const std::string& text) {
   std::vector<std::size_t> sizes;
@@ -33,35 +35,28 @@ std::optional<SyntheticCommand> parse_synthetic_command(int argc, char** argv) {
   vision::SyntheticSpec& spec = command.spec;
   std::string blocks = "16,8,4,2";
   int plateau = 2;
-  po::options_description description(
+  ToolOptions options(
       "c2f-synthetic: restores a noisy piecewise-constant label image with ICM, flat and coarse\n"
       "to fine over nested pixel blocks, and prints both traces (time_s,level,step,energy,\n"
       "num_vars,error; error = fraction of wrong pixels).\n\nOptions");
-  description.add_options()("help,h", "show this help")(
-      "width", po::value(&spec.shape.width)->default_value(spec.shape.width), "image width")(
-      "height", po::value(&spec.shape.height)->default_value(spec.shape.height), "image height")(
-      "labels", po::value(&spec.num_labels)->default_value(spec.num_labels),
-      "number of labels (>= 2)")("shapes",
-                                 po::value(&spec.num_shapes)->default_value(spec.num_shapes),
-                                 "rectangles and discs in the image")(
-      "noise", po::value(&spec.noise_sigma)->default_value(spec.noise_sigma),
-      "noise sigma, in labels")("smoothness",
-                                po::value(&spec.smoothness)->default_value(spec.smoothness),
-                                "weight of the truncated-linear term")(
-      "seed", po::value(&spec.seed)->default_value(spec.seed), "random seed of the problem")(
-      "blocks", po::value(&blocks)->default_value(blocks),
-      "block sizes of the coarse levels, coarsest first; each divides the previous")(
-      "plateau", po::value(&plateau)->default_value(plateau),
-      "refine after this many sweeps without decrease")(
-      "time-limit", po::value(&command.options.time_limit_seconds)->default_value(0.0),
-      "seconds per run (0: none)")("out,o", po::value(&command.out_dir),
-                                   "directory for trace-flat.csv, trace-c2f.csv and PGM images");
-  const auto positional = parse_command_line(argc, argv, description);
-  if (!positional) return std::nullopt;
-  if (!positional->empty()) {
-    throw std::invalid_argument("unexpected argument '" + positional->front() +
-                                "' (c2f-synthetic takes options only; see --help)");
-  }
+  options.integer("width", &spec.shape.width, {2, kMaxSide}, "image width")
+      .integer("height", &spec.shape.height, {2, kMaxSide}, "image height")
+      .integer("labels", &spec.num_labels, {2, 1 << 16}, "number of labels")
+      .integer("shapes", &spec.num_shapes, {0, 1 << 20}, "rectangles and discs in the image")
+      .real("noise", &spec.noise_sigma, {0.0, 1e6}, "noise sigma, in labels")
+      .real("smoothness", &spec.smoothness, {0.0, 1e6}, "weight of the truncated-linear term")
+      .integer("seed", &spec.seed, {0, std::numeric_limits<long long>::max()},
+               "random seed of the problem")
+      .text("blocks", &blocks,
+            "block sizes of the coarse levels, coarsest first; each divides "
+            "the previous")
+      .integer("plateau", &plateau, {1, kMaxSteps},
+               "refine after this many sweeps without decrease")
+      .real("time-limit", &command.options.time_limit_seconds, kTimeLimitRange,
+            "seconds per run (0: none)")
+      .path("out,o", &command.out_dir,
+            "directory for trace-flat.csv, trace-c2f.csv and PGM images");
+  if (!options.parse(argc, argv, {"", 0})) return std::nullopt;
   command.options.plateau_steps = {plateau};
   if (const std::string problem = command.options.validate(); !problem.empty())
     throw std::invalid_argument("--plateau/--time-limit: " + problem);

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <vector>
 
@@ -10,30 +11,69 @@
 namespace c2f::vision {
 
 namespace {
-cv::Mat load(const std::string& path, int flags) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("image '" + path + "' does not exist");
-  cv::Mat image = cv::imread(path, flags);
-  if (image.empty()) throw std::runtime_error("image '" + path + "' could not be read as an image");
-  if (image.depth() != CV_8U)
-    throw std::runtime_error("image '" + path + "' is not 8 bits per channel");
+
+/// The image with its stored depth and channels (`flags` adds to IMREAD_ANYDEPTH; palette
+/// images decode to colour).
+cv::Mat load_as_stored(const std::string& path, int flags) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::invalid_argument("image '" + path + "' does not exist");
+  cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);
+  if (image.empty())
+    throw std::invalid_argument("image '" + path + "' could not be read as an image");
   return image;
 }
+
+/// Refuses anything but 8 bits per channel, which OpenCV would otherwise scale down silently.
+const cv::Mat& require_8_bit(const cv::Mat& image, const std::string& path) {
+  if (image.depth() != CV_8U) {
+    throw std::invalid_argument("image '" + path + "' has " +
+                                std::to_string(8 * image.elemSize1()) +
+                                "-bit channels; expected 8 bits per channel");
+  }
+  return image;
+}
+
 }  // namespace
 
 cv::Mat load_colour_image(const std::string& path) {
-  return load(path, cv::IMREAD_COLOR);
+  // ANYCOLOR keeps grey as grey and drops alpha; EXIF orientation is applied as by default.
+  const cv::Mat image = require_8_bit(load_as_stored(path, cv::IMREAD_ANYCOLOR), path);
+  cv::Mat colour;
+  switch (image.channels()) {
+    case 1:
+      cv::cvtColor(image, colour, cv::COLOR_GRAY2BGR);
+      return colour;
+    case 3:
+      return image;
+    case 4:
+      cv::cvtColor(image, colour, cv::COLOR_BGRA2BGR);
+      return colour;
+    default:
+      throw std::invalid_argument("image '" + path + "' has " + std::to_string(image.channels()) +
+                                  " channels; expected grey or colour");
+  }
 }
 
 cv::Mat load_grey_image(const std::string& path) {
-  return load(path, cv::IMREAD_GRAYSCALE);
+  const cv::Mat image = require_8_bit(load_as_stored(path, cv::IMREAD_ANYCOLOR), path);
+  cv::Mat grey;
+  switch (image.channels()) {
+    case 1:
+      return image;
+    case 3:
+      cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+      return grey;
+    case 4:
+      cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+      return grey;
+    default:
+      throw std::invalid_argument("image '" + path + "' has " + std::to_string(image.channels()) +
+                                  " channels; expected grey or colour");
+  }
 }
 
 cv::Mat load_single_channel_image(const std::string& path) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("image '" + path + "' does not exist");
-  cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (image.empty()) throw std::runtime_error("image '" + path + "' could not be read as an image");
+  cv::Mat image = load_as_stored(path, cv::IMREAD_UNCHANGED);
   if (image.channels() >= 3 && image.depth() == CV_8U) {
     // Grey stored as colour (some Middlebury files): taken when the colour channels agree.
     std::vector<cv::Mat> channels;

@@ -1,5 +1,8 @@
 #include "c2f/vision/synthetic_problem.hpp"
 
+#include "c2f/core/memory_need.hpp"
+#include "c2f/core/output_folder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -13,17 +16,20 @@ SyntheticProblem make_synthetic_problem(const SyntheticSpec& spec) {
     throw std::invalid_argument("synthetic problem: width and height must be >= 2");
   }
   if (spec.num_labels < 2) throw std::invalid_argument("synthetic problem: labels must be >= 2");
-  // Sizes checked before any arithmetic on them can wrap: each side at most 2^16, the unaries
-  // (pixels x labels doubles) at most 2^30 entries (8 GiB).
+  // Sizes checked before any arithmetic on them can wrap (each side at most 2^16), then the
+  // memory: unaries (8 bytes per pixel and label), two edges per pixel (~64 bytes) and the
+  // truth, the noisy image and ICM's labelings (~16 bytes).
   constexpr std::size_t kMaxSide = std::size_t{1} << 16;
-  if (spec.shape.width > kMaxSide || spec.shape.height > kMaxSide ||
-      spec.shape.width * spec.shape.height * static_cast<std::size_t>(spec.num_labels) >
-          (std::size_t{1} << 30)) {
-    throw std::invalid_argument(
-        "synthetic problem: " + std::to_string(spec.shape.width) + "x" +
-        std::to_string(spec.shape.height) + " pixels with " + std::to_string(spec.num_labels) +
-        " labels is too large (each side at most 65536, pixels x labels at most 2^30)");
+  if (spec.shape.width > kMaxSide || spec.shape.height > kMaxSide) {
+    throw std::invalid_argument("synthetic problem: " + std::to_string(spec.shape.width) + "x" +
+                                std::to_string(spec.shape.height) +
+                                " pixels: each side must be at most 65536");
   }
+  const std::size_t pixels = spec.shape.width * spec.shape.height;
+  require_memory("synthetic problem: " + std::to_string(spec.shape.width) + "x" +
+                     std::to_string(spec.shape.height) + " pixels with " +
+                     std::to_string(spec.num_labels) + " labels",
+                 checked_product({pixels, static_cast<std::size_t>(spec.num_labels) * 8 + 80}));
   if (spec.num_shapes < 0) throw std::invalid_argument("synthetic problem: shapes must be >= 0");
   if (!(spec.noise_sigma >= 0.0) || !std::isfinite(spec.noise_sigma)) {
     throw std::invalid_argument("synthetic problem: noise must be finite and >= 0");
@@ -80,7 +86,7 @@ void write_label_pgm(const std::string& path, std::span<const Label> labeling, G
   for (const Label l : labeling) {
     out.put(static_cast<char>(num_labels > 1 ? l * 255 / (num_labels - 1) : 0));
   }
-  if (!out) throw std::runtime_error("writing '" + path + "' failed");
+  close_checked(out, path);
 }
 
 }  // namespace c2f::vision

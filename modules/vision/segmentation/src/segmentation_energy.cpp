@@ -2,9 +2,11 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "c2f/core/grid.hpp"
+#include "c2f/core/memory_need.hpp"
 #include "c2f/vision/segmentation/colour_gmm.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
 
@@ -113,8 +115,21 @@ CoopEnergy coop_energy(std::vector<double> unaries, int num_labels, const Segmen
                     parameters, std::move(coop_edges), std::move(entries));
 }
 
+std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int labels) {
+  if (labels < 0) return std::nullopt;
+  const std::optional<std::size_t> per_pixel =
+      checked_product({static_cast<std::size_t>(labels), 24});
+  if (!per_pixel || *per_pixel > std::numeric_limits<std::size_t>::max() - 1024)
+    return std::nullopt;
+  return checked_product({pixels, *per_pixel + 1024});
+}
+
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
                                          const CoopParameters& parameters, int num_classes) {
+  require_memory("segmenting " + std::to_string(scene.image.cols) + "x" +
+                     std::to_string(scene.image.rows) + " pixels into " +
+                     std::to_string(scene.num_labels()) + " labels",
+                 segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
   CoopEnergy coop = coop_energy(segmentation_unaries(scene), scene.num_labels(),
                                 segmentation_edges(scene.image, num_classes), parameters);
   PairwiseEnergy potts = potts_energy(coop);

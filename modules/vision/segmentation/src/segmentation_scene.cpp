@@ -112,10 +112,36 @@ SeedConvention seed_convention_from_string(std::string_view text) {
 }
 
 SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
+  SegmentationImages images;
+  images.image = load_colour_image(files.image);
+  images.seeds = load_colour_image(files.seeds);
+  if (!files.gt.empty()) {
+    images.gt = files.convention == SeedConvention::binary ? load_grey_image(files.gt)
+                                                           : load_colour_image(files.gt);
+  }
+  return segmentation_scene_from_images(images, files);
+}
+
+SegmentationScene segmentation_scene_from_images(const SegmentationImages& images,
+                                                 const SegmentationFiles& files) {
+  const auto require_type = [](const cv::Mat& image, int type, const std::string& what,
+                               const std::string& path) {
+    if (image.type() != type || image.empty()) {
+      throw std::invalid_argument(what + " '" + path + "' is not a non-empty 8-bit " +
+                                  (type == CV_8UC1 ? "grey" : "colour") + " image");
+    }
+  };
   SegmentationScene scene;
   scene.name = std::filesystem::path(files.image).stem().string();
-  scene.image = load_colour_image(files.image);
-  const cv::Mat seeds = load_colour_image(files.seeds);
+  require_type(images.image, CV_8UC3, "IMAGE", files.image);
+  require_type(images.seeds, CV_8UC3, "SEEDS", files.seeds);
+  const bool has_gt = !files.gt.empty();
+  if (has_gt) {
+    require_type(images.gt, files.convention == SeedConvention::binary ? CV_8UC1 : CV_8UC3, "GT",
+                 files.gt);
+  }
+  scene.image = images.image;
+  const cv::Mat& seeds = images.seeds;
   require_size(scene.image, seeds, "SEEDS", files.seeds);
   const std::size_t n = scene.image.total();
   scene.seeds.assign(n, kNoLabel);
@@ -135,17 +161,15 @@ SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
             std::to_string(kMaxSeedColours) + "): is it an image rather than seeds?");
       }
       scene.seeds = labels_by_colour(seeds, scene.palette, "SEEDS", files.seeds, &kWhite);
-      if (!files.gt.empty()) {
-        const cv::Mat gt = load_colour_image(files.gt);
-        require_size(scene.image, gt, "GT", files.gt);
-        scene.truth = labels_by_colour(gt, scene.palette, "GT", files.gt);
+      if (has_gt) {
+        require_size(scene.image, images.gt, "GT", files.gt);
+        scene.truth = labels_by_colour(images.gt, scene.palette, "GT", files.gt);
       }
       break;
     }
     case SeedConvention::labels_from_gt: {
-      if (files.gt.empty())
-        throw std::invalid_argument("labels from the GT need a GT labeling (--gt)");
-      const cv::Mat gt = load_colour_image(files.gt);
+      if (!has_gt) throw std::invalid_argument("labels from the GT need a GT labeling (--gt)");
+      const cv::Mat& gt = images.gt;
       require_size(scene.image, gt, "GT", files.gt);
       scene.palette = distinct_colours(gt, nullptr);
       if (scene.palette.size() < 2) {
@@ -166,8 +190,8 @@ SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
         if (r > 127 && g < 128 && b < 128) scene.seeds[i] = 1;
         if (r < 128 && b > 127) scene.seeds[i] = 0;
       }
-      if (!files.gt.empty()) {
-        const cv::Mat gt = load_grey_image(files.gt);
+      if (has_gt) {
+        const cv::Mat& gt = images.gt;
         require_size(scene.image, gt, "GT", files.gt);
         scene.truth.resize(n);
         for (std::size_t i = 0; i < n; ++i) {

@@ -1,16 +1,20 @@
 #include "c2f/vision/stereo/disparity_io.hpp"
 
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <string_view>
 
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 
@@ -60,33 +64,71 @@ void write_pfm(const std::string& path, const cv::Mat& disparity) {
   }
 }
 
-cv::Mat read_pfm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open PFM file '" + path + "'");
-  std::string magic;
-  int width = 0, height = 0;
-  double scale = 0.0;
-  in >> magic >> width >> height >> scale;
-  if (magic != "Pf" || width <= 0 || height <= 0 || scale == 0.0 || !in) {
-    throw std::runtime_error(
-        "'" + path + "' is not a single-channel PFM file (expected header 'Pf', size, scale)");
+namespace {
+
+/// The next whitespace-separated header token of a PFM file at `at`, which moves past it.
+std::string_view pfm_token(std::string_view bytes, std::size_t& at) {
+  while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+  const std::size_t start = at;
+  while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at])) &&
+         at - start < 64)
+    ++at;
+  return bytes.substr(start, at - start);
+}
+
+}  // namespace
+
+cv::Mat parse_pfm(std::string_view bytes, const std::string& source) {
+  const auto malformed = [&](const std::string& what) {
+    return std::runtime_error("'" + source + "' is not a single-channel PFM file: " + what);
+  };
+  std::size_t at = 0;
+  if (pfm_token(bytes, at) != "Pf") throw malformed("expected the header 'Pf'");
+  const std::string_view width_text = pfm_token(bytes, at), height_text = pfm_token(bytes, at),
+                         scale_text = pfm_token(bytes, at);
+  const std::optional<long long> width = parse_integer(width_text),
+                                 height = parse_integer(height_text);
+  const std::optional<double> scale = parse_real(scale_text);
+  constexpr long long kMaxSide = 1 << 16;
+  if (!width || !height || *width < 1 || *height < 1 || *width > kMaxSide || *height > kMaxSide)
+    throw malformed("expected a width and a height in [1, 65536], got '" + std::string(width_text) +
+                    "' and '" + std::string(height_text) + "'");
+  if (!scale || *scale == 0.0)
+    throw malformed("expected a finite non-zero scale, got '" + std::string(scale_text) + "'");
+  // Exactly one whitespace byte ends the header; the rest is width x height floats.
+  if (at >= bytes.size() || !std::isspace(static_cast<unsigned char>(bytes[at])))
+    throw malformed("no data after the header");
+  ++at;
+  const auto expected = static_cast<std::size_t>(*width * *height * 4);
+  const std::size_t given = bytes.size() - at;
+  if (given != expected) {
+    throw std::runtime_error("'" + source + "' holds " + std::to_string(given) +
+                             " bytes of data after its header, expected " +
+                             std::to_string(expected) + " (" + std::to_string(*width) + "x" +
+                             std::to_string(*height) + " floats)");
   }
-  in.get();                       // the single whitespace after the scale
-  const bool swap = scale > 0.0;  // positive scale: big-endian data
-  cv::Mat disparity(height, width, CV_32F);
-  for (int y = height - 1; y >= 0; --y) {
-    for (int x = 0; x < width; ++x) {
-      unsigned char bytes[4];
-      if (!in.read(reinterpret_cast<char*>(bytes), 4))
-        throw std::runtime_error("'" + path + "' is truncated");
-      if (swap) std::swap(bytes[0], bytes[3]), std::swap(bytes[1], bytes[2]);
+  const bool swap = *scale > 0.0;  // positive scale: big-endian data
+  cv::Mat disparity(static_cast<int>(*height), static_cast<int>(*width), CV_32F);
+  for (int y = disparity.rows - 1; y >= 0; --y) {
+    for (int x = 0; x < disparity.cols; ++x, at += 4) {
+      unsigned char four[4];
+      std::memcpy(four, bytes.data() + at, 4);
+      if (swap) std::swap(four[0], four[3]), std::swap(four[1], four[2]);
       float value;
-      std::memcpy(&value, bytes, 4);
+      std::memcpy(&value, four, 4);
       disparity.at<float>(y, x) =
           std::isinf(value) ? std::numeric_limits<float>::quiet_NaN() : value;
     }
   }
   return disparity;
+}
+
+cv::Mat read_pfm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open PFM file '" + path + "'");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error("reading PFM file '" + path + "' failed");
+  return parse_pfm(bytes, path);
 }
 
 void write_disparity_png16(const std::string& path, const cv::Mat& disparity) {

@@ -5,10 +5,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/image_io.hpp"
 
 namespace c2f::vision {
@@ -23,44 +26,75 @@ std::vector<std::string> split_csv(const std::string& line) {
 }
 }  // namespace
 
-std::vector<SceneRow> read_scene_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open scene table '" + path + "'");
+std::vector<SceneRow> parse_scene_table(std::string_view text, const std::string& source) {
+  std::istringstream in{std::string(text)};
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error("scene table '" + path + "' is empty");
+  if (!std::getline(in, line)) throw std::invalid_argument("scene table '" + source + "' is empty");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
   const auto header = split_csv(line);
   auto column = [&](const std::string& name) {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end())
-      throw std::runtime_error("scene table '" + path + "': no column '" + name + "'");
+      throw std::invalid_argument("scene table '" + source + "': no column '" + name + "'");
     return static_cast<std::size_t>(it - header.begin());
   };
   const std::size_t year = column("year"), scene = column("scene"), dir = column("dir"),
                     width = column("width"), height = column("height"),
                     divisor = column("gt_divisor"), files = column("files");
+  const auto integer = [](const std::string& field, const char* name, long long low,
+                          long long high) {
+    const std::optional<long long> value = parse_integer(field);
+    if (!value || *value < low || *value > high) {
+      throw std::invalid_argument(std::string(name) + ": expected an integer in [" +
+                                  std::to_string(low) + ", " + std::to_string(high) + "], got '" +
+                                  field + "'");
+    }
+    return static_cast<int>(*value);
+  };
   std::vector<SceneRow> rows;
   for (int number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     const auto fields = split_csv(line);
     try {
-      if (fields.size() != header.size())
-        throw std::runtime_error("has " + std::to_string(fields.size()) + " fields");
+      if (fields.size() != header.size()) {
+        throw std::invalid_argument("has " + std::to_string(fields.size()) +
+                                    " fields, the header " + std::to_string(header.size()));
+      }
       SceneRow row;
-      row.year = std::stoi(fields[year]);
+      row.year = integer(fields[year], "year", 0, 9999);
       row.scene = fields[scene];
       row.dir = fields[dir];
-      row.width = std::stoi(fields[width]);
-      row.height = std::stoi(fields[height]);
-      row.gt_divisor = std::stod(fields[divisor]);
+      if (row.scene.empty() || row.dir.empty())
+        throw std::invalid_argument("the scene name and its dir must not be empty");
+      row.width = integer(fields[width], "width", 1, 1 << 16);
+      row.height = integer(fields[height], "height", 1, 1 << 16);
+      const std::optional<double> gt_divisor = parse_real(fields[divisor]);
+      if (!gt_divisor || *gt_divisor <= 0.0) {
+        throw std::invalid_argument("gt_divisor: expected a finite number > 0, got '" +
+                                    fields[divisor] + "'");
+      }
+      row.gt_divisor = *gt_divisor;
       std::istringstream names(fields[files]);
       for (std::string name; names >> name;) row.files.push_back(name);
-      rows.push_back(row);
+      if (std::any_of(rows.begin(), rows.end(),
+                      [&](const SceneRow& earlier) { return earlier.scene == row.scene; }))
+        throw std::invalid_argument("scene '" + row.scene + "' appears twice");
+      rows.push_back(std::move(row));
     } catch (const std::exception& error) {
-      throw std::runtime_error("scene table '" + path + "' line " + std::to_string(number) + ": " +
-                               error.what());
+      throw std::invalid_argument("scene table '" + source + "' line " + std::to_string(number) +
+                                  ": " + error.what());
     }
   }
   return rows;
+}
+
+std::vector<SceneRow> read_scene_table(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument("cannot open scene table '" + path + "'");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::invalid_argument("reading scene table '" + path + "' failed");
+  return parse_scene_table(text, path);
 }
 
 cv::Mat load_gt_disparity(const std::string& path, double divisor) {

@@ -1,11 +1,14 @@
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+
 #include "c2f/core/enum_names.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "c2f/core/grid.hpp"
+#include "c2f/core/memory_need.hpp"
 #include "c2f/vision/stereo/colour_weights.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
@@ -32,10 +35,27 @@ std::string TsgoOptions::validate() const {
   return {};
 }
 
+std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels) {
+  // Per pixel and label: the volume and its filtering copy (2 x 8 bytes) and the move
+  // coefficients (d, p) kept per label (2 x 8 bytes). Per pixel: a doubled QPBO graph (two
+  // 32-byte nodes, 4 edges of 2 x 2 x 16-byte arcs each) and the images and labelings, ~512.
+  const std::optional<std::size_t> pixels = checked_product({width, height});
+  if (!pixels || labels < 0) return std::nullopt;
+  const std::optional<std::size_t> per_pixel =
+      checked_product({static_cast<std::size_t>(labels), 32});
+  if (!per_pixel || *per_pixel > std::numeric_limits<std::size_t>::max() - 512) return std::nullopt;
+  return checked_product({*pixels, *per_pixel + 512});
+}
+
 TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options) {
   if (const std::string problem = options.validate(); !problem.empty()) {
     throw std::invalid_argument("TSGO options: " + problem);
   }
+  require_memory("the TSGO energy of " + std::to_string(left.cols) + "x" +
+                     std::to_string(left.rows) + " pixels and " + std::to_string(options.labels) +
+                     " labels",
+                 tsgo_memory_estimate(static_cast<std::size_t>(left.cols),
+                                      static_cast<std::size_t>(left.rows), options.labels));
   EqualisedPair pair = equalise_photometry(left, right, options.equalise_tolerance);
   const double mul = gradient_scale(pair.left);
   CostVolume volume =

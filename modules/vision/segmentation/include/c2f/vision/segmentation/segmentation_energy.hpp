@@ -2,8 +2,10 @@
 // The data terms of cooperative-cut segmentation, as the cooperative-cuts data preparation
 // builds them, and the energies made of them.
 
+#include <cstddef>
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -44,6 +46,15 @@ struct SegmentationProblem {
   CoopEnergy coop;
   PairwiseEnergy potts;  ///< the alpha-expansion baseline: potts_energy(coop)
 };
+
+/// A lower estimate of the bytes a segmentation of `pixels` pixels and `labels` labels needs:
+/// unaries, their GMM fits and the Potts copy (3 x 8 bytes per pixel and label), the 8-connected
+/// edges of both energies and one QPBO move graph (~1 KiB per pixel). std::nullopt on overflow.
+std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int labels);
+
+/// Builds both energies from the scene. Throws std::invalid_argument when the problem needs
+/// more memory than is available (require_memory with segmentation_memory_estimate, checked
+/// before anything is allocated).
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
                                          const CoopParameters& parameters, int num_classes = 10);
 

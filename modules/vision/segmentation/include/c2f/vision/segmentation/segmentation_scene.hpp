@@ -57,6 +57,17 @@ struct SegmentationFiles {
 /// the path of an unreadable file.
 SegmentationScene load_segmentation_scene(const SegmentationFiles& files);
 
+/// The images of a scene, decoded: the image and the seeds 8-bit BGR, the GT (empty when none)
+/// 8-bit BGR, or 8-bit grey for SeedConvention::binary.
+struct SegmentationImages {
+  cv::Mat image, seeds, gt;
+};
+
+/// The scene of decoded images, checked as load_segmentation_scene checks files (whose names
+/// and convention `files` gives, for messages). Throws std::invalid_argument.
+SegmentationScene segmentation_scene_from_images(const SegmentationImages& images,
+                                                 const SegmentationFiles& files);
+
 /// The scene shrunk by an integer factor: the image by area averaging; a pixel of the result
 /// is seeded with a label when any pixel of its block carries that seed (the first in raster
 /// order when several do, so thin scribbles survive); the truth by the block's top-left pixel.

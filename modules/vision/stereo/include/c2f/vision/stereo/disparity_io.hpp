@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/labeling.hpp"
@@ -24,6 +25,10 @@ void write_pfm(const std::string& path, const cv::Mat& disparity);
 /// Reads a single-channel PFM ("Pf", either endianness); infinities become NaN. Throws
 /// std::runtime_error naming the path for a missing or malformed file.
 cv::Mat read_pfm(const std::string& path);
+/// The PFM in `bytes` (a whole file): header "Pf", width and height in [1, 65536], a finite
+/// non-zero scale, one whitespace byte, then exactly width x height floats (trailing data is
+/// an error). Throws std::runtime_error naming `source` and what was expected.
+cv::Mat parse_pfm(std::string_view bytes, const std::string& source);
 
 /// 16-bit PNG with value round(256 * d), 0 for unknown (NaN) or negative values.
 void write_disparity_png16(const std::string& path, const cv::Mat& disparity);

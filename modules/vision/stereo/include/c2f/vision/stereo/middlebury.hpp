@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "c2f/vision/stereo/stereo_scene.hpp"
@@ -22,8 +23,13 @@ struct SceneRow {
 };
 
 /// Reads scenes.csv (header year,scene,dir,width,height,scale,gt_divisor,...,files,...).
-/// Throws std::runtime_error naming the path and line for a missing file or malformed row.
+/// Throws std::invalid_argument naming the path and line for a missing file or malformed row.
 std::vector<SceneRow> read_scene_table(const std::string& path);
+/// The scene table in `text` (a whole file), strictly: every row has the header's field count,
+/// year, width and height are integers (sides in [1, 65536]), gt_divisor a finite number > 0,
+/// names are non-empty and unique. Throws std::invalid_argument naming `source`, the line and
+/// the field.
+std::vector<SceneRow> parse_scene_table(std::string_view text, const std::string& source);
 
 /// A GT disparity PNG divided by `divisor`, as CV_32F; unknown pixels (stored 0) are NaN.
 /// Palette PNGs decode to their grey levels. Throws std::invalid_argument for divisor <= 0 and

@@ -3,7 +3,9 @@
 // view. (The reference also solved the right view's MRF every iteration and never used the
 // result; we do not compute it.)
 
+#include <cstddef>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string_view>
 
 #include "c2f/core/pairwise_energy.hpp"
@@ -41,9 +43,16 @@ struct TsgoCost {
   bool equalised;     ///< whether photometric equalisation changed the images
 };
 
+/// A lower estimate of the bytes a TSGO run of width x height pixels and `labels` labels needs
+/// besides its recycled move graphs (MoveOptions::graph_memory_limit): the cost volume, which
+/// becomes the unaries, a filtering copy of it, each label's patched move coefficients and one
+/// QPBO move graph. std::nullopt when the count overflows.
+std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels);
+
 /// TSGO step 1 for the left view: equalisation, gradient features, matching cost, robust
 /// transform, border fill and the cross-bilateral filter. Throws std::invalid_argument for
-/// images that are not 8-bit colour of one size, or invalid options.
+/// images that are not 8-bit colour of one size, invalid options, or a problem larger than
+/// the memory available (require_memory with tsgo_memory_estimate, checked first).
 TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options = {});
 
 /// TSGO step 2: the 4-connected grid energy with the volume as unaries and weights from the

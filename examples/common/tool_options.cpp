@@ -1,0 +1,167 @@
+#include "tool_options.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "c2f/core/number_text.hpp"
+
+namespace po = boost::program_options;
+
+namespace c2f::examples {
+
+namespace {
+
+/// "--labels" for the declaration "labels", "--out" for "out,o".
+std::string option_text(const char* name) {
+  const std::string declared(name);
+  return "--" + declared.substr(0, declared.find(','));
+}
+
+std::string with_range(const char* help, const std::string& range) {
+  return std::string(help) + " (" + range + ")";
+}
+
+}  // namespace
+
+std::string option_message(const std::string& option, const std::string& message) {
+  const std::string name = option.substr(option.find_first_not_of('-')) + ": ";
+  return option + ": " + (message.rfind(name, 0) == 0 ? message.substr(name.size()) : message);
+}
+
+void require_file(const std::string& path, const char* argument) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::invalid_argument(std::string(argument) + ": file '" + path + "' does not exist");
+}
+
+std::string describe(IntegerRange range) {
+  return "an integer in [" + std::to_string(range.min) + ", " + std::to_string(range.max) + "]";
+}
+
+std::string describe(RealRange range) {
+  return std::string("a finite number in ") + (range.exclusive_min ? "(" : "[") +
+         format_real(range.min) + ", " + format_real(range.max) + (range.exclusive_max ? ")" : "]");
+}
+
+long long parse_integer_option(const std::string& option, const std::string& text,
+                               IntegerRange range) {
+  const std::optional<long long> value = parse_integer(text);
+  if (!value || *value < range.min || *value > range.max)
+    throw std::invalid_argument(option + ": expected " + describe(range) + ", got '" + text + "'");
+  return *value;
+}
+
+double parse_real_option(const std::string& option, const std::string& text, RealRange range) {
+  const std::optional<double> value = parse_real(text);
+  const bool inside = value && (range.exclusive_min ? *value > range.min : *value >= range.min) &&
+                      (range.exclusive_max ? *value < range.max : *value <= range.max);
+  if (!inside)
+    throw std::invalid_argument(option + ": expected " + describe(range) + ", got '" + text + "'");
+  return *value;
+}
+
+ToolOptions::ToolOptions(const std::string& caption) : visible_(caption) {
+  visible_.add_options()("help,h", "show this help");
+}
+
+ToolOptions& ToolOptions::flag(const char* name, bool* target, const char* help) {
+  visible_.add_options()(name, po::bool_switch(target), help);
+  return *this;
+}
+
+ToolOptions& ToolOptions::text(const char* name, std::string* target, const char* help) {
+  auto* value = po::value(target);
+  if (!target->empty()) value->default_value(*target);
+  visible_.add_options()(name, value, help);
+  return *this;
+}
+
+ToolOptions& ToolOptions::file(const char* name, std::string* target, const char* help) {
+  const std::string option = option_text(name);
+  visible_.add_options()(name, po::value(target)->notifier([option](const std::string& path) {
+    if (!std::filesystem::is_regular_file(path))
+      throw std::invalid_argument(option + ": file '" + path + "' does not exist");
+  }),
+                         help);
+  return *this;
+}
+
+ToolOptions& ToolOptions::path(const char* name, std::string* target, const char* help) {
+  const std::string option = option_text(name);
+  auto* value = po::value(target)->notifier([option](const std::string& path) {
+    if (path.empty()) throw std::invalid_argument(option + ": expected a path, got ''");
+  });
+  if (!target->empty()) value->default_value(*target);
+  visible_.add_options()(name, value, help);
+  return *this;
+}
+
+ToolOptions& ToolOptions::add_integer(const char* name, std::function<void(long long)> store,
+                                      long long default_value, IntegerRange range,
+                                      const char* help) {
+  const std::string option = option_text(name);
+  visible_.add_options()(name,
+                         po::value<std::string>()
+                             ->default_value(std::to_string(default_value))
+                             ->notifier([option, store, range](const std::string& text) {
+                               store(parse_integer_option(option, text, range));
+                             }),
+                         with_range(help, describe(range)).c_str());
+  return *this;
+}
+
+ToolOptions& ToolOptions::real(const char* name, double* target, RealRange range,
+                               const char* help) {
+  const std::string option = option_text(name);
+  visible_.add_options()(name,
+                         po::value<std::string>()
+                             ->default_value(format_real(*target))
+                             ->notifier([option, target, range](const std::string& text) {
+                               *target = parse_real_option(option, text, range);
+                             }),
+                         with_range(help, describe(range)).c_str());
+  return *this;
+}
+
+std::optional<std::vector<std::string>> ToolOptions::parse(int argc, const char* const* argv,
+                                                           const Positionals& positionals) const {
+  po::options_description hidden;
+  hidden.add_options()("positional", po::value<std::vector<std::string>>(), "");
+  po::options_description all;
+  all.add(visible_).add(hidden);
+  po::positional_options_description positional;
+  positional.add("positional", -1);
+  // No abbreviations: "--lab 3" is an unknown option, not --labels.
+  const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+  po::variables_map values;
+  try {
+    po::store(
+        po::command_line_parser(argc, argv).options(all).positional(positional).style(style).run(),
+        values);
+  } catch (const po::error& error) {
+    throw std::invalid_argument(error.what());
+  }
+  if (values.count("help")) {
+    std::cout << visible_ << "\n";
+    return std::nullopt;
+  }
+  try {
+    po::notify(values);  // the notifiers parse and check every value
+  } catch (const po::error& error) {
+    throw std::invalid_argument(error.what());
+  }
+  std::vector<std::string> arguments = values.count("positional")
+                                           ? values["positional"].as<std::vector<std::string>>()
+                                           : std::vector<std::string>{};
+  if (arguments.size() > positionals.max_count) {
+    const std::string expected = positionals.max_count == 0
+                                     ? "takes no positional arguments"
+                                     : "takes at most " + std::to_string(positionals.max_count) +
+                                           " (" + positionals.names + ")";
+    throw std::invalid_argument("unexpected argument '" + arguments[positionals.max_count] +
+                                "': the tool " + expected + "; see --help");
+  }
+  return arguments;
+}
+
+}  // namespace c2f::examples

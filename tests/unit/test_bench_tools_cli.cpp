@@ -1,0 +1,78 @@
+// The benchmark tools and c2f-plot (built with the benchmarks): malformed arguments are an
+// error naming the option and what was expected (exit code 2, before any data is read);
+// traces holding values a plot cannot show are an error naming the file, the line and the
+// value, not a crash.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "support/run_tool.hpp"
+
+TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plot][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-plot";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string header = "time_s,level,step,energy,num_vars\n";
+  auto trace = [&](const std::string& name, const std::string& rows) {
+    const auto path = dir / name;
+    std::ofstream(path) << header << rows;
+    return path.string();
+  };
+  const std::string good = trace("good.csv", "0.1,0,0,10,4\n0.2,0,1,8,4\n");
+  for (const auto& [name, rows, expected] :
+       {std::tuple{"nan.csv", "0.1,0,0,nan,4\n", "energy 'nan' is not a finite number"},
+        std::tuple{"inf.csv", "0.1,0,0,10,4\ninf,0,1,8,4\n", "time_s 'inf' is not a time"},
+        std::tuple{"huge.csv", "0.1,0,0,1e308,4\n0.2,0,1,-1e308,4\n",
+                   "energy '1e308' is not a finite number within +-1e300"},
+        std::tuple{"garbage.csv", "0.1,0,0,10x,4\n", "energy '10x'"}}) {
+    const auto r = c2f::test::run_tool(
+        C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + trace(name, rows));
+    INFO(name << ": " << r.output);
+    CHECK(r.exit_code != 0);
+    CHECK(r.exit_code != -1);  // not killed by a signal
+    CHECK_THAT(r.output, Catch::Contains(name) && Catch::Contains(expected));
+  }
+  const auto ok =
+      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + good);
+  CHECK(ok.exit_code == 0);
+  CHECK(std::filesystem::exists(dir / "plot.png"));
+}
+
+TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli][malformed]") {
+  const std::string bench = C2F_BENCH_DIR;
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"c2f-bench-expansion", "run Teddy --labels abc",
+       "--labels: expected an integer in [2, 256], got 'abc'"},
+      {"c2f-bench-expansion", "", "expected 'run SCENE' or 'summarize ROWS.tsv'"},
+      {"c2f-bench-expansion", "walk Teddy", "expected 'run SCENE' or 'summarize ROWS.tsv'"},
+      {"c2f-bench-expansion", "run Teddy --graph-memory nan", "--graph-memory: expected a finite"},
+      {"c2f-bench-stereo", "run Teddy --time-limit nan",
+       "--time-limit: expected a finite number in (0, 1e+07], got 'nan'"},
+      {"c2f-bench-stereo", "run Teddy --schedule cp:1", "--schedule: level 'cp:1'"},
+      {"c2f-bench-stereo", "run Teddy --maxflow quick", "--maxflow: unknown max-flow backend"},
+      {"c2f-bench-stereo", "run Teddy --coarse-tolerance 2",
+       "--coarse-tolerance: expected a finite number in [0, 1), got '2'"},
+      {"c2f-bench-stereo", "run Teddy Dolls", "unexpected argument 'Dolls'"},
+      {"c2f-bench-segment", "run set name --time-limit 0",
+       "--time-limit: expected a finite number in (0, 1e+07], got '0'"},
+      {"c2f-bench-segment", "run set name --configs nope",
+       "--configs: unknown configuration 'nope'"},
+      {"c2f-bench-levels", "", "give SCENE"},
+      {"c2f-bench-levels", "Teddy --schedule cp:x", "--schedule: level 'cp:x'"},
+      {"c2f-bench-partitions", "data more", "unexpected argument 'more'"},
+      {"c2f-plot", "-o plot.png", "need -o PLOT.png and at least one NAME=TRACE.csv"},
+      {"c2f-plot", "-o plot.png =trace.csv", "unexpected argument '=trace.csv'"},
+      {"c2f-plot", "-o plot.png --column", "the required argument for option '--column'"},
+  };
+  for (const auto& [tool, arguments, expected] : cases) {
+    const auto r = c2f::test::run_tool(bench + "/" + tool, arguments);
+    INFO(tool << " " << arguments << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(tool + ": error: ") && Catch::Contains(expected));
+  }
+}

@@ -1,0 +1,415 @@
+// The malformed-input table: bad arguments and bad files given to every tool (c2f-stereo,
+// c2f-segment, c2f-synthetic). Each case asserts the exit code, that the message names the
+// input and says what was expected, and that the outputs of an earlier good run in the folder
+// it was pointed at are byte-identical afterwards (no file changed, added or removed).
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "support/run_tool.hpp"
+#include "support/synthetic_segmentation.hpp"
+#include "support/synthetic_stereo.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Case {
+  const char* tool;       ///< "stereo", "segment" or "synthetic"
+  std::string arguments;  ///< with {dir}, {left}, {right}, {image}, {seeds}, {gt}, {out}
+  int exit_code;
+  std::vector<std::string> expected;  ///< parts of the message (the input and what was expected)
+};
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+/// Every file below `root` with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    files[fs::relative(entry.path(), root).string()] =
+        entry.is_regular_file() ? read_bytes(entry.path()) : std::string("<folder>");
+  }
+  return files;
+}
+
+std::string substitute(std::string text, const std::map<std::string, std::string>& values) {
+  for (const auto& [key, value] : values) {
+    for (std::size_t at; (at = text.find(key)) != std::string::npos;)
+      text.replace(at, key.size(), value);
+  }
+  return text;
+}
+
+/// The fixture: good inputs, bad files and folders, and the good runs' outputs.
+struct Inputs {
+  fs::path dir = fs::temp_directory_path() / "c2f-test-malformed";
+  std::map<std::string, std::string> names;
+
+  Inputs() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 3);
+    cv::imwrite((dir / "left.png").string(), pair.left);
+    cv::imwrite((dir / "right.png").string(), pair.right);
+    cv::imwrite((dir / "small.png").string(), pair.left(cv::Rect(0, 0, 20, 20)));
+    cv::imwrite((dir / "small-grey.png").string(), cv::Mat(20, 20, CV_8U, cv::Scalar(8)));
+    cv::imwrite((dir / "deep.png").string(), cv::Mat(32, 48, CV_16UC3, cv::Scalar(9, 900, 9000)));
+    cv::imwrite((dir / "big.png").string(), cv::Mat(3000, 4000, CV_8UC3, cv::Scalar(90, 40, 20)));
+    write_bytes(dir / "empty.png", "");
+    write_bytes(dir / "text.png", "not an image\n");
+    const std::string png = read_bytes(dir / "left.png");
+    write_bytes(dir / "truncated.png", png.substr(0, png.size() / 2));
+
+    const auto seg = c2f::test::write_synthetic_segmentation(dir / "seg", 40, 30, 3);
+    cv::Mat white(30, 40, CV_8UC3, cv::Scalar(255, 255, 255));
+    cv::imwrite((dir / "seeds-none.png").string(), white);
+    cv::Mat one = white.clone();
+    cv::line(one, {5, 5}, {20, 5}, cv::Scalar(0, 0, 255), 2);
+    cv::imwrite((dir / "seeds-one.png").string(), one);
+    cv::Mat grey_gt(30, 40, CV_8U, cv::Scalar(255));
+    grey_gt.at<std::uint8_t>(3, 4) = 77;
+    cv::imwrite((dir / "gt-grey77.png").string(), grey_gt);
+    cv::Mat odd_gt = cv::imread(seg.gt);
+    odd_gt.at<cv::Vec3b>(2, 2) = cv::Vec3b(10, 200, 30);  // a colour no seed has
+    cv::imwrite((dir / "gt-odd.png").string(), odd_gt);
+
+    // Scene tables: good rows pointing at the pair, and one defect each.
+    const std::string header = "year,scene,dir,width,height,scale,gt_divisor,files\n";
+    const auto table = [&](const char* name, const std::string& rows) {
+      fs::create_directories(dir / name);
+      write_bytes(dir / name / "scenes.csv", header + rows);
+    };
+    table("scenes-good", "2003,Pair,pair,48,32,native,4,left.png right.png\n");
+    table("scenes-width", "2003,Pair,pair,48x,32,native,4,left.png\n");
+    table("scenes-fields", "2003,Pair,pair,48,32\n");
+    table("scenes-divisor", "2003,Pair,pair,48,32,native,inf,left.png\n");
+    table("scenes-twice", "2003,Pair,a,48,32,native,4,x\n2005,Pair,b,48,32,native,4,x\n");
+    fs::create_directories(dir / "scenes-nocolumn");
+    write_bytes(dir / "scenes-nocolumn" / "scenes.csv", "year,scene\n2003,Pair\n");
+
+    names = {{"{dir}", dir.string()},
+             {"{left}", (dir / "left.png").string()},
+             {"{right}", (dir / "right.png").string()},
+             {"{image}", seg.image},
+             {"{seeds}", seg.seeds},
+             {"{gt}", seg.gt},
+             {"{out}", (dir / "out").string()}};
+  }
+};
+
+std::string binary(const char* tool) {
+  const std::string name = tool;
+  return name == "stereo"    ? C2F_STEREO_BINARY
+         : name == "segment" ? C2F_SEGMENT_BINARY
+                             : C2F_SYNTHETIC_BINARY;
+}
+
+std::vector<Case> stereo_cases() {
+  const std::string pair = "{left} {right} -o {out}/stereo ";
+  const std::string scene = "-o {out}/stereo --scene Pair --data {dir}/";
+  return {
+      {"stereo",
+       "{dir}/missing.png {right} -o {out}/stereo",
+       2,
+       {"LEFT: file '", "missing.png' does not exist"}},
+      {"stereo",
+       "{left} {dir}/missing.png -o {out}/stereo",
+       2,
+       {"RIGHT: file '", "missing.png' does not exist"}},
+      {"stereo", "{left} -o {out}/stereo", 2, {"give LEFT and RIGHT images, or --scene NAME"}},
+      {"stereo", pair + "{left}", 2, {"unexpected argument '", "takes at most 2 (LEFT RIGHT)"}},
+      {"stereo", "{left} {right}", 2, {"-o/--out: an output directory is required"}},
+      {"stereo",
+       "{dir}/empty.png {right} -o {out}/stereo",
+       2,
+       {"empty.png' could not be read as an image"}},
+      {"stereo",
+       "{dir}/text.png {right} -o {out}/stereo",
+       2,
+       {"text.png' could not be read as an image"}},
+      {"stereo",
+       "{dir}/truncated.png {right} -o {out}/stereo",
+       2,
+       {"truncated.png' could not be read as an image"}},
+      {"stereo", "{left} {dir}/small.png -o {out}/stereo", 2, {"LEFT is 48x32, RIGHT is 20x20"}},
+      {"stereo",
+       "{dir}/deep.png {right} -o {out}/stereo",
+       2,
+       {"deep.png' has 16-bit channels; expected 8 bits per channel"}},
+      {"stereo", pair + "--labels 1", 2, {"--labels: expected an integer in [2, 256], got '1'"}},
+      {"stereo", pair + "--labels 1e3", 2, {"--labels: expected an integer", "got '1e3'"}},
+      {"stereo", pair + "--labels abc", 2, {"--labels: expected an integer", "got 'abc'"}},
+      {"stereo", pair + "--labels 300", 2, {"--labels: expected an integer in [2, 256]"}},
+      {"stereo", pair + "--labels", 2, {"the required argument for option '--labels' is missing"}},
+      {"stereo",
+       pair + "--time-limit nan",
+       2,
+       {"--time-limit: expected a finite number in [0, 1e+07], got 'nan'"}},
+      {"stereo", pair + "--time-limit -1", 2, {"--time-limit: expected a finite number"}},
+      {"stereo", pair + "--time-limit 1e999", 2, {"--time-limit: ", "got '1e999'"}},
+      {"stereo", pair + "--max-steps -3", 2, {"--max-steps: expected an integer in [0, "}},
+      {"stereo", pair + "--max-steps 5x", 2, {"--max-steps: ", "got '5x'"}},
+      {"stereo", pair + "--plateau 0", 2, {"--plateau: expected an integer in [1, "}},
+      {"stereo",
+       pair + "--plateau-tolerance 1",
+       2,
+       {"--plateau-tolerance: expected a finite number in [0, 1), got '1'"}},
+      {"stereo", pair + "--final-plateau 2.5", 2, {"--final-plateau: ", "got '2.5'"}},
+      {"stereo", pair + "--downscale 0", 2, {"--downscale: expected an integer in [1, 1024]"}},
+      {"stereo", pair + "--downscale 100", 2, {"downscale: 48x32 views shrunk by 100"}},
+      {"stereo",
+       pair + "--gt {left} --gt-divisor 0",
+       2,
+       {"--gt-divisor: expected a finite number in (0, 65536], got '0'"}},
+      {"stereo", pair + "--gt {left} --gt-divisor inf", 2, {"--gt-divisor: ", "got 'inf'"}},
+      {"stereo",
+       pair + "--gt {dir}/missing.png",
+       2,
+       {"--gt: file '", "missing.png' does not exist"}},
+      {"stereo", pair + "--gt {dir}/small-grey.png", 2, {"small-grey.png' is 20x20"}},
+      {"stereo",
+       pair + "--gt {left}",
+       2,
+       {"left.png' has 3 channels", "expected one channel of 8 or 16 bits"}},
+      {"stereo", pair + "--mask {left}", 2, {"a right-view GT or a mask needs the left-view GT"}},
+      {"stereo", pair + "--schedule cp:1", 2, {"--schedule: level 'cp:1': expected cp:N_L,N_iter"}},
+      {"stereo",
+       pair + "--schedule auto:",
+       2,
+       {"--schedule: level 'auto:': auto needs at least one fraction"}},
+      {"stereo",
+       pair + "--schedule \"slic:200 flat\"",
+       2,
+       {"region size 200 is larger than the 48x32 image's shorter side"}},
+      {"stereo",
+       pair + "--labels 8 --schedule \"cp:9,1 flat\"",
+       2,
+       {"--schedule: ", "cp:9,1", "(--labels 8)"}},
+      {"stereo",
+       pair + "--solver magic",
+       2,
+       {"--solver: unknown solver 'magic' (expected expansion, swap, lbp or icm)"}},
+      {"stereo", pair + "--maxflow fastest", 2, {"--maxflow: unknown max-flow backend 'fastest'"}},
+      {"stereo", pair + "--graph-memory -1", 2, {"--graph-memory: expected a finite number in"}},
+      {"stereo", pair + "--label-order backwards", 2, {"--label-order: ", "'backwards'"}},
+      {"stereo", pair + "--smoothness wavy", 2, {"--smoothness: ", "'wavy'"}},
+      {"stereo", pair + "--lab 8", 2, {"unrecognised option '--lab'"}},
+      {"stereo", pair + "--bogus", 2, {"unrecognised option '--bogus'"}},
+      {"stereo",
+       scene + "scenes-good --gt {left}",
+       2,
+       {"--scene loads the scene's own GT and masks"}},
+      {"stereo", "{left} {right} " + scene + "scenes-good", 2, {"--scene replaces LEFT RIGHT"}},
+      {"stereo",
+       "-o {out}/stereo --scene Nowhere --data {dir}/scenes-good",
+       2,
+       {"no scene 'Nowhere' in ", "scenes.csv (have: Pair)"}},
+      {"stereo", scene + "missing-folder", 2, {"cannot open scene table '", "missing-folder"}},
+      {"stereo",
+       scene + "scenes-width",
+       2,
+       {"scenes-width/scenes.csv' line 2: width: expected an integer in [1, 65536], got '48x'"}},
+      {"stereo", scene + "scenes-fields", 2, {"scenes-fields/scenes.csv' line 2: has 5 fields"}},
+      {"stereo",
+       scene + "scenes-divisor",
+       2,
+       {"line 2: gt_divisor: expected a finite number > 0, got 'inf'"}},
+      {"stereo", scene + "scenes-twice", 2, {"line 3: scene 'Pair' appears twice"}},
+      {"stereo", scene + "scenes-nocolumn", 2, {"scenes-nocolumn/scenes.csv': no column 'dir'"}},
+      {"stereo",
+       "{dir}/big.png {dir}/big.png -o {out}/stereo --labels 256",
+       2,
+       {"the TSGO energy of 4000x3000 pixels and 256 labels needs ", "this machine has available"}},
+      {"stereo", pair + "--labels 8 --max-steps 2 -q --trace /dev/full", 1, {"'/dev/full'"}},
+      {"stereo", "{left} {right} -o {left}", 1, {"left.png"}},
+  };
+}
+
+std::vector<Case> segment_cases() {
+  const std::string run = "{image} {seeds} -o {out}/segment ";
+  return {
+      {"segment",
+       "{dir}/missing.png {seeds} -o {out}/segment",
+       2,
+       {"IMAGE: file '", "missing.png' does not exist"}},
+      {"segment",
+       "{image} {dir}/missing.png -o {out}/segment",
+       2,
+       {"SEEDS: file '", "missing.png' does not exist"}},
+      {"segment", "{image} -o {out}/segment", 2, {"give IMAGE and SEEDS (got 1 positional"}},
+      {"segment", run + "{gt}", 2, {"unexpected argument '", "takes at most 2 (IMAGE SEEDS)"}},
+      {"segment", "{image} {seeds}", 2, {"-o/--out: an output directory is required"}},
+      {"segment",
+       "{image} {dir}/small.png -o {out}/segment",
+       2,
+       {"SEEDS '", "small.png' is 20x20, the image is 40x30"}},
+      {"segment",
+       "{image} {dir}/seeds-none.png -o {out}/segment",
+       2,
+       {"seeds-none.png' has 0 seed colour(s) besides white; segmentation needs at least 2"}},
+      {"segment",
+       "{image} {dir}/seeds-one.png -o {out}/segment",
+       2,
+       {"seeds-one.png' has 1 seed colour(s)"}},
+      {"segment", "{image} {image} -o {out}/segment", 2, {"is it an image rather than seeds?"}},
+      {"segment",
+       "{image} {dir}/empty.png -o {out}/segment",
+       2,
+       {"empty.png' could not be read as an image"}},
+      {"segment",
+       "{dir}/text.png {seeds} -o {out}/segment",
+       2,
+       {"text.png' could not be read as an image"}},
+      {"segment",
+       run + "--aux annealing",
+       2,
+       {"--aux: unknown auxiliary-variable strategy 'annealing'"}},
+      {"segment", run + "--method magic", 2, {"--method: ", "'magic'"}},
+      {"segment", run + "--start later", 2, {"--start: ", "'later'"}},
+      {"segment", run + "--alpha 1", 2, {"--alpha: expected a finite number in [0, 1), got '1'"}},
+      {"segment", run + "--lambda -1", 2, {"--lambda: expected a finite number in [0, "}},
+      {"segment", run + "--theta nan", 2, {"--theta: ", "got 'nan'"}},
+      {"segment", run + "--classes 0", 2, {"--classes: expected an integer in [1, 256], got '0'"}},
+      {"segment", run + "--classes 1000", 2, {"--classes: ", "got '1000'"}},
+      {"segment", run + "--downscale 0", 2, {"--downscale: expected an integer in [1, 1024]"}},
+      {"segment", run + "--time-limit inf", 2, {"--time-limit: ", "got 'inf'"}},
+      {"segment",
+       run + "--plateau soon",
+       2,
+       {"--plateau: expected auto, sweep or a number, got 'soon'"}},
+      {"segment", run + "--plateau 0", 2, {"--plateau: expected an integer in [1, "}},
+      {"segment", run + "--final-plateau -1", 2, {"--final-plateau: ", "got '-1'"}},
+      {"segment",
+       run + "--schedule cp:9,1",
+       2,
+       {"--schedule: level cp:9,1 has N_L 9 above the 3 labels"}},
+      {"segment", run + "--schedule local:1,1", 2, {"local grouping reads a pairwise energy"}},
+      {"segment",
+       run + "--schedule \"cp:x\"",
+       2,
+       {"--schedule: level 'cp:x': expected cp:N_L,N_iter"}},
+      {"segment", run + "--labels-from-gt", 2, {"--labels-from-gt needs --gt"}},
+      {"segment",
+       run + "--labels-from-gt --binary --gt {gt}",
+       2,
+       {"--labels-from-gt and --binary are two conventions"}},
+      {"segment",
+       run + "--gt {dir}/missing.png",
+       2,
+       {"--gt: file '", "missing.png' does not exist"}},
+      {"segment",
+       run + "--gt {dir}/small.png",
+       2,
+       {"GT '", "small.png' is 20x20, the image is 40x30"}},
+      {"segment",
+       run + "--gt {dir}/gt-odd.png",
+       2,
+       {"GT '", "gt-odd.png': colour (30,200,10) at (2, 2) is none of the seed colours"}},
+      {"segment",
+       run + "--binary --gt {dir}/gt-grey77.png",
+       2,
+       {"gt-grey77.png': grey level 77 at pixel", "is none of 0 (background), 128"}},
+      {"segment", run + "--max-steps x", 2, {"--max-steps: ", "got 'x'"}},
+      {"segment", run + "--bogus 3", 2, {"unrecognised option '--bogus'"}},
+  };
+}
+
+std::vector<Case> synthetic_cases() {
+  const std::string run = "-o {out}/synthetic ";
+  return {
+      {"synthetic",
+       run + "--width 9223372036854775809",
+       2,
+       {"--width: expected an integer in [2, 65536], got '9223372036854775809'"}},
+      {"synthetic", run + "--width 1", 2, {"--width: expected an integer in [2, 65536]"}},
+      {"synthetic", run + "--height abc", 2, {"--height: ", "got 'abc'"}},
+      {"synthetic", run + "--labels 1", 2, {"--labels: expected an integer in [2, "}},
+      {"synthetic", run + "--noise nan", 2, {"--noise: expected a finite number", "got 'nan'"}},
+      {"synthetic", run + "--smoothness -1", 2, {"--smoothness: expected a finite number in [0, "}},
+      {"synthetic", run + "--seed -1", 2, {"--seed: expected an integer in [0, "}},
+      {"synthetic", run + "--blocks 16,x", 2, {"--blocks: 'x' is not a block size >= 1"}},
+      {"synthetic",
+       run + "--blocks 16,5",
+       2,
+       {"--blocks: BlockHierarchy: block size 5 does not divide the previous size 16"}},
+      {"synthetic", run + "--plateau 0", 2, {"--plateau: expected an integer in [1, "}},
+      {"synthetic", run + "--time-limit -5", 2, {"--time-limit: ", "got '-5'"}},
+      {"synthetic",
+       run + "extra",
+       2,
+       {"unexpected argument 'extra': the tool takes no positional arguments"}},
+      {"synthetic",
+       run + "--width 65536 --height 65536",
+       2,
+       {"65536x65536 pixels with 16 labels needs 832.0 GiB", "this machine has available"}},
+  };
+}
+
+}  // namespace
+
+TEST_CASE("every tool refuses malformed input by name and leaves earlier outputs untouched",
+          "[cli][malformed]") {
+  const Inputs inputs;
+  const auto& names = inputs.names;
+  // The earlier good runs whose outputs every case must leave as they were.
+  for (const auto& [tool, arguments] : std::vector<std::pair<const char*, std::string>>{
+           {"stereo", "{left} {right} -o {out}/stereo --labels 8 --max-steps 6 -q"},
+           {"segment", "{image} {seeds} --gt {gt} -o {out}/segment --classes 4 --max-steps 4 -q"},
+           {"synthetic", "-o {out}/synthetic --width 32 --height 24 --blocks 8,4"}}) {
+    const auto r = c2f::test::run_tool(binary(tool), substitute(arguments, names));
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+  }
+  auto before = snapshot(inputs.dir / "out");
+  const std::string left_before = read_bytes(inputs.dir / "left.png");
+  REQUIRE(before.size() >= 15);
+
+  std::vector<Case> cases = stereo_cases();
+  for (auto&& more : {segment_cases(), synthetic_cases()})
+    cases.insert(cases.end(), more.begin(), more.end());
+  CHECK(cases.size() >= 60);
+  for (const Case& c : cases) {
+    const std::string arguments = substitute(c.arguments, names);
+    const auto r = c2f::test::run_tool(binary(c.tool), arguments);
+    INFO("c2f-" << c.tool << " " << arguments << "\n" << r.output);
+    if (std::getenv("C2F_SHOW_MESSAGES"))
+      std::cout << "$ c2f-" << c.tool << " " << arguments << "\n" << r.output;
+    CHECK(r.exit_code == c.exit_code);
+    CHECK_THAT(r.output, Catch::Contains(std::string("c2f-") + c.tool + ": error: "));
+    for (const std::string& part : c.expected) CHECK_THAT(r.output, Catch::Contains(part));
+    const auto after = snapshot(inputs.dir / "out");
+    CHECK(after == before);
+    if (after != before) before = after;  // one failure is reported once
+  }
+  CHECK(read_bytes(inputs.dir / "left.png") == left_before);
+}
+
+TEST_CASE("every tool prints its usage for --help and exits 0", "[cli]") {
+  for (const auto& [tool, usage] : std::vector<std::pair<const char*, const char*>>{
+           {"stereo", "Usage: c2f-stereo LEFT RIGHT -o OUTDIR"},
+           {"segment", "Usage: c2f-segment IMAGE SEEDS -o OUTDIR"},
+           {"synthetic", "c2f-synthetic: restores a noisy"}}) {
+    const auto r = c2f::test::run_tool(binary(tool), "--help");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.output, Catch::Contains(usage) && Catch::Contains("(an integer in ["));
+  }
+}
