@@ -164,23 +164,25 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   // spread within one factor stays below ~708 are written as normal doubles, and every energy
   // difference survives the round trip (the energy read back is the original minus the sum of
   // the factors' minima, a constant).
-  std::vector<double> costs(static_cast<std::size_t>(L) * static_cast<std::size_t>(L));
+  // Tables are written from their costs directly, in two passes (the lowest cost, then the
+  // potentials): nothing of size L x L is allocated, whatever the label count.
   char number[40];
-  auto write_table = [&](std::size_t count, const std::string& where) {
-    double lowest = costs[0];
-    for (std::size_t k = 0; k < count; ++k) lowest = std::min(lowest, costs[k]);
+  auto write_table = [&](std::size_t count, const auto& cost, const std::string& where) {
+    double lowest = cost(0);
+    for (std::size_t k = 1; k < count; ++k) lowest = std::min(lowest, cost(k));
     out << "\n" << count << "\n";
     for (std::size_t k = 0; k < count; ++k) {
-      const double value = std::exp(-(costs[k] - lowest));
+      const double value = std::exp(-(cost(k) - lowest));
       if (!(value >= std::numeric_limits<double>::min())) {
         throw std::invalid_argument("write_uai: " + where + ": costs " + std::to_string(lowest) +
-                                    " and " + std::to_string(costs[k]) +
+                                    " and " + std::to_string(cost(k)) +
                                     " are too far apart for a UAI potential (spread > 708)");
       }
       std::snprintf(number, sizeof number, "%.17g", value);
       out << number << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
     }
   };
+  const auto labels = static_cast<std::size_t>(L);
   out << "MARKOV\n" << energy.num_variables() << "\n";
   for (std::size_t v = 0; v < energy.num_variables(); ++v)
     out << L << (v + 1 < energy.num_variables() ? ' ' : '\n');
@@ -188,16 +190,19 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   for (std::size_t v = 0; v < energy.num_variables(); ++v) out << "1 " << v << "\n";
   for (const Edge& e : energy.edges()) out << "2 " << e.u << ' ' << e.v << "\n";
   for (std::size_t v = 0; v < energy.num_variables(); ++v) {
-    for (Label l = 0; l < L; ++l) costs[static_cast<std::size_t>(l)] = energy.unary(v, l);
-    write_table(static_cast<std::size_t>(L), "unary of variable " + std::to_string(v));
+    write_table(
+        labels, [&](std::size_t k) { return energy.unary(v, static_cast<Label>(k)); },
+        "unary of variable " + std::to_string(v));
   }
   for (std::size_t i = 0; i < energy.edges().size(); ++i) {
     const Edge& e = energy.edges()[i];
-    for (Label a = 0; a < L; ++a) {
-      for (Label b = 0; b < L; ++b)
-        costs[static_cast<std::size_t>(a * L + b)] = energy.pairwise_cost(e, a, b);
-    }
-    write_table(costs.size(), "edge " + std::to_string(i));
+    write_table(
+        labels * labels,
+        [&](std::size_t k) {
+          return energy.pairwise_cost(e, static_cast<Label>(k / labels),
+                                      static_cast<Label>(k % labels));
+        },
+        "edge " + std::to_string(i));
   }
 }
 

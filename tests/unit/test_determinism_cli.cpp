@@ -1,0 +1,144 @@
+// Determinism: two runs of a tool with the same inputs and options write byte-identical
+// outputs. Timings are the only exception, and they live only in the trace's time column and
+// in the "<number> s" / "<number>s" figures of the summary and the printed report, which are
+// masked before the comparison.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "support/run_tool.hpp"
+#include "support/synthetic_segmentation.hpp"
+#include "support/synthetic_stereo.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Text with every duration ("0.129s", "1.97434 s", "3.294e-05 s") replaced by "<t>s".
+std::string without_durations(const std::string& text) {
+  static const std::regex duration(R"([0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)? ?s\b)");
+  return std::regex_replace(text, duration, "<t>s");
+}
+
+/// A trace without its first column (time_s).
+std::string without_time_column(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line, kept;
+  while (std::getline(in, line)) kept += line.substr(line.find(',') + 1) + "\n";
+  return kept;
+}
+
+/// A tool's printed report: durations masked, and the time column of printed trace rows
+/// (lines that start with a number and a comma).
+std::string printed_report(const std::string& output) {
+  static const std::regex trace_row(R"(^[0-9.e+-]+,)");
+  std::istringstream in(output);
+  std::string line, kept;
+  while (std::getline(in, line)) kept += std::regex_replace(line, trace_row, "<t>,") + "\n";
+  return without_durations(kept);
+}
+
+/// Every file of an output folder, timings masked as the file kind calls for.
+std::map<std::string, std::string> outputs(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    const std::string bytes = read_bytes(entry.path());
+    files[name] = name.starts_with("trace") ? without_time_column(bytes)
+                  : name == "summary.txt"   ? without_durations(bytes)
+                                            : bytes;
+  }
+  return files;
+}
+
+/// Runs `binary arguments -o FOLDER` into two folders and checks that they hold the same
+/// files with the same bytes (timings masked) and that the printed reports agree too.
+void check_two_runs_agree(const std::string& binary, const std::string& arguments,
+                          const fs::path& dir) {
+  std::string printed[2];
+  for (int run = 0; run < 2; ++run) {
+    const fs::path out = dir / ("run" + std::to_string(run));
+    fs::remove_all(out);
+    const auto r = c2f::test::run_tool(binary, arguments + " -o " + out.string());
+    INFO(arguments << "\n" << r.output);
+    REQUIRE(r.exit_code == 0);
+    printed[run] = printed_report(r.output);
+  }
+  const auto first = outputs(dir / "run0"), second = outputs(dir / "run1");
+  INFO(arguments);
+  REQUIRE(first.size() >= 3);
+  CHECK(first.size() == second.size());
+  for (const auto& [name, bytes] : first) {
+    INFO(name);
+    REQUIRE(second.count(name) == 1);
+    CHECK(second.at(name) == bytes);
+  }
+  // The printed report also names the output folder, which differs between the two runs.
+  CHECK(std::regex_replace(printed[0], std::regex("run0"), "run") ==
+        std::regex_replace(printed[1], std::regex("run1"), "run"));
+}
+
+}  // namespace
+
+TEST_CASE("durations are masked and nothing else", "[cli][determinism]") {
+  CHECK(without_durations("solve 0.129s, in 1.97434 s, 3.294e-05 s off; 30 steps, bad>1 2.5%") ==
+        "solve <t>s, in <t>s, <t>s off; 30 steps, bad>1 2.5%");
+  CHECK(without_time_column("time_s,level\n0.5,0\n0.7,1\n") == "level\n0\n1\n");
+  CHECK(printed_report("# trace\n0.25,0,1\nenergy 3, 0.5 s\n") ==
+        "# trace\n<t>,0,1\nenergy 3, <t>s\n");
+}
+
+TEST_CASE("c2f-stereo writes the same bytes twice", "[cli][determinism][stereo]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-stereo";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 11);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  cv::Mat gt8;
+  pair.gt.convertTo(gt8, CV_8U, 4.0);
+  cv::imwrite((dir / "gt.png").string(), gt8);
+  const std::string inputs = (dir / "left.png").string() + " " + (dir / "right.png").string() +
+                             " --gt " + (dir / "gt.png").string() + " --gt-divisor 4 --labels 10";
+  check_two_runs_agree(C2F_STEREO_BINARY,
+                       inputs + " --schedule paper --label-order random --save-partitions",
+                       dir / "expansion");
+  check_two_runs_agree(C2F_STEREO_BINARY, inputs + " --schedule regions --solver swap",
+                       dir / "swap");
+  check_two_runs_agree(C2F_STEREO_BINARY, inputs + " --schedule flat --solver lbp --max-steps 8",
+                       dir / "lbp");
+}
+
+TEST_CASE("c2f-segment writes the same bytes twice", "[cli][determinism][segment]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-segment";
+  fs::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 6);
+  const std::string inputs =
+      files.image + " " + files.seeds + " --gt " + files.gt + " --classes 4 ";
+  check_two_runs_agree(C2F_SEGMENT_BINARY, inputs + "--aux mm --schedule superpixels", dir / "mm");
+  check_two_runs_agree(C2F_SEGMENT_BINARY, inputs + "--aux ceres --schedule flat", dir / "ceres");
+  check_two_runs_agree(C2F_SEGMENT_BINARY,
+                       inputs + "--aux greedy --start current --schedule paper --save-partitions",
+                       dir / "greedy");
+}
+
+TEST_CASE("c2f-synthetic writes the same bytes twice", "[cli][determinism]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-synthetic";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  check_two_runs_agree(C2F_SYNTHETIC_BINARY, "--width 48 --height 40 --blocks 8,4,2 --seed 3",
+                       dir / "icm");
+}
