@@ -65,6 +65,9 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                "sweep: labels moves for expansion, label pairs for swap, 4 iterations for lbp, 1 "
                "for icm)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
+      .path("export-uai", &command.export_uai,
+            "also write the TSGO energy it solves as a UAI MARKOV model (for c2f-solve, toulbar2; "
+            "L^2 potentials per edge: meant for small or downscaled pairs)")
       .file("gt", &command.pair.gt, "ground-truth disparity PNG (0 = unknown)")
       .real("gt-divisor", &command.pair.gt_divisor, {0.0, 65536.0, true},
             "GT PNG value per disparity pixel")

@@ -27,6 +27,7 @@ struct StereoCommand {
   double plateau_tolerance = 0.0;  ///< coarse levels only
   int final_plateau = 0;           ///< 0: one sweep of the solver
   std::string trace;
+  std::string export_uai;  ///< --export-uai: the model, written in the UAI format
   bool save_partitions = false;
   bool quiet = false;
 };

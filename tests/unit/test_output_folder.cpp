@@ -91,3 +91,22 @@ TEST_CASE("OutputFolder removes staging folders that killed runs left behind", "
   { c2f::OutputFolder output(dir, {"summary.txt"}); }
   CHECK_FALSE(fs::exists(dir / ".c2f-staging-999999999"));
 }
+
+TEST_CASE("OutputFolder without a commit removes the folder it created", "[output]") {
+  const fs::path root = fs::temp_directory_path() / "c2f-test-output-created";
+  fs::remove_all(root);
+  fs::create_directories(root / "existing");
+  {
+    c2f::OutputFolder fresh(root / "fresh", {"a.txt"});
+    write_text(fresh.staging() / "a.txt", "never committed");
+    c2f::OutputFolder existing(root / "existing", {"a.txt"});
+  }
+  CHECK_FALSE(fs::exists(root / "fresh"));     // created by the run, which failed
+  CHECK(fs::is_directory(root / "existing"));  // the user's folder stays, even empty
+  {
+    c2f::OutputFolder fresh(root / "fresh", {"a.txt"});
+    write_text(fresh.staging() / "a.txt", "committed");
+    fresh.commit();
+  }
+  CHECK(fs::exists(root / "fresh" / "a.txt"));
+}

@@ -121,3 +121,27 @@ TEST_CASE("UAI keeps energy differences of costs far from zero", "[uai]") {
   for (const Labeling& x : {Labeling{0, 1}, Labeling{1, 0}, Labeling{1, 1}})
     CHECK(back.evaluate(x) + base == Approx(energy.evaluate(x)).epsilon(1e-12));
 }
+
+TEST_CASE("MPE results round-trip and malformed ones are refused", "[uai]") {
+  const Labeling labeling{2, 0, 1, 2};
+  std::stringstream file;
+  write_uai_mpe(labeling, file);
+  CHECK(file.str() == "MPE\n4 2 0 1 2\n");
+  CHECK(read_uai_mpe(file, "a.mpe", 4, 3) == labeling);
+  std::istringstream two_solutions("MPE\n4 0 0 0 0\n-BEGIN-\n4 1 1 2 0\n");
+  CHECK(read_uai_mpe(two_solutions, "b.mpe", 4, 3) == Labeling{1, 1, 2, 0});
+  std::istringstream no_header("4 1 1 1 1");
+  CHECK(read_uai_mpe(no_header, "c.mpe", 4, 3) == Labeling{1, 1, 1, 1});
+  const auto refused = [](const std::string& text) {
+    std::istringstream in(text);
+    return read_uai_mpe(in, "bad.mpe", 4, 3);
+  };
+  CHECK_THROWS_WITH(
+      refused("MPE\n3 0 0 0\n"),
+      Catch::Contains("bad.mpe") && Catch::Contains("expected the number of variables 4, got '3'"));
+  CHECK_THROWS_WITH(refused("MPE\n4 0 0 3 0\n"),
+                    Catch::Contains("the label of variable 2 3 is out of range [0, 2]"));
+  CHECK_THROWS_WITH(refused("MPE\n4 0 0 0\n"), Catch::Contains("unexpected end of file"));
+  CHECK_THROWS_WITH(refused("MPE\n4 0 0 0 0 5\n"), Catch::Contains("trailing data"));
+  CHECK_THROWS_WITH(refused("MPE\n4 0 x 0 0\n"), Catch::Contains("got 'x'"));
+}

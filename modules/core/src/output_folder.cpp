@@ -35,6 +35,7 @@ bool matches(const std::string& pattern, const std::string& name) {
 OutputFolder::OutputFolder(const std::filesystem::path& folder, std::vector<std::string> owned)
     : folder_(folder), owned_(std::move(owned)) {
   std::error_code error;
+  created_ = !std::filesystem::exists(folder_, error);
   std::filesystem::create_directories(folder_, error);
   if (error || !std::filesystem::is_directory(folder_)) {
     throw std::runtime_error("cannot create the output folder '" + folder_.string() +
@@ -65,6 +66,8 @@ OutputFolder::~OutputFolder() {
   std::filesystem::remove_all(staging_, ignored);
   if (!committed_) {
     for (const auto& [partial, target] : elsewhere_) std::filesystem::remove(partial, ignored);
+    // A folder this run created and did not fill goes again (remove() leaves a non-empty one).
+    if (created_) std::filesystem::remove(folder_, ignored);
   }
 }
 

@@ -214,4 +214,37 @@ void write_uai_file(const PairwiseEnergy& energy, const std::string& path) {
   if (!out) throw std::runtime_error("writing '" + path + "' failed");
 }
 
+void write_uai_mpe(std::span<const Label> labeling, std::ostream& out) {
+  out << "MPE\n" << labeling.size();
+  for (const Label label : labeling) out << ' ' << label;
+  out << '\n';
+}
+
+Labeling read_uai_mpe(std::istream& stream, std::string_view source, std::size_t num_variables,
+                      int num_labels) {
+  const std::string text((std::istreambuf_iterator<char>(stream)),
+                         std::istreambuf_iterator<char>());
+  // The last solution counts: whatever follows the last -BEGIN- line.
+  std::string_view solution = text;
+  if (const std::size_t begin = solution.rfind("-BEGIN-"); begin != std::string_view::npos)
+    solution.remove_prefix(begin + 7);
+  std::istringstream in{std::string(solution)};
+  TokenReader reader(in, source);
+  std::string first = reader.word("MPE or the number of variables");
+  if (first == "MPE") first = reader.word("the number of variables");
+  const std::optional<long long> count = parse_integer(first);
+  if (!count || *count < 0 || static_cast<unsigned long long>(*count) != num_variables) {
+    reader.fail("expected the number of variables " + std::to_string(num_variables) + ", got '" +
+                first + "'");
+  }
+  Labeling labeling(num_variables);
+  for (std::size_t v = 0; v < num_variables; ++v) {
+    labeling[v] = static_cast<Label>(
+        reader.integer("the label of variable " + std::to_string(v), 0, num_labels - 1));
+  }
+  if (std::string extra; in >> extra)
+    reader.fail("unexpected '" + extra + "' after the last label (trailing data)");
+  return labeling;
+}
+
 }  // namespace c2f

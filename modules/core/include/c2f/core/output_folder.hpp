@@ -16,7 +16,8 @@ namespace c2f {
 /// name, and removes the files of earlier runs that this run owns but did not write (names
 /// matching `owned`, where a trailing '*' matches any rest: "partition-level*.png"). Files
 /// that are not owned are never touched. Without commit() (an exception, a crash) the output
-/// folder keeps what it held before; the destructor removes the staging folder.
+/// folder keeps what it held before; the destructor removes the staging folder, and the output
+/// folder too when this run created it and it is empty.
 class OutputFolder {
  public:
   /// Creates the output folder if needed and a staging folder inside it (removing staging
@@ -50,6 +51,7 @@ class OutputFolder {
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>>
       elsewhere_;  // partial, target
   bool committed_ = false;
+  bool created_ = false;  ///< the folder did not exist before this run
 };
 
 /// Flushes and closes a written file stream; throws std::runtime_error naming `what` when any

@@ -25,6 +25,10 @@ class RunRecord {
   /// Where the run's other outputs are written before commit().
   [[nodiscard]] const std::filesystem::path& staging() const noexcept { return output_.staging(); }
 
+  /// Where to write an output the user named (OutputFolder::stage): in the staging folder when
+  /// it lies in the output folder, beside its target until commit() otherwise.
+  std::filesystem::path stage(const std::filesystem::path& target) { return output_.stage(target); }
+
   /// The run's observer: a trace row per step (with an error column when `error` is given),
   /// progress on stderr unless quiet, `extra` observers, and a stop once `interrupts` caught a
   /// signal. Call once, before the run.

@@ -4,10 +4,13 @@
 // non-negative potentials, the last scope variable changing fastest), as read by toulbar2 and
 // other MAP solvers. Costs and potentials are related by cost = -ln(potential).
 
+#include <cstddef>
 #include <iosfwd>
+#include <span>
 #include <string>
 #include <string_view>
 
+#include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -32,5 +35,16 @@ PairwiseEnergy read_uai_file(const std::string& path);
 void write_uai(const PairwiseEnergy& energy, std::ostream& out);
 /// write_uai to a file; throws std::runtime_error naming the path on failure.
 void write_uai_file(const PairwiseEnergy& energy, const std::string& path);
+
+/// Writes a labeling in the UAI competitions' MPE result format: the line "MPE", then one line
+/// with the number of variables followed by each variable's label.
+void write_uai_mpe(std::span<const Label> labeling, std::ostream& out);
+
+/// Reads an MPE result (as write_uai_mpe writes it; the "MPE" line is optional, and with
+/// "-BEGIN-" blocks the last solution counts) for a model of num_variables variables and
+/// num_labels labels. Throws std::invalid_argument naming `source` for a
+/// malformed file, another variable count, a label out of range or trailing data.
+Labeling read_uai_mpe(std::istream& in, std::string_view source, std::size_t num_variables,
+                      int num_labels);
 
 }  // namespace c2f

@@ -1,0 +1,115 @@
+// c2f-solve: any pairwise model in the UAI MARKOV format, minimised flat or coarse to fine with
+// the partitions that need no image. The options become library calls in named steps: read the
+// model, choose its schedule, solve, write the labeling, trace and summary.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "c2f/c2f.hpp"
+#include "solve_options.hpp"
+
+using namespace c2f;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct TimedModel {
+  PairwiseEnergy energy;
+  double seconds;
+};
+
+TimedModel read_model(const examples::SolveCommand& command) {
+  const auto start = Clock::now();
+  PairwiseEnergy energy = read_uai_file(command.model);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (!command.quiet) {
+    std::fprintf(stderr, "c2f-solve: %s: %zu variables, %d labels, %zu pairwise factors (%.2f s)\n",
+                 command.model.c_str(), energy.num_variables(), energy.num_labels(),
+                 energy.edges().size(), seconds);
+  }
+  return {std::move(energy), seconds};
+}
+
+void write_labeling(const std::filesystem::path& folder, const Labeling& labeling) {
+  std::ofstream out(folder / "labeling.mpe");
+  write_uai_mpe(labeling, out);
+  close_checked(out, "labeling.mpe");
+}
+
+void write_summary(const std::filesystem::path& folder, const examples::SolveCommand& command,
+                   const TimedModel& model, const Schedule& schedule,
+                   const ScheduleProvider& levels, const Summary& summary,
+                   const InterruptWatch& interrupts) {
+  std::ofstream report(folder / "summary.txt");
+  report << "model " << command.model << ": " << model.energy.num_variables() << " variables, "
+         << model.energy.num_labels() << " labels, " << model.energy.edges().size()
+         << " pairwise factors\n"
+         << "schedule " << schedule.to_string() << ", solver " << to_string(command.solver.kind)
+         << "\n"
+         << "reading the model: " << model.seconds << " s (not on the run clock)\n";
+  for (const LevelReport& level : levels.reports()) {
+    report << "partition " << level.level << ": " << level.num_groups << " groups in "
+           << level.seconds << " s\n";
+  }
+  report << summary.report() << "energy = sum of -ln(potential) over the factors; log10 of the "
+         << "unnormalised probability: " << -summary.energy / std::log(10.0) << "\n"
+         << "observer (trace, progress): " << summary.observer_seconds << " s off the run clock\n";
+  if (interrupts.interrupted()) {
+    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
+           << " steps: the labeling written is the best found so far\n";
+  }
+  close_checked(report, "summary.txt");
+}
+
+void report_end(const examples::SolveCommand& command, const Summary& summary,
+                const InterruptWatch& interrupts) {
+  if (interrupts.interrupted()) {
+    std::fprintf(stderr, "c2f-solve: interrupted by %s: wrote the best labeling found so far\n",
+                 interrupts.signal_name().c_str());
+  }
+  if (command.quiet) return;
+  std::fprintf(stderr, "c2f-solve: final energy %.6f after %ld steps in %.2f s (%s); wrote %s\n",
+               summary.energy, summary.total_steps, summary.seconds,
+               std::string(to_string(summary.reason)).c_str(), command.out_dir.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+    const InterruptWatch interrupts;
+    const auto parsed = examples::parse_solve_command(argc, argv);
+    if (!parsed) return 0;
+    const examples::SolveCommand& command = *parsed;
+
+    const TimedModel model = read_model(command);
+    const Schedule schedule =
+        examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
+    // Outputs are staged and moved into place together at the end.
+    RunRecord record(command.out_dir, {"labeling.mpe", "trace.csv", "summary.txt"}, command.trace,
+                     "c2f-solve", command.quiet);
+    const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
+    ScheduleProvider levels(schedule, shape);
+    const Summary summary =
+        coarse_to_fine(model.energy, levels, command.solver,
+                       examples::run_options(command, model.energy.num_labels()),
+                       record.observer(TraceWriter::ErrorFunction{}, interrupts));
+
+    write_labeling(record.staging(), summary.labeling);
+    write_summary(record.staging(), command, model, schedule, levels, summary, interrupts);
+    record.commit();
+    report_end(command, summary, interrupts);
+    return interrupts.exit_code();
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "c2f-solve: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "c2f-solve: error: " << error.what() << "\n";
+    return 1;
+  }
+}

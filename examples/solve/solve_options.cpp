@@ -1,0 +1,146 @@
+#include "solve_options.hpp"
+
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <variant>
+
+#include "c2f/core/number_text.hpp"
+#include "tool_options.hpp"
+
+namespace c2f::examples {
+
+namespace {
+
+/// c2f-solve's presets: the paper's colour-passing levels, which need no image.
+std::span<const SchedulePreset> solve_presets() {
+  static const std::array<SchedulePreset, 1> presets{
+      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
+  return presets;
+}
+
+/// "WxH" with both sides in [1, 2^20].
+GridShape parse_grid(const std::string& text) {
+  const std::size_t x = text.find('x');
+  const auto side = [&](std::string_view part) { return parse_integer(part); };
+  const auto width =
+      x == std::string::npos ? std::nullopt : side(std::string_view(text).substr(0, x));
+  const auto height =
+      x == std::string::npos ? std::nullopt : side(std::string_view(text).substr(x + 1));
+  if (!width || !height || *width < 1 || *height < 1 || *width > (1 << 20) || *height > (1 << 20))
+    throw std::invalid_argument("--grid: expected WIDTHxHEIGHT with sides in [1, 1048576], got '" +
+                                text + "'");
+  return {static_cast<std::size_t>(*width), static_cast<std::size_t>(*height)};
+}
+
+}  // namespace
+
+std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
+  SolveCommand command;
+  std::string solver = "expansion", label_order = "sequential", maxflow = "dynamic", grid;
+  double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+  ToolOptions options(
+      "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
+      "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
+      "Usage: c2f-solve MODEL.uai -o OUTDIR [options]\n\n"
+      "All variables must have one cardinality, factors one or two variables and potentials\n"
+      "> 0 (cost = -ln potential). Writes labeling.mpe (the UAI MPE result format), trace.csv\n"
+      "and summary.txt. Progress goes to stderr.\n\nOptions");
+  options.path("out,o", &command.out_dir, "output directory (created)")
+      .text("solver", &solver,
+            "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), "
+            "lbp or icm")
+      .text("schedule", &command.schedule_text,
+            "flat, paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
+            "such as \"cp:2,1 cp:2,2 flat\"; with --grid also local, threshold, blocks and /cc "
+            "levels (see docs/solve.md)")
+      .text("grid", &grid,
+            "WIDTHxHEIGHT: the model's variables are a row-major pixel grid (enables grid levels)")
+      .text("maxflow", &maxflow,
+            "max-flow backend of expansion and swap: dynamic, boost or "
+            "kolmogorov (where built)")
+      .real("graph-memory", &graph_memory_gib, {0.0, 65536.0},
+            "GiB the dynamic backend may keep in per-label move graphs")
+      .text("label-order", &label_order, "sequential, random or frequency")
+      .real("time-limit", &command.time_limit, kTimeLimitRange,
+            "seconds on the run clock (0: none)")
+      .integer("max-steps", &command.max_steps, {0, kMaxSteps},
+               "solver steps in the whole run (0: none)")
+      .integer("plateau", &command.plateau, {1, kMaxSteps},
+               "refine after this many steps without decrease")
+      .real("plateau-tolerance", &command.plateau_tolerance, {0.0, 1.0, false, true},
+            "on coarse levels, a decrease counts only when larger than this fraction of the "
+            "energy")
+      .integer("final-plateau", &command.final_plateau, {0, kMaxSteps},
+               "stop after this many steps without decrease on the original problem (0: one "
+               "sweep of the solver)")
+      .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
+      .flag("quiet,q", &command.quiet, "no progress on stderr");
+  const auto models = options.parse(argc, argv, {"MODEL.uai", 1});
+  if (!models) return std::nullopt;
+  if (models->empty()) throw std::invalid_argument("give MODEL.uai (see --help)");
+  command.model = models->front();
+  require_file(command.model, "MODEL");
+  if (command.out_dir.empty())
+    throw std::invalid_argument("-o/--out: an output directory is required");
+  if (!grid.empty()) command.grid = parse_grid(grid);
+  command.solver.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver); });
+  command.solver.order =
+      with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
+  if (const std::string problem = command.solver.validate(); !problem.empty())
+    throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
+  command.solver.maxflow =
+      with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
+  if (!maxflow_available(command.solver.maxflow)) {
+    throw std::invalid_argument("--maxflow " + maxflow +
+                                ": not in this build (configure with "
+                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
+  }
+  command.solver.graph_memory_limit =
+      static_cast<std::size_t>(graph_memory_gib * static_cast<double>(std::size_t{1} << 30));
+  // The grammar now; the label count and the grid once the model is read.
+  with_flag("--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
+  if (command.trace.empty())
+    command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
+  return command;
+}
+
+Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels) {
+  const Schedule schedule = with_flag(
+      "--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
+  if (const std::string problem = schedule.validate(num_labels); !problem.empty())
+    throw std::invalid_argument(option_message("--schedule", problem) + " (the model has " +
+                                std::to_string(num_labels) + " labels)");
+  if (command.grid) {
+    if (command.grid->size() != num_variables) {
+      throw std::invalid_argument("--grid: " + std::to_string(command.grid->width) + "x" +
+                                  std::to_string(command.grid->height) + " is " +
+                                  std::to_string(command.grid->size()) + " pixels, the model has " +
+                                  std::to_string(num_variables) + " variables");
+    }
+    return schedule;
+  }
+  for (const LevelSpec& level : schedule.levels) {
+    if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected) {
+      throw std::invalid_argument("--schedule: level " + level.to_string() +
+                                  " needs a pixel grid; give --grid WIDTHxHEIGHT or use cp and "
+                                  "auto levels");
+    }
+  }
+  return schedule;
+}
+
+Options run_options(const SolveCommand& command, int num_labels) {
+  Options options;
+  options.plateau_steps = {command.plateau};
+  options.plateau_tolerance = command.plateau_tolerance;
+  options.plateau_steps_at_original =
+      command.final_plateau > 0
+          ? command.final_plateau
+          : static_cast<int>(steps_per_sweep(command.solver.kind, num_labels));
+  options.time_limit_seconds = command.time_limit;
+  options.max_total_steps = command.max_steps;
+  return options;
+}
+
+}  // namespace c2f::examples

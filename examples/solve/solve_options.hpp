@@ -1,0 +1,42 @@
+#pragma once
+// Command line of c2f-solve: parsing and validation (every flag checked before any work).
+
+#include <optional>
+#include <string>
+
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/grid.hpp"
+#include "c2f/driver/options.hpp"
+#include "c2f/lift/schedule.hpp"
+
+namespace c2f::examples {
+
+struct SolveCommand {
+  std::string model;                   ///< the UAI MARKOV file
+  std::string out_dir;                 ///< labeling.mpe, trace.csv, summary.txt
+  std::string schedule_text = "flat";  ///< checked against the model once it is read
+  std::optional<GridShape> grid;       ///< --grid WxH: the variables are a row-major grid
+  SolverChoice solver;
+  double time_limit = 0.0;
+  long max_steps = 0;
+  int plateau = 4;
+  double plateau_tolerance = 0.0;
+  int final_plateau = 0;  ///< 0: one sweep of the solver
+  std::string trace;
+  bool quiet = false;
+};
+
+/// Parses argv. Returns std::nullopt after printing --help. Throws std::invalid_argument with a
+/// message naming the flag for anything invalid (the model file must exist).
+std::optional<SolveCommand> parse_solve_command(int argc, char** argv);
+
+/// The schedule for a model of num_variables variables and num_labels labels: parsed with
+/// c2f-solve's presets, N_L checked against the labels, and levels that need a pixel grid
+/// (local, threshold, blocks, slic, /cc) refused unless --grid gave one of the model's size.
+/// Throws std::invalid_argument starting "--schedule: " or "--grid: ".
+Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels);
+
+/// The driver options the command asks for (as c2f-stereo's: plateau rules, limits).
+Options run_options(const SolveCommand& command, int num_labels);
+
+}  // namespace c2f::examples

@@ -1,0 +1,187 @@
+// c2f-solve: any pairwise UAI model, flat or coarse to fine. The labeling it writes has the
+// energy it reports, is no better than the exact optimum (brute force on tiny models; Debian's
+// toulbar2 on small random and stereo models, when it is installed), and bad input is an error
+// naming it. toulbar2 must also read every model c2f writes.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "c2f/core/uai.hpp"
+#include "support/random_models.hpp"
+#include "support/run_tool.hpp"
+#include "support/synthetic_stereo.hpp"
+
+namespace fs = std::filesystem;
+using c2f::Labeling;
+using c2f::PairwiseEnergy;
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_model(const PairwiseEnergy& energy, const fs::path& path) {
+  std::ofstream out(path);
+  c2f::write_uai(energy, out);
+}
+
+PairwiseEnergy read_model(const fs::path& path) {
+  return c2f::read_uai_file(path.string());
+}
+
+/// Runs c2f-solve on `model` into `out`; returns the written labeling after checking that the
+/// run succeeded and that the summary's final energy is the labeling's energy.
+Labeling solve(const fs::path& model, const fs::path& out, const std::string& flags) {
+  const auto r = c2f::test::run_tool(C2F_SOLVE_BINARY,
+                                     model.string() + " -o " + out.string() + " -q " + flags);
+  INFO(flags << "\n" << r.output);
+  REQUIRE(r.exit_code == 0);
+  const PairwiseEnergy energy = read_model(model);
+  std::ifstream mpe(out / "labeling.mpe");
+  Labeling labeling =
+      c2f::read_uai_mpe(mpe, "labeling.mpe", energy.num_variables(), energy.num_labels());
+  std::smatch reported;
+  const std::string summary = read_text(out / "summary.txt");
+  REQUIRE(std::regex_search(summary, reported, std::regex("final energy ([-0-9.e+]+)")));
+  CHECK(std::stod(reported[1]) == Approx(energy.evaluate(labeling)).epsilon(1e-9).margin(1e-6));
+  return labeling;
+}
+
+}  // namespace
+
+TEST_CASE("c2f-solve is never better than brute force and reports its labeling's energy",
+          "[solve][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-brute";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  c2f::test::Rng rng(17);
+  for (int trial = 0; trial < 6; ++trial) {
+    const int labels = 3 + trial % 2;
+    const PairwiseEnergy original = c2f::test::random_energy(rng, 7, labels, 12);
+    const fs::path model = dir / ("model" + std::to_string(trial) + ".uai");
+    write_model(original, model);
+    const PairwiseEnergy energy = read_model(model);
+    const double optimum = c2f::test::brute_force_minimum(energy).energy;
+    for (const char* flags : {"--schedule flat", "--schedule paper",
+                              "--solver icm --schedule auto:0.3,0.6", "--solver lbp"}) {
+      const Labeling labeling = solve(model, dir / "out", flags);
+      INFO("trial " << trial << " " << flags);
+      CHECK(energy.evaluate(labeling) >= optimum - 1e-9);
+    }
+  }
+}
+
+TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malformed]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-bad";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  c2f::test::Rng rng(5);
+  write_model(c2f::test::random_grid_energy(rng, 4, 3, 2), dir / "binary.uai");
+  write_model(c2f::test::random_grid_energy(rng, 4, 3, 4), dir / "grid.uai");
+  std::ofstream(dir / "zero.uai") << "MARKOV\n1\n2\n1\n1 0\n2\n0 1\n";
+  std::ofstream(dir / "text.uai") << "hello\n";
+  const std::string out = " -o " + (dir / "out").string();
+  const std::string grid = (dir / "grid.uai").string();
+  for (const auto& [arguments, expected] : std::vector<std::pair<std::string, std::string>>{
+           {(dir / "missing.uai").string() + out, "MODEL: file '"},
+           {grid, "-o/--out: an output directory is required"},
+           {out, "give MODEL.uai"},
+           {grid + " " + grid + out, "unexpected argument"},
+           {(dir / "text.uai").string() + out, "text.uai: token 1: network type 'hello'"},
+           {(dir / "zero.uai").string() + out, "zero.uai: token 8: factor 0: potential 0"},
+           {(dir / "text.uai").string() + out + " --solver swap", "network type 'hello'"},
+           {grid + out + " --solver swap", "is not a semi-metric"},
+           {grid + out + " --schedule local:1,1", "--schedule: level local:1,1 needs a pixel grid"},
+           {grid + out + " --schedule cp:1,1/cc", "level cp:1,1/cc needs a pixel grid"},
+           {grid + out + " --schedule local:1,1 --grid 3x3",
+            "--grid: 3x3 is 9 pixels, the model has 12 variables"},
+           {grid + out + " --grid 4by3", "--grid: expected WIDTHxHEIGHT"},
+           {(dir / "binary.uai").string() + out + " --schedule paper",
+            "--schedule: level cp:3,1 has N_L 3 above the 2 labels"},
+           {grid + out + " --schedule slic:4", "needs a pixel grid"},
+           {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
+           {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
+       }) {
+    const auto r = c2f::test::run_tool(C2F_SOLVE_BINARY, arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains("c2f-solve: error: ") && Catch::Contains(expected));
+  }
+  CHECK_FALSE(fs::exists(dir / "out"));
+  // Grid levels work once the grid is given.
+  const Labeling labeling = solve(grid, dir / "out", "--schedule \"local:1,1/cc flat\" --grid 4x3");
+  CHECK(labeling.size() == 12);
+}
+
+#ifdef C2F_TOULBAR2
+namespace {
+
+/// toulbar2's optimum of `model` (it must read the file and write a complete solution).
+Labeling toulbar2_optimum(const fs::path& model, std::size_t num_variables) {
+  const fs::path solution = model.string() + ".tb2.sol";
+  const auto r = c2f::test::run_tool(C2F_TOULBAR2, model.string() + " -w=" + solution.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("Optimum:"));
+  std::ifstream in(solution);
+  Labeling labeling;
+  for (int label; in >> label;) labeling.push_back(label);
+  REQUIRE(labeling.size() == num_variables);
+  return labeling;
+}
+
+}  // namespace
+
+TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2 reads our files",
+          "[solve][cli][toulbar2]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-toulbar2";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // toulbar2 rounds costs to 7 digits (-precision 7): its optimum is exact up to that rounding.
+  const auto tolerance = [](double value) { return 1e-5 * std::max(1.0, std::abs(value)); };
+  c2f::test::Rng rng(23);
+  for (int trial = 0; trial < 4; ++trial) {
+    const fs::path model = dir / ("random" + std::to_string(trial) + ".uai");
+    write_model(c2f::test::random_grid_energy(rng, 5, 4, 3 + trial % 2), model);
+    const PairwiseEnergy energy = read_model(model);
+    const double exact = energy.evaluate(toulbar2_optimum(model, energy.num_variables()));
+    for (const char* flags : {"--schedule flat", "--schedule paper"}) {
+      const double ours = energy.evaluate(solve(model, dir / "out", flags));
+      INFO(model << " " << flags << ": ours " << ours << ", toulbar2 " << exact);
+      CHECK(ours >= exact - tolerance(exact));
+    }
+  }
+  // A small stereo model exported by c2f-stereo.
+  const auto pair = c2f::test::synthetic_pair(24, 16, 1, 4, 7);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  const fs::path stereo_model = dir / "stereo" / "model.uai";
+  const auto exported = c2f::test::run_tool(
+      C2F_STEREO_BINARY, (dir / "left.png").string() + " " + (dir / "right.png").string() +
+                             " --labels 6 --schedule flat -q -o " + (dir / "stereo").string() +
+                             " --export-uai " + stereo_model.string());
+  INFO(exported.output);
+  REQUIRE(exported.exit_code == 0);
+  const PairwiseEnergy stereo = read_model(stereo_model);
+  CHECK(stereo.num_variables() == 24 * 16);
+  const double exact = stereo.evaluate(toulbar2_optimum(stereo_model, stereo.num_variables()));
+  for (const char* flags : {"--schedule flat", "--schedule paper",
+                            "--grid 24x16 --schedule "
+                            "\"local:1,1/cc flat\""}) {
+    const double ours = stereo.evaluate(solve(stereo_model, dir / "out", flags));
+    INFO(flags << ": ours " << ours << ", toulbar2 " << exact);
+    CHECK(ours >= exact - tolerance(exact));
+    CHECK(ours <= exact * 1.05 + 1.0);  // expansion on TSGO stays close to the optimum
+  }
+}
+#endif
