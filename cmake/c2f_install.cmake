@@ -7,6 +7,7 @@
 #   vision      c2f::vision, c2f::stereo, c2f::segmentation                (OpenCV, Eigen)
 #   coop        c2f::coop, the cooperative-cut solvers                     (Ceres)
 #   all         c2f::c2f, everything but kolmogorov
+#   module      c2f::module, `import c2f;`, when the toolchain builds modules (CMake >= 3.28)
 # Each component has its own export file; c2fConfig.cmake loads the requested ones (all when
 # none are named) after finding their dependencies. A build-tree export() lets consumers use
 # the build directory directly as well. The command-line tools install separately
@@ -14,7 +15,7 @@
 include(CMakePackageConfigHelpers)
 
 set(c2f_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/c2f)
-set(c2f_components core graphcut kolmogorov vision coop all)
+set(c2f_components core graphcut kolmogorov vision coop all module)
 set(c2f_built_components)
 foreach(component IN LISTS c2f_components)
   get_property(targets GLOBAL PROPERTY C2F_COMPONENT_TARGETS_${component})
@@ -22,15 +23,24 @@ foreach(component IN LISTS c2f_components)
     continue()
   endif()
   list(APPEND c2f_built_components ${component})
+  # The module's interface unit installs with it; consumers build its BMI themselves.
+  set(module_files)
+  set(module_exports)
+  if(component STREQUAL "module")
+    set(module_files FILE_SET CXX_MODULES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/c2f/module)
+    set(module_exports CXX_MODULES_DIRECTORY cxx-modules)
+  endif()
   install(TARGETS ${targets}
     EXPORT c2f-${component}-targets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-  install(EXPORT c2f-${component}-targets NAMESPACE c2f:: DESTINATION ${c2f_config_dir})
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+    ${module_files})
+  install(EXPORT c2f-${component}-targets NAMESPACE c2f:: DESTINATION ${c2f_config_dir}
+    ${module_exports})
   export(EXPORT c2f-${component}-targets NAMESPACE c2f::
-    FILE ${PROJECT_BINARY_DIR}/c2f-${component}-targets.cmake)
+    FILE ${PROJECT_BINARY_DIR}/c2f-${component}-targets.cmake ${module_exports})
 endforeach()
 
 get_property(c2f_include_dirs GLOBAL PROPERTY C2F_MODULE_INCLUDE_DIRS)

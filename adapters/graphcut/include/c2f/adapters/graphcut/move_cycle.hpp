@@ -20,11 +20,22 @@ inline std::vector<std::size_t> label_counts(std::span<const Label> labeling, in
   return count;
 }
 
-/// Stably sorts moves by decreasing use(move): VisitOrder::frequency's order.
+/// Stably sorts moves by decreasing use(move): VisitOrder::frequency's order. (A sort of
+/// (use, position) keys rather than std::stable_sort, whose buffer is deprecated in the
+/// libstdc++ 12 that clang 19 compiles against.)
 template <class Move, class Use>
 void sort_most_used_first(std::vector<Move>& moves, Use use) {
-  std::stable_sort(moves.begin(), moves.end(),
-                   [&](const Move& a, const Move& b) { return use(a) > use(b); });
+  using Key = std::pair<decltype(use(moves.front())), std::size_t>;
+  std::vector<Key> keys;
+  keys.reserve(moves.size());
+  for (std::size_t i = 0; i < moves.size(); ++i) keys.emplace_back(use(moves[i]), i);
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  std::vector<Move> sorted;
+  sorted.reserve(moves.size());
+  for (const Key& key : keys) sorted.push_back(moves[key.second]);
+  moves = std::move(sorted);
 }
 
 /// Cycles endlessly through a list of moves (labels or label pairs) in the chosen order. The

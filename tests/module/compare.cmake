@@ -1,0 +1,10 @@
+# Runs the module and the header build of consumer.cpp and fails unless they print the same.
+execute_process(COMMAND ${MODULE} OUTPUT_VARIABLE module_out RESULT_VARIABLE module_result)
+execute_process(COMMAND ${HEADERS} OUTPUT_VARIABLE headers_out RESULT_VARIABLE headers_result)
+message("import c2f;          ${module_out}#include c2f/c2f.hpp ${headers_out}")
+if(NOT module_result EQUAL 0 OR NOT headers_result EQUAL 0)
+  message(FATAL_ERROR "a consumer failed: module ${module_result}, headers ${headers_result}")
+endif()
+if(NOT module_out STREQUAL headers_out)
+  message(FATAL_ERROR "the module and the header build give different results")
+endif()
