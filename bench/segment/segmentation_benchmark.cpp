@@ -117,6 +117,7 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
     CoopSolver solver(solver_options);
     run.summary = coarse_to_fine(problem.coop, levels, solver, options, observer);
   }
+  close_checked(file, trace_path);
   run.error = error(run.summary.labeling);
   run.coop_energy = problem.coop.evaluate(run.summary.labeling);
   return run;
@@ -156,7 +157,15 @@ int run_image(const std::string& set, const std::string& name, const std::string
   }
   const SegmentationScene scene = load_segmentation_scene(files);
   const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
-  std::filesystem::create_directories(out);
+  // The image's traces land together after its last row (each run stages its own files and
+  // owns only the traces of the configurations it runs).
+  std::vector<std::string> traces;
+  for (const Config& config : configs()) {
+    if (selected.empty() ||
+        std::find(selected.begin(), selected.end(), config.name) != selected.end())
+      traces.push_back(name + "-" + config.name + ".csv");
+  }
+  OutputFolder output(out, traces);
   if (header) {
     for (std::size_t i = 0; i < std::size(kColumns); ++i)
       std::printf("%s%s", i ? "\t" : "", kColumns[i]);
@@ -172,8 +181,8 @@ int run_image(const std::string& set, const std::string& name, const std::string
                                   ", which is not in the list");
     }
     std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
-    Run run =
-        solve(config, scene, problem, time_limit, out + "/" + name + "-" + config.name + ".csv");
+    Run run = solve(config, scene, problem, time_limit,
+                    (output.staging() / (name + "-" + config.name + ".csv")).string());
     double reach = std::nan(""), ratio = std::nan(""), flat_error = std::nan(""),
            c2f_error = std::nan("");
     if (!config.flat.empty()) {
@@ -203,6 +212,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
     std::fflush(stdout);
     runs.emplace(config.name, std::move(run));
   }
+  output.commit();
   return 0;
 }
 

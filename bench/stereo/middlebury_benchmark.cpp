@@ -108,6 +108,7 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::str
     run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
     return ObserverDecision::continue_run;
   });
+  close_checked(file, trace_path);
   run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
                               scene.nonoccluded);
   return run;
@@ -120,14 +121,16 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   TsgoOptions tsgo;
   tsgo.labels = settings.labels;
   const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
-  std::filesystem::create_directories(out);
+  // The scene's traces land together when its row is printed (parallel runs share the folder;
+  // each stages its own files).
+  OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
   auto solve_with = [&](const std::string& schedule, const std::string& trace) {
     return with_maxflow_backend(settings.maxflow, [&]<class Backend>(Backend) {
-      return solve<Backend>(energy, scene, schedule, settings, trace);
+      return solve<Backend>(energy, scene, schedule, settings, (output.staging() / trace).string());
     });
   };
-  const Run flat = solve_with("flat", out + "/" + name + "-flat.csv");
-  const Run c2f = solve_with(settings.schedule, out + "/" + name + "-c2f.csv");
+  const Run flat = solve_with("flat", name + "-flat.csv");
+  const Run c2f = solve_with(settings.schedule, name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -185,6 +188,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
       1.0 - sum_c2f / sum_flat, sgbm_rates.nonoccluded[1], sgbm_rates.all[1], sgbm_seconds,
       std::string(to_string(flat.summary.reason)).c_str(),
       std::string(to_string(c2f.summary.reason)).c_str());
+  output.commit();
   return 0;
 }
 
