@@ -125,6 +125,9 @@ int main(int argc, char** argv) {
         {"labels.png", "overlay.png", "trace.csv", "summary.txt", "partition-level*.png"},
         command.trace, "c2f-segment", command.quiet);
     const TimedProblem built = build_problem(scene, command);
+    // The Potts model as UAI, staged with the other outputs (it lands only if the run does).
+    if (!command.export_uai.empty())
+      write_uai_file(built.problem.potts, record.stage(command.export_uai).string());
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     LevelPartitionRecorder partitions(command.save_partitions);

@@ -76,6 +76,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
                "stop after this many steps without decrease on the original problem (0: one "
                "sweep: L*K+1 flips for greedy, 1 step for mm, 2 for ceres, L moves for potts)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
+      .path("export-uai", &command.export_uai,
+            "also write the Potts energy of the same data (the alpha-expansion baseline; a "
+            "cooperative cut is not pairwise) as a UAI MARKOV model, for c2f-solve or toulbar2")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
   const auto parsed = options.parse(argc, argv, {"IMAGE SEEDS", 2});

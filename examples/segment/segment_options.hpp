@@ -35,6 +35,7 @@ struct SegmentCommand {
   int plateau = 0;
   int final_plateau = 0;  ///< 0: one sweep of the solver
   std::string trace;
+  std::string export_uai;  ///< --export-uai: the Potts energy of the same data, as UAI
   bool save_partitions = false;
   bool quiet = false;
 };

@@ -76,14 +76,6 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
   close_checked(report, "summary.txt");
 }
 
-/// The energy as a UAI model, staged with the other outputs (it lands only if the run does).
-void export_model(RunRecord& record, const std::string& path, const PairwiseEnergy& energy) {
-  std::ofstream out(record.stage(path));
-  if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
-  write_uai(energy, out);
-  close_checked(out, path);
-}
-
 void announce(const examples::StereoCommand& command, const StereoScene& scene) {
   if (command.quiet) return;
   std::fprintf(stderr, "c2f-stereo: %s %zux%zu, %d labels, schedule %s, solver %s\n",
@@ -125,7 +117,9 @@ int main(int argc, char** argv) {
                      command.trace, "c2f-stereo", command.quiet);
     announce(command, scene);
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
-    if (!command.export_uai.empty()) export_model(record, command.export_uai, problem.energy);
+    // The model as UAI, staged with the other outputs (it lands only if the run does).
+    if (!command.export_uai.empty())
+      write_uai_file(problem.energy, record.stage(command.export_uai).string());
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.guide));
     LevelPartitionRecorder partitions(command.save_partitions);

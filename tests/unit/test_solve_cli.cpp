@@ -17,6 +17,7 @@
 #include "c2f/core/uai.hpp"
 #include "support/random_models.hpp"
 #include "support/run_tool.hpp"
+#include "support/synthetic_segmentation.hpp"
 #include "support/synthetic_stereo.hpp"
 
 namespace fs = std::filesystem;
@@ -121,6 +122,29 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
   // Grid levels work once the grid is given.
   const Labeling labeling = solve(grid, dir / "out", "--schedule \"local:1,1/cc flat\" --grid 4x3");
   CHECK(labeling.size() == 12);
+}
+
+TEST_CASE("c2f-segment and c2f-stereo export models c2f-solve reads", "[solve][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-export";
+  fs::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 24, 18, 2);
+  const auto r = c2f::test::run_tool(
+      C2F_SEGMENT_BINARY,
+      files.image + " " + files.seeds + " --method potts --schedule flat -q -o " +
+          (dir / "segment").string() + " --export-uai " + (dir / "segment" / "potts.uai").string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const PairwiseEnergy potts = read_model(dir / "segment" / "potts.uai");
+  CHECK(potts.num_variables() == 24 * 18);
+  CHECK(potts.num_labels() == 3);
+  CHECK(solve(dir / "segment" / "potts.uai", dir / "solved", "--schedule paper").size() == 24 * 18);
+  // A run that fails leaves no exported model behind (it is staged like every output).
+  const auto failed = c2f::test::run_tool(
+      C2F_SEGMENT_BINARY, files.image + " " + files.seeds + " --schedule cp:9,1 -q -o " +
+                              (dir / "failed").string() + " --export-uai " +
+                              (dir / "failed" / "potts.uai").string());
+  CHECK(failed.exit_code == 2);
+  CHECK_FALSE(fs::exists(dir / "failed" / "potts.uai"));
 }
 
 #ifdef C2F_TOULBAR2
