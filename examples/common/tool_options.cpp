@@ -1,5 +1,6 @@
 #include "tool_options.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -113,9 +114,13 @@ ToolOptions& ToolOptions::add_integer(const char* name, std::function<void(long 
 ToolOptions& ToolOptions::real(const char* name, double* target, RealRange range,
                                const char* help) {
   const std::string option = option_text(name);
+  // The default goes through the notifier as text: all 17 digits, so it parses back to the
+  // same double; --help shows the short form.
+  char exact[32];
+  std::snprintf(exact, sizeof exact, "%.17g", *target);
   visible_.add_options()(name,
                          po::value<std::string>()
-                             ->default_value(format_real(*target))
+                             ->default_value(exact, format_real(*target))
                              ->notifier([option, target, range](const std::string& text) {
                                *target = parse_real_option(option, text, range);
                              }),

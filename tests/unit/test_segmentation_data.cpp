@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 
@@ -210,3 +211,29 @@ TEST_CASE("the shared coopCuts images load with their conventions", "[segmentati
   CHECK(bee.num_labels() == 2);
 }
 #endif
+
+TEST_CASE("scenes from decoded images: views into larger images read like whole images",
+          "[segmentation][scene]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-scene-views";
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 30, 20, 4);
+  const c2f::vision::SegmentationFiles names{files.image, files.seeds, files.gt,
+                                             c2f::vision::SeedConvention::colours};
+  const c2f::vision::SegmentationScene whole = c2f::vision::load_segmentation_scene(names);
+  // The same pixels as views (not continuous in memory) into images with a 5-pixel margin.
+  const auto framed = [](const std::string& path) {
+    cv::Mat big;
+    cv::copyMakeBorder(cv::imread(path), big, 5, 5, 5, 5, cv::BORDER_CONSTANT,
+                       cv::Scalar(255, 255, 255));
+    return big(cv::Rect(5, 5, 30, 20));
+  };
+  c2f::vision::SegmentationImages views{framed(files.image), framed(files.seeds), framed(files.gt)};
+  REQUIRE_FALSE(views.seeds.isContinuous());
+  const c2f::vision::SegmentationScene scene =
+      c2f::vision::segmentation_scene_from_images(views, names);
+  CHECK(scene.seeds == whole.seeds);
+  CHECK(scene.truth == whole.truth);
+  CHECK(scene.palette == whole.palette);
+  views.gt = cv::Mat(20, 30, CV_16UC3, cv::Scalar::all(0));
+  CHECK_THROWS_WITH(c2f::vision::segmentation_scene_from_images(views, names),
+                    Catch::Contains("GT '") && Catch::Contains("is not a non-empty 8-bit colour"));
+}

@@ -140,8 +140,13 @@ SegmentationScene segmentation_scene_from_images(const SegmentationImages& image
     require_type(images.gt, files.convention == SeedConvention::binary ? CV_8UC1 : CV_8UC3, "GT",
                  files.gt);
   }
-  scene.image = images.image;
-  const cv::Mat& seeds = images.seeds;
+  // Pixels are read by row-major index below: views into larger images are copied first.
+  const auto continuous = [](const cv::Mat& image) {
+    return image.isContinuous() ? image : image.clone();
+  };
+  scene.image = continuous(images.image);
+  const cv::Mat seeds = continuous(images.seeds);
+  const cv::Mat gt_image = has_gt ? continuous(images.gt) : cv::Mat();
   require_size(scene.image, seeds, "SEEDS", files.seeds);
   const std::size_t n = scene.image.total();
   scene.seeds.assign(n, kNoLabel);
@@ -162,14 +167,14 @@ SegmentationScene segmentation_scene_from_images(const SegmentationImages& image
       }
       scene.seeds = labels_by_colour(seeds, scene.palette, "SEEDS", files.seeds, &kWhite);
       if (has_gt) {
-        require_size(scene.image, images.gt, "GT", files.gt);
-        scene.truth = labels_by_colour(images.gt, scene.palette, "GT", files.gt);
+        require_size(scene.image, gt_image, "GT", files.gt);
+        scene.truth = labels_by_colour(gt_image, scene.palette, "GT", files.gt);
       }
       break;
     }
     case SeedConvention::labels_from_gt: {
       if (!has_gt) throw std::invalid_argument("labels from the GT need a GT labeling (--gt)");
-      const cv::Mat& gt = images.gt;
+      const cv::Mat& gt = gt_image;
       require_size(scene.image, gt, "GT", files.gt);
       scene.palette = distinct_colours(gt, nullptr);
       if (scene.palette.size() < 2) {
@@ -191,7 +196,7 @@ SegmentationScene segmentation_scene_from_images(const SegmentationImages& image
         if (r < 128 && b > 127) scene.seeds[i] = 0;
       }
       if (has_gt) {
-        const cv::Mat& gt = images.gt;
+        const cv::Mat& gt = gt_image;
         require_size(scene.image, gt, "GT", files.gt);
         scene.truth.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
