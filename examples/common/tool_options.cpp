@@ -30,6 +30,18 @@ std::string option_message(const std::string& option, const std::string& message
   return option + ": " + (message.rfind(name, 0) == 0 ? message.substr(name.size()) : message);
 }
 
+int run_tool(const char* tool, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const std::invalid_argument& error) {
+    std::cerr << tool << ": error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << tool << ": error: " << error.what() << "\n";
+    return 1;
+  }
+}
+
 void require_file(const std::string& path, const char* argument) {
   if (!std::filesystem::is_regular_file(path))
     throw std::invalid_argument(std::string(argument) + ": file '" + path + "' does not exist");

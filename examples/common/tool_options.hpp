@@ -102,6 +102,11 @@ auto with_flag(const char* option, Parse parse) {
   }
 }
 
+/// Runs a tool's main body and returns its exit code: the body's own (0, or 128 + a signal's
+/// number after an interrupt), 2 for std::invalid_argument (bad input or arguments) and 1 for
+/// any other exception, each printed as "TOOL: error: MESSAGE" on stderr.
+int run_tool(const char* tool, const std::function<int()>& body);
+
 /// Strict parsing of one option value, for tools and formats that read values themselves.
 /// Throws std::invalid_argument "<option>: expected ..., got '<text>'".
 long long parse_integer_option(const std::string& option, const std::string& text,

@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <optional>
 
 #include "c2f/c2f.hpp"
 #include "segment_options.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
@@ -75,42 +75,29 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
          << command.parameters.alpha << ", " << command.classes << " edge classes\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n";
-  for (const LevelReport& level : levels.reports()) {
-    report << "partition " << level.level << ": " << level.num_groups << " groups in "
-           << level.seconds << " s\n";
-  }
-  report << summary.report() << "cooperative-cut energy of the result: "
+  write_run_report(report, levels.reports(), summary, interrupts);
+  report << "cooperative-cut energy of the result: "
          << built.problem.coop.evaluate(summary.labeling)
          << "\nPotts energy of the result: " << built.problem.potts.evaluate(summary.labeling)
-         << "\nobserver (trace error, progress): " << summary.observer_seconds
-         << " s off the run clock\n";
+         << "\n";
   if (error) report << "pixel error: " << 100.0 * *error << "%\n";
-  if (interrupts.interrupted()) {
-    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
-           << " steps: the labeling written is the best found so far\n";
-  }
   close_checked(report, "summary.txt");
 }
 
+/// The run's last lines on stderr: the pixel error (with GT), then the common end.
 void report_end(const examples::SegmentCommand& command, const Summary& summary,
                 const std::optional<double>& error, const InterruptWatch& interrupts) {
-  if (interrupts.interrupted()) {
-    std::fprintf(stderr, "%s: interrupted by %s: wrote the best labeling found so far\n",
-                 "c2f-segment", interrupts.signal_name().c_str());
-  }
-  if (command.quiet) return;
-  if (error) std::fprintf(stderr, "c2f-segment: pixel error %.2f%%\n", 100.0 * *error);
-  std::fprintf(stderr, "c2f-segment: final energy %.4f after %ld steps in %.2f s (%s); wrote %s\n",
-               summary.energy, summary.total_steps, summary.seconds,
-               std::string(to_string(summary.reason)).c_str(), command.out_dir.c_str());
+  if (error && !command.quiet)
+    std::fprintf(stderr, "c2f-segment: pixel error %.2f%%\n", 100.0 * *error);
+  print_run_end("c2f-segment", summary, interrupts, command.out_dir, command.quiet);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-    const InterruptWatch interrupts;
+  // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+  const InterruptWatch interrupts;
+  return examples::run_tool("c2f-segment", [&] {
     const auto parsed = examples::parse_segment_command(argc, argv);
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
@@ -145,12 +132,5 @@ int main(int argc, char** argv) {
     record.commit();
     report_end(command, summary, error, interrupts);
     return interrupts.exit_code();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "c2f-segment: error: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "c2f-segment: error: " << error.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

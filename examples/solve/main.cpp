@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 #include "c2f/c2f.hpp"
 #include "solve_options.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using Clock = std::chrono::steady_clock;
@@ -34,12 +34,6 @@ TimedModel read_model(const examples::SolveCommand& command) {
   return {std::move(energy), seconds};
 }
 
-void write_labeling(const std::filesystem::path& folder, const Labeling& labeling) {
-  std::ofstream out(folder / "labeling.mpe");
-  write_uai_mpe(labeling, out);
-  close_checked(out, "labeling.mpe");
-}
-
 void write_summary(const std::filesystem::path& folder, const examples::SolveCommand& command,
                    const TimedModel& model, const Schedule& schedule,
                    const ScheduleProvider& levels, const Summary& summary,
@@ -51,38 +45,18 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
          << "schedule " << schedule.to_string() << ", solver " << to_string(command.solver.kind)
          << "\n"
          << "reading the model: " << model.seconds << " s (not on the run clock)\n";
-  for (const LevelReport& level : levels.reports()) {
-    report << "partition " << level.level << ": " << level.num_groups << " groups in "
-           << level.seconds << " s\n";
-  }
-  report << summary.report() << "energy = sum of -ln(potential) over the factors; log10 of the "
-         << "unnormalised probability: " << -summary.energy / std::log(10.0) << "\n"
-         << "observer (trace, progress): " << summary.observer_seconds << " s off the run clock\n";
-  if (interrupts.interrupted()) {
-    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
-           << " steps: the labeling written is the best found so far\n";
-  }
+  write_run_report(report, levels.reports(), summary, interrupts);
+  report << "energy = sum of -ln(potential) over the factors; log10 of the unnormalised "
+         << "probability: " << -summary.energy / std::log(10.0) << "\n";
   close_checked(report, "summary.txt");
-}
-
-void report_end(const examples::SolveCommand& command, const Summary& summary,
-                const InterruptWatch& interrupts) {
-  if (interrupts.interrupted()) {
-    std::fprintf(stderr, "c2f-solve: interrupted by %s: wrote the best labeling found so far\n",
-                 interrupts.signal_name().c_str());
-  }
-  if (command.quiet) return;
-  std::fprintf(stderr, "c2f-solve: final energy %.6f after %ld steps in %.2f s (%s); wrote %s\n",
-               summary.energy, summary.total_steps, summary.seconds,
-               std::string(to_string(summary.reason)).c_str(), command.out_dir.c_str());
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-    const InterruptWatch interrupts;
+  // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+  const InterruptWatch interrupts;
+  return examples::run_tool("c2f-solve", [&] {
     const auto parsed = examples::parse_solve_command(argc, argv);
     if (!parsed) return 0;
     const examples::SolveCommand& command = *parsed;
@@ -100,16 +74,10 @@ int main(int argc, char** argv) {
                        examples::run_options(command, model.energy.num_labels()),
                        record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
-    write_labeling(record.staging(), summary.labeling);
+    write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());
     write_summary(record.staging(), command, model, schedule, levels, summary, interrupts);
     record.commit();
-    report_end(command, summary, interrupts);
+    print_run_end("c2f-solve", summary, interrupts, command.out_dir, command.quiet);
     return interrupts.exit_code();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "c2f-solve: error: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "c2f-solve: error: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <optional>
 #include <vector>
 
 #include "c2f/c2f.hpp"
 #include "stereo_options.hpp"
+#include "tool_options.hpp"
 
 using namespace c2f;
 using namespace c2f::vision;
@@ -58,20 +58,11 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << to_string(command.solver.maxflow) << "\n"
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
-  for (const LevelReport& level : levels.reports()) {
-    report << "partition " << level.level << ": " << level.num_groups << " groups in "
-           << level.seconds << " s\n";
-  }
-  report << summary.report() << "observer (trace error, progress): " << summary.observer_seconds
-         << " s off the run clock\n";
+  write_run_report(report, levels.reports(), summary, interrupts);
   if (rates) {
     report << rates->brief() << "\nnon-occluded pixels from: " << scene.nonoccluded_source
            << "\nreference variant (bad>1 over all pixels): " << 100 * rates->reference_variant
            << "%\n";
-  }
-  if (interrupts.interrupted()) {
-    report << "interrupted by " << interrupts.signal_name() << " after " << summary.total_steps
-           << " steps: the labeling written is the best found so far\n";
   }
   close_checked(report, "summary.txt");
 }
@@ -84,34 +75,27 @@ void announce(const examples::StereoCommand& command, const StereoScene& scene) 
                std::string(to_string(command.solver.kind)).c_str());
 }
 
+/// The run's last lines on stderr: the bad-pixel rates (with GT), then the common end.
 void report_end(const examples::StereoCommand& command, const Summary& summary,
                 const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
-  if (interrupts.interrupted()) {
-    std::fprintf(stderr, "%s: interrupted by %s: wrote the best labeling found so far\n",
-                 "c2f-stereo", interrupts.signal_name().c_str());
-  }
-  if (command.quiet) return;
-  if (rates) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
-  std::fprintf(stderr, "c2f-stereo: final energy %.4f after %ld steps in %.2f s (%s); wrote %s\n",
-               summary.energy, summary.total_steps, summary.seconds,
-               std::string(to_string(summary.reason)).c_str(), command.out_dir.c_str());
+  if (rates && !command.quiet) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
+  print_run_end("c2f-stereo", summary, interrupts, command.out_dir, command.quiet);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-    const InterruptWatch interrupts;
+  // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
+  const InterruptWatch interrupts;
+  return examples::run_tool("c2f-stereo", [&] {
     const auto parsed = examples::parse_stereo_command(argc, argv);
     if (!parsed) return 0;
     const examples::StereoCommand& command = *parsed;
-    const std::filesystem::path out(command.out_dir);
 
     const StereoScene scene = load_input(command);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    RunRecord record(out,
+    RunRecord record(command.out_dir,
                      {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
                       "trace.csv", "summary.txt", "partition-level*.png"},
                      command.trace, "c2f-stereo", command.quiet);
@@ -135,12 +119,5 @@ int main(int argc, char** argv) {
     record.commit();
     report_end(command, summary, rates, interrupts);
     return interrupts.exit_code();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "c2f-stereo: error: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "c2f-stereo: error: " << error.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

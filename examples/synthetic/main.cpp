@@ -47,20 +47,40 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
             << pixel_error(summary.labeling, problem.truth) << ", " << summary.seconds << " s\n";
 }
 
-void write_pictures(const std::filesystem::path& folder, const SyntheticProblem& problem,
-                    const vision::SyntheticSpec& spec, const Summary& flat, const Summary& c2f) {
+/// With -o, the run's files are staged and land together at the end (an earlier run's files
+/// stay as they were when this run fails); without it, nothing is written.
+std::optional<OutputFolder> open_outputs(const std::string& out_dir) {
+  if (out_dir.empty()) return std::nullopt;
+  return std::optional<OutputFolder>(std::in_place, out_dir,
+                                     std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv",
+                                                              "truth.pgm", "flat.pgm", "c2f.pgm"});
+}
+
+/// Where a file of the run goes: staged with -o, nowhere (empty) without.
+std::filesystem::path staged(const std::optional<OutputFolder>& output, const char* name) {
+  return output ? output->staging() / name : std::filesystem::path();
+}
+
+/// The truth and both results as pictures, then every file into place.
+void write_outputs(std::optional<OutputFolder>& output, const std::string& out_dir,
+                   const SyntheticProblem& problem, const vision::SyntheticSpec& spec,
+                   const Summary& flat, const Summary& c2f) {
+  if (!output) return;
+  const std::filesystem::path folder = output->staging();
   write_label_pgm((folder / "truth.pgm").string(), problem.truth, spec.shape, spec.num_labels);
   write_label_pgm((folder / "flat.pgm").string(), flat.labeling, spec.shape, spec.num_labels);
   write_label_pgm((folder / "c2f.pgm").string(), c2f.labeling, spec.shape, spec.num_labels);
+  output->commit();
+  std::cerr << "c2f-synthetic: wrote traces and images to " << out_dir << "\n";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    // Ctrl-C or SIGTERM: the running solve stops at its next step, and what was found is
-    // still reported and written.
-    const InterruptWatch interrupts;
+  // Ctrl-C or SIGTERM: the running solve stops at its next step, and what was found is still
+  // reported and written.
+  const InterruptWatch interrupts;
+  return examples::run_tool("c2f-synthetic", [&] {
     const auto parsed = examples::parse_synthetic_command(argc, argv);
     if (!parsed) return 0;
     const examples::SyntheticCommand& command = *parsed;
@@ -69,43 +89,25 @@ int main(int argc, char** argv) {
       return BlockHierarchy(command.spec.shape, command.block_sizes);
     });
     const SyntheticProblem problem = make_synthetic_problem(command.spec);
-    // With -o, the files are staged and land together at the end (an earlier run's files stay
-    // as they were when this run fails).
-    std::optional<OutputFolder> output;
-    if (!command.out_dir.empty())
-      output.emplace(command.out_dir, std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv",
-                                                               "truth.pgm", "flat.pgm", "c2f.pgm"});
-    const auto staged = [&](const char* name) {
-      return output ? output->staging() / name : std::filesystem::path();
-    };
+    std::optional<OutputFolder> output = open_outputs(command.out_dir);
     std::cerr << "c2f-synthetic: " << command.spec.shape.width << "x" << command.spec.shape.height
               << " pixels, " << command.spec.num_labels << " labels, "
               << problem.energy.edges().size() << " edges\n";
 
     PartitionList flat_levels;
-    const Summary flat =
-        solve("flat", problem, flat_levels, command.options, interrupts, staged("trace-flat.csv"));
+    const Summary flat = solve("flat", problem, flat_levels, command.options, interrupts,
+                               staged(output, "trace-flat.csv"));
     // After an interrupt the coarse-to-fine run stops at its first step.
-    const Summary c2f =
-        solve("c2f", problem, hierarchy, command.options, interrupts, staged("trace-c2f.csv"));
+    const Summary c2f = solve("c2f", problem, hierarchy, command.options, interrupts,
+                              staged(output, "trace-c2f.csv"));
 
     report("flat:", flat, problem);
     report("c2f: ", c2f, problem);
-    if (output) {
-      write_pictures(output->staging(), problem, command.spec, flat, c2f);
-      output->commit();
-      std::cerr << "c2f-synthetic: wrote traces and images to " << command.out_dir << "\n";
-    }
+    write_outputs(output, command.out_dir, problem, command.spec, flat, c2f);
     if (interrupts.interrupted()) {
       std::cerr << "c2f-synthetic: interrupted by " << interrupts.signal_name()
                 << ": reported the best labelings found so far\n";
     }
     return interrupts.exit_code();
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "c2f-synthetic: error: " << error.what() << "\n";
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "c2f-synthetic: error: " << error.what() << "\n";
-    return 1;
-  }
+  });
 }

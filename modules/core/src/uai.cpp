@@ -1,6 +1,7 @@
 #include "c2f/core/uai.hpp"
 
 #include "c2f/core/number_text.hpp"
+#include "c2f/core/output_folder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -210,14 +211,20 @@ void write_uai_file(const PairwiseEnergy& energy, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
   write_uai(energy, out);
-  out.flush();
-  if (!out) throw std::runtime_error("writing '" + path + "' failed");
+  close_checked(out, path);
 }
 
 void write_uai_mpe(std::span<const Label> labeling, std::ostream& out) {
   out << "MPE\n" << labeling.size();
   for (const Label label : labeling) out << ' ' << label;
   out << '\n';
+}
+
+void write_uai_mpe_file(std::span<const Label> labeling, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
+  write_uai_mpe(labeling, out);
+  close_checked(out, path);
 }
 
 Labeling read_uai_mpe(std::istream& stream, std::string_view source, std::size_t num_variables,

@@ -113,6 +113,7 @@ using c2f::Partition;
 using c2f::partition_traits;
 using c2f::PartitionList;
 using c2f::PartitionProvider;
+using c2f::print_run_end;
 using c2f::ProgressPrinter;
 using c2f::read_uai;
 using c2f::read_uai_file;
@@ -162,9 +163,11 @@ using c2f::VariableIndex;
 using c2f::Verdict;
 using c2f::visit_order_from_string;
 using c2f::VisitOrder;
+using c2f::write_run_report;
 using c2f::write_uai;
 using c2f::write_uai_file;
 using c2f::write_uai_mpe;
+using c2f::write_uai_mpe_file;
 }  // namespace c2f
 
 export namespace c2f::vision {

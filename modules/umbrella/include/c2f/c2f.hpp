@@ -36,6 +36,7 @@
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/driver/rules.hpp"
+#include "c2f/driver/run_report.hpp"
 #include "c2f/driver/summary.hpp"
 #include "c2f/lift/auto_levels.hpp"
 #include "c2f/lift/block_hierarchy.hpp"

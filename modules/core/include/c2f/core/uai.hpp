@@ -39,6 +39,8 @@ void write_uai_file(const PairwiseEnergy& energy, const std::string& path);
 /// Writes a labeling in the UAI competitions' MPE result format: the line "MPE", then one line
 /// with the number of variables followed by each variable's label.
 void write_uai_mpe(std::span<const Label> labeling, std::ostream& out);
+/// write_uai_mpe to a file; throws std::runtime_error naming the path on failure.
+void write_uai_mpe_file(std::span<const Label> labeling, const std::string& path);
 
 /// Reads an MPE result (as write_uai_mpe writes it; the "MPE" line is optional, and with
 /// "-BEGIN-" blocks the last solution counts) for a model of num_variables variables and
