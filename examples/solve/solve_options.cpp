@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "c2f/core/number_text.hpp"
+#include "solver_flags.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {
@@ -37,8 +38,8 @@ GridShape parse_grid(const std::string& text) {
 
 std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   SolveCommand command;
-  std::string solver = "expansion", label_order = "sequential", maxflow = "dynamic", grid;
-  double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+  std::string grid;
+  SolverFlags solver;
   ToolOptions options(
       "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
       "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
@@ -47,21 +48,12 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
       "> 0 (cost = -ln potential). Writes labeling.mpe (the UAI MPE result format), trace.csv\n"
       "and summary.txt. Progress goes to stderr.\n\nOptions");
   options.path("out,o", &command.out_dir, "output directory (created)")
-      .text("solver", &solver,
-            "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), "
-            "lbp or icm")
       .text("schedule", &command.schedule_text,
             "flat, paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
             "such as \"cp:2,1 cp:2,2 flat\"; with --grid also local, threshold, blocks and /cc "
             "levels (see docs/solve.md)")
       .text("grid", &grid,
             "WIDTHxHEIGHT: the model's variables are a row-major pixel grid (enables grid levels)")
-      .text("maxflow", &maxflow,
-            "max-flow backend of expansion and swap: dynamic, boost or "
-            "kolmogorov (where built)")
-      .real("graph-memory", &graph_memory_gib, {0.0, 65536.0},
-            "GiB the dynamic backend may keep in per-label move graphs")
-      .text("label-order", &label_order, "sequential, random or frequency")
       .real("time-limit", &command.time_limit, kTimeLimitRange,
             "seconds on the run clock (0: none)")
       .integer("max-steps", &command.max_steps, {0, kMaxSteps},
@@ -76,6 +68,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
                "sweep of the solver)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
+  solver.declare(options);
   const auto models = options.parse(argc, argv, {"MODEL.uai", 1});
   if (!models) return std::nullopt;
   if (models->empty()) throw std::invalid_argument("give MODEL.uai (see --help)");
@@ -84,20 +77,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   if (!grid.empty()) command.grid = parse_grid(grid);
-  command.solver.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver); });
-  command.solver.order =
-      with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
-  if (const std::string problem = command.solver.validate(); !problem.empty())
-    throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
-  command.solver.maxflow =
-      with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
-  if (!maxflow_available(command.solver.maxflow)) {
-    throw std::invalid_argument("--maxflow " + maxflow +
-                                ": not in this build (configure with "
-                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
-  }
-  command.solver.graph_memory_limit =
-      static_cast<std::size_t>(graph_memory_gib * static_cast<double>(std::size_t{1} << 30));
+  command.solver = solver.choice();
   // The grammar now; the label count and the grid once the model is read.
   with_flag("--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
   if (command.trace.empty())

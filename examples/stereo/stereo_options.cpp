@@ -1,5 +1,6 @@
 #include "stereo_options.hpp"
 
+#include "solver_flags.hpp"
 #include "tool_options.hpp"
 
 #include <cmath>
@@ -13,9 +14,8 @@ namespace c2f::examples {
 
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
-  std::string schedule = "paper", solver = "expansion", smoothness = "tsgo_step",
-              label_order = "sequential", maxflow = "dynamic";
-  double graph_memory_gib = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+  std::string schedule = "paper", smoothness = "tsgo_step";
+  SolverFlags solver;
   ToolOptions options(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -37,18 +37,6 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
             "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")
       .flag("allow-non-refining", &command.allow_non_refining,
             "accept levels that do not refine each other (labels handed down by majority vote)")
-      .text("solver", &solver, "expansion, swap, lbp or icm")
-      .text("maxflow", &maxflow,
-            "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move "
-            "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
-            "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
-      .real("graph-memory", &graph_memory_gib, {0.0, 65536.0},
-            "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a "
-            "graph solved from zero flow; 0: no recycling)")
-      .text("label-order", &label_order,
-            "order of expansion / swap moves (icm: of the pixels): sequential (0, 1, ...), "
-            "random, or frequency (labels of most variables first, counted when each level "
-            "starts)")
       .text("smoothness", &smoothness, "tsgo_step or truncated_linear (the paper's wording)")
       .real("time-limit", &command.time_limit, kTimeLimitRange,
             "seconds on the run clock (0: none)")
@@ -78,6 +66,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                "shrink images by this integer factor (GT divided by it)")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
+  solver.declare(options);
   const auto images = options.parse(argc, argv, {"LEFT RIGHT", 2});
   if (!images) return std::nullopt;
   if (command.scene.empty()) {
@@ -97,20 +86,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
-  command.solver.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver); });
-  command.solver.order =
-      with_flag("--label-order", [&] { return visit_order_from_string(label_order); });
-  if (const std::string problem = command.solver.validate(); !problem.empty())
-    throw std::invalid_argument("--label-order with --solver " + solver + ": " + problem);
-  command.solver.maxflow =
-      with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
-  if (!maxflow_available(command.solver.maxflow)) {
-    throw std::invalid_argument("--maxflow " + maxflow +
-                                ": not in this build (configure with "
-                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
-  }
-  command.solver.graph_memory_limit =
-      static_cast<std::size_t>(graph_memory_gib * static_cast<double>(std::size_t{1} << 30));
+  command.solver = solver.choice();
   command.tsgo.smoothness =
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
   command.schedule =

@@ -1,0 +1,43 @@
+#include "solver_flags.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+
+namespace c2f::examples {
+
+void SolverFlags::declare(ToolOptions& options) {
+  options
+      .text("solver", &solver_,
+            "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), lbp "
+            "or icm")
+      .text("maxflow", &maxflow_,
+            "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move "
+            "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
+            "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
+      .real("graph-memory", &graph_memory_gib_, {0.0, 65536.0},
+            "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a "
+            "graph solved from zero flow; 0: no recycling)")
+      .text("label-order", &label_order_,
+            "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
+            "random, or frequency (labels of most variables first, counted when each level "
+            "starts)");
+}
+
+SolverChoice SolverFlags::choice() const {
+  SolverChoice choice;
+  choice.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
+  choice.order = with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
+  if (const std::string problem = choice.validate(); !problem.empty())
+    throw std::invalid_argument("--label-order with --solver " + solver_ + ": " + problem);
+  choice.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
+  if (!maxflow_available(choice.maxflow)) {
+    throw std::invalid_argument("--maxflow " + maxflow_ +
+                                ": not in this build (configure with "
+                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
+  }
+  choice.graph_memory_limit =
+      static_cast<std::size_t>(graph_memory_gib_ * static_cast<double>(std::size_t{1} << 30));
+  return choice;
+}
+
+}  // namespace c2f::examples
