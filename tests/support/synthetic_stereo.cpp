@@ -1,5 +1,6 @@
 #include "synthetic_stereo.hpp"
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace c2f::test {
@@ -49,6 +50,20 @@ SyntheticPair synthetic_pair(int width, int height, int background_disparity,
       if (xr < 0 || covered) pair.nonoccluded.at<uchar>(y, x) = 0;
     }
   }
+  return pair;
+}
+
+SyntheticPair write_synthetic_pair(const std::filesystem::path& dir, int width, int height,
+                                   int background_disparity, int foreground_disparity,
+                                   unsigned seed) {
+  SyntheticPair pair =
+      synthetic_pair(width, height, background_disparity, foreground_disparity, seed);
+  std::filesystem::create_directories(dir);
+  cv::imwrite((dir / "left.png").string(), pair.left);
+  cv::imwrite((dir / "right.png").string(), pair.right);
+  cv::Mat gt8;
+  pair.gt.convertTo(gt8, CV_8U, 4.0);
+  cv::imwrite((dir / "gt.png").string(), gt8);
   return pair;
 }
 

@@ -104,13 +104,7 @@ TEST_CASE("durations are masked and nothing else", "[cli][determinism]") {
 TEST_CASE("c2f-stereo writes the same bytes twice", "[cli][determinism][stereo]") {
   const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-stereo";
   fs::remove_all(dir);
-  fs::create_directories(dir);
-  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 11);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
-  cv::Mat gt8;
-  pair.gt.convertTo(gt8, CV_8U, 4.0);
-  cv::imwrite((dir / "gt.png").string(), gt8);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 11);
   const std::string inputs = (dir / "left.png").string() + " " + (dir / "right.png").string() +
                              " --gt " + (dir / "gt.png").string() + " --gt-divisor 4 --labels 10";
   check_two_runs_agree(C2F_STEREO_BINARY,

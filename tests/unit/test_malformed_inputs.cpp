@@ -65,10 +65,7 @@ struct Inputs {
 
   Inputs() {
     fs::remove_all(dir);
-    fs::create_directories(dir);
-    const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 3);
-    cv::imwrite((dir / "left.png").string(), pair.left);
-    cv::imwrite((dir / "right.png").string(), pair.right);
+    const auto pair = c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 3);
     cv::imwrite((dir / "small.png").string(), pair.left(cv::Rect(0, 0, 20, 20)));
     cv::imwrite((dir / "small-grey.png").string(), cv::Mat(20, 20, CV_8U, cv::Scalar(8)));
     cv::imwrite((dir / "deep.png").string(), cv::Mat(32, 48, CV_16UC3, cv::Scalar(9, 900, 9000)));

@@ -216,8 +216,9 @@ TEST_CASE("dynamic max-flow: tiny graphs, every re-solve equals the brute-force 
   }
 }
 
-TEST_CASE("dynamic max-flow: an unchanged re-solve does no work, and a copy resumes like the original",
-          "[maxflow][dynamic]") {
+TEST_CASE(
+    "dynamic max-flow: an unchanged re-solve does no work, and a copy resumes like the original",
+    "[maxflow][dynamic]") {
   Rng rng(8);
   auto problem = random_flow_problem(rng, 200, 800);
   DynamicMaxFlow dynamic;

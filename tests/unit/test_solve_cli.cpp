@@ -186,9 +186,7 @@ TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2
     }
   }
   // A small stereo model exported by c2f-stereo.
-  const auto pair = c2f::test::synthetic_pair(24, 16, 1, 4, 7);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
+  c2f::test::write_synthetic_pair(dir, 24, 16, 1, 4, 7);
   const fs::path stereo_model = dir / "stereo" / "model.uai";
   const auto exported = c2f::test::run_tool(
       C2F_STEREO_BINARY, (dir / "left.png").string() + " " + (dir / "right.png").string() +

@@ -26,13 +26,7 @@ c2f::test::ToolResult run(const std::string& arguments) {
 TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-run";
   std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 5);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
-  cv::Mat gt8;
-  pair.gt.convertTo(gt8, CV_8U, 4.0);
-  cv::imwrite((dir / "gt.png").string(), gt8);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 5);
   const c2f::test::ToolResult r =
       run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
           (dir / "out").string() + " --labels 10 --gt " + (dir / "gt.png").string() +
@@ -51,10 +45,7 @@ TEST_CASE("c2f-stereo gives the same disparities on every max-flow backend", "[s
   // principle be broken differently; on this small scene all backends agree exactly.
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-maxflow";
   std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 9);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 9);
   auto solve = [&](const std::string& backend, const std::string& extra) {
     const std::string out = (dir / (extra.empty() ? backend : backend + "-shared")).string();
     const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
@@ -74,11 +65,8 @@ TEST_CASE("c2f-stereo stopped by SIGINT writes the best labeling so far and exit
           "[stereo][cli][interrupt]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-interrupt";
   std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
   // Large enough that the run is still going when the signal arrives (seconds of moves).
-  const auto pair = c2f::test::synthetic_pair(480, 360, 8, 40, 11);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
+  c2f::test::write_synthetic_pair(dir, 480, 360, 8, 40, 11);
   const std::string out = (dir / "out").string();
   const auto r = c2f::test::run_tool_interrupted(C2F_STEREO_BINARY,
                                                  (dir / "left.png").string() + " " +
@@ -104,13 +92,7 @@ TEST_CASE("c2f-stereo replaces an earlier run's outputs only when it succeeds", 
   namespace fs = std::filesystem;
   const auto dir = fs::temp_directory_path() / "c2f-test-cli-rerun";
   fs::remove_all(dir);
-  fs::create_directories(dir);
-  const auto pair = c2f::test::synthetic_pair(48, 32, 2, 6, 5);
-  cv::imwrite((dir / "left.png").string(), pair.left);
-  cv::imwrite((dir / "right.png").string(), pair.right);
-  cv::Mat gt8;
-  pair.gt.convertTo(gt8, CV_8U, 4.0);
-  cv::imwrite((dir / "gt.png").string(), gt8);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 5);
   const std::string inputs = (dir / "left.png").string() + " " + (dir / "right.png").string();
   const fs::path out = dir / "out";
   auto read_all = [&] {

@@ -19,8 +19,7 @@ TEST_CASE("c2f-synthetic stopped by SIGINT writes what it found and exits 130",
   fs::remove_all(out);
   // Flat ICM on 600x600 pixels and 64 labels takes several seconds; the signal comes first.
   const auto r = c2f::test::run_tool_interrupted(
-      C2F_SYNTHETIC_BINARY, "--width 600 --height 600 --labels 64 -o " + out.string(), 1.5,
-      SIGINT);
+      C2F_SYNTHETIC_BINARY, "--width 600 --height 600 --labels 64 -o " + out.string(), 1.5, SIGINT);
   INFO(r.output);
   CHECK(r.exit_code == 130);
   CHECK_THAT(r.output, Catch::Contains("interrupted by SIGINT") &&
