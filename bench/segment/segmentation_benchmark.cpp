@@ -36,6 +36,7 @@
 
 #include "c2f/c2f.hpp"
 #include "support/anytime_trace.hpp"
+#include "support/bench_command.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -311,9 +312,8 @@ int main(int argc, char** argv) {
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SET NAME | summarize ROWS.tsv", 3});
     if (!arguments) return 0;
-    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
-    if (arguments->size() != 3 || (*arguments)[0] != "run")
-      throw std::invalid_argument("expected 'run SET NAME' or 'summarize ROWS.tsv' (see --help)");
+    const bench::BenchCommand command = bench::bench_command(*arguments, "SET NAME");
+    if (command.summarize) return summarize(command.rows);
     std::vector<std::string> selected;
     std::stringstream list(config_list);
     for (std::string name; std::getline(list, name, ',');) {
@@ -322,7 +322,7 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
       selected.push_back(name);
     }
-    return run_image((*arguments)[1], (*arguments)[2], data, out, time_limit, header, selected);
+    return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

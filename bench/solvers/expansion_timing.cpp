@@ -35,6 +35,7 @@
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/anytime_trace.hpp"
+#include "support/bench_command.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -200,10 +201,9 @@ int main(int argc, char** argv) {
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
-    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
-    if (arguments->size() != 2 || (*arguments)[0] != "run")
-      throw std::invalid_argument("expected 'run SCENE' or 'summarize ROWS.tsv' (see --help)");
-    return run_scene((*arguments)[1], data, downscale, labels,
+    const bench::BenchCommand command = bench::bench_command(*arguments, "SCENE");
+    if (command.summarize) return summarize(command.rows);
+    return run_scene(command.names[0], data, downscale, labels,
                      static_cast<std::size_t>(graph_memory_gib * (1 << 30)), with_kolmogorov,
                      header);
   } catch (const std::exception& error) {

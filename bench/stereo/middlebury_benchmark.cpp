@@ -44,6 +44,7 @@
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/anytime_trace.hpp"
+#include "support/bench_command.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -279,9 +280,8 @@ int main(int argc, char** argv) {
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
-    if (arguments->size() == 2 && (*arguments)[0] == "summarize") return summarize((*arguments)[1]);
-    if (arguments->size() != 2 || (*arguments)[0] != "run")
-      throw std::invalid_argument("expected 'run SCENE' or 'summarize ROWS.tsv' (see --help)");
+    const bench::BenchCommand command = bench::bench_command(*arguments, "SCENE");
+    if (command.summarize) return summarize(command.rows);
     settings.label_order = c2f::examples::with_flag(
         "--label-order", [&] { return visit_order_from_string(label_order); });
     settings.maxflow =
@@ -289,7 +289,7 @@ int main(int argc, char** argv) {
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",
                              [&] { return parse_stereo_schedule(settings.schedule); });
-    return run_scene((*arguments)[1], data, out, settings, header);
+    return run_scene(command.names[0], data, out, settings, header);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-stereo: error: " << error.what() << "\n";
     return 2;
