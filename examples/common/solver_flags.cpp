@@ -40,4 +40,30 @@ SolverChoice SolverFlags::choice() const {
   return choice;
 }
 
+void RunRuleFlags::declare(ToolOptions& options) {
+  options.real("time-limit", &time_limit, kTimeLimitRange, "seconds on the run clock (0: none)")
+      .integer("max-steps", &max_steps, {0, kMaxSteps}, "solver steps in the whole run (0: none)")
+      .integer("plateau", &plateau, {1, kMaxSteps}, "refine after this many steps without decrease")
+      .real("plateau-tolerance", &plateau_tolerance, {0.0, 1.0, false, true},
+            "on coarse levels, a decrease over the --plateau steps counts only when larger than "
+            "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
+            "down)")
+      .integer("final-plateau", &final_plateau, {0, kMaxSteps},
+               "stop after this many steps without decrease on the original problem (0: one "
+               "sweep: labels moves for expansion, label pairs for swap, 4 iterations for lbp, 1 "
+               "for icm)");
+}
+
+Options RunRuleFlags::options(const SolverChoice& choice, int num_labels) const {
+  Options options;
+  options.plateau_steps = {plateau};
+  options.plateau_tolerance = plateau_tolerance;
+  options.plateau_steps_at_original =
+      final_plateau > 0 ? final_plateau
+                        : static_cast<int>(steps_per_sweep(choice.kind, num_labels));
+  options.time_limit_seconds = time_limit;
+  options.max_total_steps = max_steps;
+  return options;
+}
+
 }  // namespace c2f::examples

@@ -1,10 +1,12 @@
 #pragma once
-// The options that choose a solver, shared by the tools that offer every solver (c2f-stereo,
-// c2f-solve): --solver, --maxflow, --graph-memory and --label-order.
+// The options that choose a solver and end its run, shared by the tools that offer every
+// solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --label-order, and
+// --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
 
 #include <string>
 
 #include "c2f/adapters/solver_choice.hpp"
+#include "c2f/driver/options.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {
@@ -22,6 +24,23 @@ class SolverFlags {
  private:
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic";
   double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+};
+
+/// The options that end levels and the run; the values are public (defaults as shown).
+struct RunRuleFlags {
+  double time_limit = 0.0;  ///< seconds on the run clock, 0: none
+  long max_steps = 0;       ///< steps in the whole run, 0: none
+  int plateau = 4;          ///< steps without decrease that end a coarse level
+  double plateau_tolerance =
+      0.0;                ///< coarse levels only: decreases below this fraction count as none
+  int final_plateau = 0;  ///< on the original problem; 0: one sweep of the solver
+
+  /// Declares the five options in `options` (this object receives their values).
+  void declare(ToolOptions& options);
+
+  /// The driver's options: these rules, with one sweep of `choice` on num_labels labels ending
+  /// the original problem when --final-plateau is 0.
+  [[nodiscard]] Options options(const SolverChoice& choice, int num_labels) const;
 };
 
 }  // namespace c2f::examples

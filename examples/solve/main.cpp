@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     ScheduleProvider levels(schedule, shape);
     const Summary summary =
         coarse_to_fine(model.energy, levels, command.solver,
-                       examples::run_options(command, model.energy.num_labels()),
+                       command.rules.options(command.solver, model.energy.num_labels()),
                        record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
     write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());

@@ -54,21 +54,10 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
             "levels (see docs/solve.md)")
       .text("grid", &grid,
             "WIDTHxHEIGHT: the model's variables are a row-major pixel grid (enables grid levels)")
-      .real("time-limit", &command.time_limit, kTimeLimitRange,
-            "seconds on the run clock (0: none)")
-      .integer("max-steps", &command.max_steps, {0, kMaxSteps},
-               "solver steps in the whole run (0: none)")
-      .integer("plateau", &command.plateau, {1, kMaxSteps},
-               "refine after this many steps without decrease")
-      .real("plateau-tolerance", &command.plateau_tolerance, {0.0, 1.0, false, true},
-            "on coarse levels, a decrease counts only when larger than this fraction of the "
-            "energy")
-      .integer("final-plateau", &command.final_plateau, {0, kMaxSteps},
-               "stop after this many steps without decrease on the original problem (0: one "
-               "sweep of the solver)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
   solver.declare(options);
+  command.rules.declare(options);
   const auto models = options.parse(argc, argv, {"MODEL.uai", 1});
   if (!models) return std::nullopt;
   if (models->empty()) throw std::invalid_argument("give MODEL.uai (see --help)");
@@ -108,19 +97,6 @@ Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, 
     }
   }
   return schedule;
-}
-
-Options run_options(const SolveCommand& command, int num_labels) {
-  Options options;
-  options.plateau_steps = {command.plateau};
-  options.plateau_tolerance = command.plateau_tolerance;
-  options.plateau_steps_at_original =
-      command.final_plateau > 0
-          ? command.final_plateau
-          : static_cast<int>(steps_per_sweep(command.solver.kind, num_labels));
-  options.time_limit_seconds = command.time_limit;
-  options.max_total_steps = command.max_steps;
-  return options;
 }
 
 }  // namespace c2f::examples

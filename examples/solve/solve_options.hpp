@@ -8,6 +8,7 @@
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/lift/schedule.hpp"
+#include "solver_flags.hpp"
 
 namespace c2f::examples {
 
@@ -17,11 +18,7 @@ struct SolveCommand {
   std::string schedule_text = "flat";  ///< checked against the model once it is read
   std::optional<GridShape> grid;       ///< --grid WxH: the variables are a row-major grid
   SolverChoice solver;
-  double time_limit = 0.0;
-  long max_steps = 0;
-  int plateau = 4;
-  double plateau_tolerance = 0.0;
-  int final_plateau = 0;  ///< 0: one sweep of the solver
+  RunRuleFlags rules;  ///< plateaus and limits
   std::string trace;
   bool quiet = false;
 };
@@ -35,8 +32,5 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv);
 /// (local, threshold, blocks, slic, /cc) refused unless --grid gave one of the model's size.
 /// Throws std::invalid_argument starting "--schedule: " or "--grid: ".
 Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels);
-
-/// The driver options the command asks for (as c2f-stereo's: plateau rules, limits).
-Options run_options(const SolveCommand& command, int num_labels);
 
 }  // namespace c2f::examples

@@ -38,20 +38,6 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .flag("allow-non-refining", &command.allow_non_refining,
             "accept levels that do not refine each other (labels handed down by majority vote)")
       .text("smoothness", &smoothness, "tsgo_step or truncated_linear (the paper's wording)")
-      .real("time-limit", &command.time_limit, kTimeLimitRange,
-            "seconds on the run clock (0: none)")
-      .integer("max-steps", &command.max_steps, {0, kMaxSteps},
-               "solver steps in the whole run (0: none)")
-      .integer("plateau", &command.plateau, {1, kMaxSteps},
-               "refine after this many steps without decrease")
-      .real("plateau-tolerance", &command.plateau_tolerance, {0.0, 1.0, false, true},
-            "on coarse levels, a decrease over the --plateau steps counts only when larger than "
-            "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
-            "down)")
-      .integer("final-plateau", &command.final_plateau, {0, kMaxSteps},
-               "stop after this many steps without decrease on the original problem (0: one "
-               "sweep: labels moves for expansion, label pairs for swap, 4 iterations for lbp, 1 "
-               "for icm)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
       .path("export-uai", &command.export_uai,
             "also write the TSGO energy it solves as a UAI MARKOV model (for c2f-solve, toulbar2; "
@@ -67,6 +53,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
   solver.declare(options);
+  command.rules.declare(options);
   const auto images = options.parse(argc, argv, {"LEFT RIGHT", 2});
   if (!images) return std::nullopt;
   if (command.scene.empty()) {
@@ -102,15 +89,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
 }
 
 Options run_options(const StereoCommand& command) {
-  Options options;
-  options.plateau_steps = {command.plateau};
-  options.plateau_tolerance = command.plateau_tolerance;
-  options.plateau_steps_at_original =
-      command.final_plateau > 0
-          ? command.final_plateau
-          : static_cast<int>(steps_per_sweep(command.solver.kind, command.tsgo.labels));
-  options.time_limit_seconds = command.time_limit;
-  options.max_total_steps = command.max_steps;
+  Options options = command.rules.options(command.solver, command.tsgo.labels);
   options.level_transfer =
       command.allow_non_refining ? LevelTransfer::majority : LevelTransfer::exact;
   return options;

@@ -9,6 +9,7 @@
 #include "c2f/lift/schedule.hpp"
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "solver_flags.hpp"
 
 namespace c2f::examples {
 
@@ -21,11 +22,7 @@ struct StereoCommand {
   Schedule schedule;
   bool allow_non_refining = false;
   SolverChoice solver;
-  double time_limit = 0.0;
-  long max_steps = 0;
-  int plateau = 4;
-  double plateau_tolerance = 0.0;  ///< coarse levels only
-  int final_plateau = 0;           ///< 0: one sweep of the solver
+  RunRuleFlags rules;  ///< plateaus and limits
   std::string trace;
   std::string export_uai;  ///< --export-uai: the model, written in the UAI format
   bool save_partitions = false;

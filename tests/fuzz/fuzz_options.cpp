@@ -53,7 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (tool == 0) {
       if (const auto command = c2f::examples::parse_stereo_command(argc, argv.data())) {
         require(command->tsgo.labels >= 2 && command->tsgo.labels <= 256, "stereo labels");
-        require(std::isfinite(command->time_limit) && command->time_limit >= 0, "time limit");
+        require(std::isfinite(command->rules.time_limit) && command->rules.time_limit >= 0,
+                "time limit");
         require(command->downscale >= 1, "downscale");
       }
     } else if (tool == 1) {
