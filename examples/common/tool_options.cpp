@@ -1,10 +1,12 @@
 #include "tool_options.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
+#include "c2f/core/input_file.hpp"
 #include "c2f/core/number_text.hpp"
 
 namespace po = boost::program_options;
@@ -21,6 +23,39 @@ std::string option_text(const char* name) {
 
 std::string with_range(const char* help, const std::string& range) {
   return std::string(help) + " (" + range + ")";
+}
+
+/// Stands in for '%' while Boost writes a message (an ASCII control character, never typed).
+constexpr char kPercentStandIn = '\x1a';
+
+/// The message of the error Boost.ProgramOptions raised for this command line. Boost 1.74 fills
+/// its message templates by replacing each placeholder (%option%, %value%, ...) until none is
+/// left, so an argument that itself contains a placeholder ("--%option%") never finishes: the
+/// message grows until memory runs out. The message is therefore taken from a second parse of
+/// the same command line with every '%' stood in for, and the '%' put back in the text.
+std::string command_line_error(int argc, const char* const* argv,
+                               const po::options_description& options,
+                               const po::positional_options_description& positional, int style) {
+  std::vector<std::string> escaped(argv, argv + argc);
+  for (std::string& argument : escaped)
+    std::replace(argument.begin(), argument.end(), '%', kPercentStandIn);
+  std::vector<const char*> escaped_argv;
+  for (const std::string& argument : escaped) escaped_argv.push_back(argument.c_str());
+  escaped_argv.push_back(nullptr);
+  try {
+    po::variables_map values;
+    po::store(po::command_line_parser(argc, escaped_argv.data())
+                  .options(options)
+                  .positional(positional)
+                  .style(style)
+                  .run(),
+              values);
+  } catch (const po::error& error) {
+    std::string message = error.what();
+    std::replace(message.begin(), message.end(), kPercentStandIn, '%');
+    return message;
+  }
+  return "the command line could not be read";  // unreachable: both parses see the same words
 }
 
 }  // namespace
@@ -43,8 +78,8 @@ int run_tool(const char* tool, const std::function<int()>& body) {
 }
 
 void require_file(const std::string& path, const char* argument) {
-  if (!std::filesystem::is_regular_file(path))
-    throw std::invalid_argument(std::string(argument) + ": file '" + path + "' does not exist");
+  if (const std::string why = why_not_a_file(path); !why.empty())
+    throw std::invalid_argument(std::string(argument) + ": file '" + path + "' " + why);
 }
 
 std::string describe(IntegerRange range) {
@@ -92,8 +127,8 @@ ToolOptions& ToolOptions::text(const char* name, std::string* target, const char
 ToolOptions& ToolOptions::file(const char* name, std::string* target, const char* help) {
   const std::string option = option_text(name);
   visible_.add_options()(name, po::value(target)->notifier([option](const std::string& path) {
-    if (!std::filesystem::is_regular_file(path))
-      throw std::invalid_argument(option + ": file '" + path + "' does not exist");
+    if (const std::string why = why_not_a_file(path); !why.empty())
+      throw std::invalid_argument(option + ": file '" + path + "' " + why);
   }),
                          help);
   return *this;
@@ -155,8 +190,8 @@ std::optional<std::vector<std::string>> ToolOptions::parse(int argc, const char*
     po::store(
         po::command_line_parser(argc, argv).options(all).positional(positional).style(style).run(),
         values);
-  } catch (const po::error& error) {
-    throw std::invalid_argument(error.what());
+  } catch (const po::error&) {
+    throw std::invalid_argument(command_line_error(argc, argv, all, positional, style));
   }
   if (values.count("help")) {
     std::cout << visible_ << "\n";

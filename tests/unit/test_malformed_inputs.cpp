@@ -131,6 +131,12 @@ std::vector<Case> stereo_cases() {
        "{left} {dir}/missing.png -o {out}/stereo",
        2,
        {"RIGHT: file '", "missing.png' does not exist"}},
+      {"stereo", "{dir} {right} -o {out}/stereo", 2, {"LEFT: file '", "' is a folder, not a file"}},
+      // A name longer than the system allows (found by fuzzing: an uncaught filesystem_error).
+      {"stereo",
+       "{left} {dir}/" + std::string(300, 'r') + ".png -o {out}/stereo",
+       2,
+       {"RIGHT: file '", "' cannot be examined (File name too long)"}},
       {"stereo", "{left} -o {out}/stereo", 2, {"give LEFT and RIGHT images, or --scene NAME"}},
       {"stereo", pair + "{left}", 2, {"unexpected argument '", "takes at most 2 (LEFT RIGHT)"}},
       {"stereo", "{left} {right}", 2, {"-o/--out: an output directory is required"}},
@@ -210,6 +216,9 @@ std::vector<Case> stereo_cases() {
       {"stereo", pair + "--smoothness wavy", 2, {"--smoothness: ", "'wavy'"}},
       {"stereo", pair + "--lab 8", 2, {"unrecognised option '--lab'"}},
       {"stereo", pair + "--bogus", 2, {"unrecognised option '--bogus'"}},
+      // Boost's message templates use %option% and friends; found by fuzzing (it never ended).
+      {"stereo", pair + "--%option%", 2, {"unrecognised option '--%option%'"}},
+      {"stereo", pair + "-%prefix%q", 2, {"unrecognised option '-%prefix%q'"}},
       {"stereo",
        scene + "scenes-good --gt {left}",
        2,
@@ -251,6 +260,10 @@ std::vector<Case> segment_cases() {
        "{image} {dir}/missing.png -o {out}/segment",
        2,
        {"SEEDS: file '", "missing.png' does not exist"}},
+      {"segment",
+       "{image} {seeds} -o {out}/segment --gt {dir}/" + std::string(300, 'g') + ".png",
+       2,
+       {"--gt: file '", "' cannot be examined (File name too long)"}},
       {"segment", "{image} -o {out}/segment", 2, {"give IMAGE and SEEDS (got 1 positional"}},
       {"segment", run + "{gt}", 2, {"unexpected argument '", "takes at most 2 (IMAGE SEEDS)"}},
       {"segment", "{image} {seeds}", 2, {"-o/--out: an output directory is required"}},
@@ -326,6 +339,7 @@ std::vector<Case> segment_cases() {
        {"gt-grey77.png': grey level 77 at pixel", "is none of 0 (background), 128"}},
       {"segment", run + "--max-steps x", 2, {"--max-steps: ", "got 'x'"}},
       {"segment", run + "--bogus 3", 2, {"unrecognised option '--bogus'"}},
+      {"segment", run + "--x%original_token%", 2, {"unrecognised option '--x%original_token%'"}},
   };
 }
 
@@ -343,6 +357,7 @@ std::vector<Case> synthetic_cases() {
       {"synthetic", run + "--smoothness -1", 2, {"--smoothness: expected a finite number in [0, "}},
       {"synthetic", run + "--seed -1", 2, {"--seed: expected an integer in [0, "}},
       {"synthetic", run + "--blocks 16,x", 2, {"--blocks: 'x' is not a block size >= 1"}},
+      {"synthetic", run + "--%canonical_option%", 2, {"'--%canonical_option%'"}},
       {"synthetic",
        run + "--blocks 16,5",
        2,

@@ -163,6 +163,7 @@ using c2f::VariableIndex;
 using c2f::Verdict;
 using c2f::visit_order_from_string;
 using c2f::VisitOrder;
+using c2f::why_not_a_file;
 using c2f::write_run_report;
 using c2f::write_uai;
 using c2f::write_uai_file;

@@ -1,12 +1,13 @@
 #include "c2f/vision/image_io.hpp"
 
-#include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <vector>
 
 #include <opencv2/core.hpp>
+
+#include "c2f/core/input_file.hpp"
 
 namespace c2f::vision {
 
@@ -15,8 +16,8 @@ namespace {
 /// The image with its stored depth and channels (`flags` adds to IMREAD_ANYDEPTH; palette
 /// images decode to colour).
 cv::Mat load_as_stored(const std::string& path, int flags) {
-  if (!std::filesystem::is_regular_file(path))
-    throw std::invalid_argument("image '" + path + "' does not exist");
+  if (const std::string why = why_not_a_file(path); !why.empty())
+    throw std::invalid_argument("image '" + path + "' " + why);
   cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);
   if (image.empty())
     throw std::invalid_argument("image '" + path + "' could not be read as an image");

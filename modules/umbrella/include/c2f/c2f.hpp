@@ -21,6 +21,7 @@
 #include "c2f/core/grid.hpp"
 #include "c2f/core/interrupt.hpp"
 #include "c2f/core/labeling.hpp"
+#include "c2f/core/input_file.hpp"
 #include "c2f/core/memory_need.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/observer.hpp"

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "c2f/core/input_file.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
@@ -147,8 +148,8 @@ void write_disparity_png16(const std::string& path, const cv::Mat& disparity) {
 }
 
 cv::Mat read_disparity_png16(const std::string& path) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("disparity PNG '" + path + "' does not exist");
+  if (const std::string why = why_not_a_file(path); !why.empty())
+    throw std::runtime_error("disparity PNG '" + path + "' " + why);
   const cv::Mat raw = cv::imread(path, cv::IMREAD_UNCHANGED);
   if (raw.empty() || raw.type() != CV_16U)
     throw std::runtime_error("'" + path + "' is not a 16-bit single-channel PNG");
