@@ -1,6 +1,7 @@
 #pragma once
 // Command line of c2f-segment: parsing and validation (every flag checked before any work).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,7 @@ struct SegmentCommand {
   CoopSolverOptions coop;
   vision::CoopParameters parameters;
   int classes = 10;
+  std::uint64_t gmm_seed = 27;  ///< k-means seed of the colour GMMs
   int downscale = 1;
   std::string schedule = "superpixels";  ///< parsed once the label count is known
   double time_limit = 0.0;

@@ -339,6 +339,7 @@ std::vector<Case> segment_cases() {
        {"gt-grey77.png': grey level 77 at pixel", "is none of 0 (background), 128"}},
       {"segment", run + "--max-steps x", 2, {"--max-steps: ", "got 'x'"}},
       {"segment", run + "--bogus 3", 2, {"unrecognised option '--bogus'"}},
+      {"segment", run + "--gmm-seed -1", 2, {"--gmm-seed: expected an integer in [0, "}},
       {"segment", run + "--x%original_token%", 2, {"unrecognised option '--x%original_token%'"}},
   };
 }

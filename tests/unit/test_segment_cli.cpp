@@ -26,7 +26,7 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
   const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 4);
   for (const char* flags : {"--method potts --schedule flat", "--aux mm --schedule paper",
                             "--aux greedy --start current --schedule paper-cc --save-partitions",
-                            "--aux ceres --schedule flat"}) {
+                            "--aux ceres --schedule flat --gmm-seed 3"}) {
     const std::string out = (dir / "out").string();
     std::filesystem::remove_all(out);
     const c2f::test::ToolResult r = run(files.image + " " + files.seeds + " --gt " + files.gt +
@@ -38,6 +38,8 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
     std::ifstream summary(dir / "out" / "summary.txt");
     const std::string text((std::istreambuf_iterator<char>(summary)), {});
     CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
+    const bool reseeded = std::string(flags).find("--gmm-seed 3") != std::string::npos;
+    CHECK_THAT(text, Catch::Contains(reseeded ? "GMM seed 3\n" : "GMM seed 27\n"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
 }

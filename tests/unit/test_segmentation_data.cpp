@@ -4,10 +4,13 @@
 #include <catch2/catch.hpp>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
+#include <span>
+#include <vector>
 
 #include "c2f/vision/segmentation/colour_gmm.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
@@ -171,6 +174,14 @@ TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") 
   }
   const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
   CHECK(problem.coop.num_variables() == 1200);
+  // The GMM seed reaches the unaries (27 by default); the edges keep theirs.
+  const auto same = [](std::span<const double> a, const std::vector<double>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end());
+  };
+  CHECK(same(problem.coop.unaries(), unaries));
+  const SegmentationProblem reseeded = segmentation_problem(scene, CoopParameters{}, 10, 5);
+  CHECK(same(reseeded.coop.unaries(), segmentation_unaries(scene, 5)));
+  CHECK(reseeded.coop.edges().size() == problem.coop.edges().size());
   // The best unary label is right on most pixels of this easy image.
   Labeling argmin(1200);
   for (std::size_t i = 0; i < 1200; ++i) {

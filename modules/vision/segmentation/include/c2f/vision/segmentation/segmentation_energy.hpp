@@ -52,10 +52,13 @@ struct SegmentationProblem {
 /// edges of both energies and one QPBO move graph (~1 KiB per pixel). std::nullopt on overflow.
 std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int labels);
 
-/// Builds both energies from the scene. Throws std::invalid_argument when the problem needs
-/// more memory than is available (require_memory with segmentation_memory_estimate, checked
-/// before anything is allocated).
+/// Builds both energies from the scene: unaries from GMMs whose k-means starts from
+/// `gmm_seed`, edge classes from k-means seeded 27 (the reference's seed for them; its GMMs'
+/// k-means was unseeded, so its unaries were one random draw). Throws std::invalid_argument
+/// when the problem needs more memory than is available (require_memory with
+/// segmentation_memory_estimate, checked before anything is allocated).
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
-                                         const CoopParameters& parameters, int num_classes = 10);
+                                         const CoopParameters& parameters, int num_classes = 10,
+                                         std::uint64_t gmm_seed = 27);
 
 }  // namespace c2f::vision
