@@ -236,6 +236,14 @@ TEST_CASE(
   resolve_with(dynamic, before, problem.caps);
   CHECK(source_set(copy) == source_set(dynamic));
   CHECK(dynamic.memory_bytes() == DynamicMaxFlow::memory_bytes_for(200, 800));
+  // A copy shares the topology and owns its flow state: rebuilding the original leaves it whole.
+  CHECK(copy.topology_bytes() > 0);
+  CHECK(copy.topology_bytes() == dynamic.topology_bytes());
+  dynamic.build(2, std::vector<FlowEdge>{{0, 1}});
+  DynamicMaxFlow fresh;
+  fresh.build(problem.num_nodes, problem.edges);
+  CHECK(copy.solve(before) == fresh.solve(before));
+  CHECK(source_set(copy) == source_set(fresh));
   DynamicMaxFlow unsolved;
   unsolved.build(2, std::vector<FlowEdge>{{0, 1}});
   CHECK_THROWS_WITH(unsolved.resolve(), Catch::Contains("solve() first"));

@@ -6,6 +6,7 @@
 #include <sys/mman.h>
 #endif
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,11 +21,10 @@ constexpr Index kTerminal = kNone - 1;                      // parent is the tre
 
 enum Tree : std::uint8_t { kFree = 0, kSourceTree = 1, kSinkTree = 2 };
 
-/// One node. `excess` is the residual terminal capacity: > 0 from the source, < 0 to the
-/// sink. `parent` is the arc from the node to its parent in its search tree.
+/// One node's flow state. `excess` is the residual terminal capacity: > 0 from the source,
+/// < 0 to the sink. `parent` is the arc from the node to its parent in its search tree.
 struct Node {
   double excess = 0.0;
-  Index first_arc = 0;  ///< arcs of node i are [nodes[i].first_arc, nodes[i + 1].first_arc)
   Index parent = kNone;
   Index next_active = kNone;  ///< kNone: not in the active queue; the last one points to itself
   Index stamp = 0;            ///< when `distance` was last known to be exact
@@ -33,10 +33,14 @@ struct Node {
   bool touched = false;  ///< in the list of nodes a dynamic update changed
 };
 
-struct Arc {
-  double residual = 0.0;
-  Index head = 0;
-  Index sister = 0;  ///< the reverse arc
+/// What never changes after build(): the arcs sorted by tail, each with its head and its
+/// reverse. Copies of a graph (recycled per-label graphs) share one Topology and own only their
+/// flow state (nodes and residuals), which halves what a copy costs.
+struct Topology {
+  std::vector<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
+  std::vector<Index> head;         ///< per arc
+  std::vector<Index> sister;       ///< per arc: the reverse arc
+  std::vector<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
 };
 
 /// Fills `to` with `from`, asking the kernel for transparent huge pages first when the block is
@@ -65,10 +69,10 @@ void assign_huge(std::vector<T>& to, const std::vector<T>& from) {
 struct DynamicMaxFlow::Impl {
   std::size_t num_nodes = 0;
   std::size_t num_edges = 0;
-  std::vector<Node> nodes;  // num_nodes + 1 (the last one only closes the arc ranges)
-  std::vector<Arc> arcs;
-  std::vector<Index> forward_arc;  // edge e: its from -> to arc; the sister is to -> from
-  bool has_flow = false;           // solve() ran since build(): the dynamic changes apply
+  std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
+  std::vector<Node> nodes;                   // num_nodes
+  std::vector<double> residual;              // per arc
+  bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
   Index time = 0;
   Index first_active = kNone, last_active = kNone;
   std::vector<Index> orphans, touched;
@@ -79,7 +83,7 @@ struct DynamicMaxFlow::Impl {
   Impl(const Impl& other)
       : num_nodes(other.num_nodes),
         num_edges(other.num_edges),
-        forward_arc(other.forward_arc),
+        topology(other.topology),
         has_flow(other.has_flow),
         time(other.time),
         first_active(other.first_active),
@@ -88,7 +92,7 @@ struct DynamicMaxFlow::Impl {
         touched(other.touched),
         stats(other.stats) {
     assign_huge(nodes, other.nodes);
-    assign_huge(arcs, other.arcs);
+    assign_huge(residual, other.residual);
     orphans.reserve(num_nodes);
     touched.reserve(num_nodes);
   }
@@ -131,8 +135,8 @@ struct DynamicMaxFlow::Impl {
   /// residual in the source tree, the i -> parent arc in the sink tree.
   [[nodiscard]] bool parent_arc_open(Index i) const {
     const Node& node = nodes[i];
-    const Arc& up = arcs[node.parent];
-    return node.tree == kSourceTree ? arcs[up.sister].residual > 0.0 : up.residual > 0.0;
+    const Index up = node.parent;
+    return node.tree == kSourceTree ? residual[topology->sister[up]] > 0.0 : residual[up] > 0.0;
   }
 
   /// Whether every capacity is finite and >= 0: one branch-free pass; check_capacities, which
@@ -162,10 +166,11 @@ struct DynamicMaxFlow::Impl {
     first_active = last_active = kNone;
     for (std::size_t i = 0; i < num_nodes; ++i)
       if (nodes[i].tree != kFree) activate(static_cast<Index>(i));
+    const Topology& t = *topology;
     for (std::size_t e = 0; e < num_edges; ++e) {
-      Arc& forward = arcs[forward_arc[e]];
-      forward.residual = caps.forward[e];
-      arcs[forward.sister].residual = caps.backward[e];
+      const Index forward = t.forward_arc[e];
+      residual[forward] = caps.forward[e];
+      residual[t.sister[forward]] = caps.backward[e];
     }
     time = 0;
   }
@@ -186,12 +191,13 @@ struct DynamicMaxFlow::Impl {
   /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
   /// cancelled and handed to the endpoints' terminal arcs.
   void change_edge(std::size_t e, double delta_forward, double delta_backward) {
-    Arc& forward = arcs[forward_arc[e]];
-    Arc& backward = arcs[forward.sister];
-    const Index from = backward.head;
-    const Index to = forward.head;
-    double forward_residual = forward.residual + delta_forward;
-    double backward_residual = backward.residual + delta_backward;
+    const Topology& t = *topology;
+    const Index forward = t.forward_arc[e];
+    const Index backward = t.sister[forward];
+    const Index from = t.head[backward];
+    const Index to = t.head[forward];
+    double forward_residual = residual[forward] + delta_forward;
+    double backward_residual = residual[backward] + delta_backward;
     if (forward_residual < 0.0) {
       // More flow from -> to than the new capacity: cancel the surplus; `from` keeps it
       // (towards its sink arc), `to` misses it (from its source arc).
@@ -207,8 +213,8 @@ struct DynamicMaxFlow::Impl {
       forward_residual += backward_residual;
       backward_residual = 0.0;
     }
-    forward.residual = std::max(forward_residual, 0.0);  // max: rounding below zero
-    backward.residual = std::max(backward_residual, 0.0);
+    residual[forward] = std::max(forward_residual, 0.0);  // max: rounding below zero
+    residual[backward] = std::max(backward_residual, 0.0);
     touch(from);
     touch(to);
     ++stats.changed_edges;
@@ -218,16 +224,16 @@ struct DynamicMaxFlow::Impl {
   /// residual towards o are searched again (a searched source-tree node must have every
   /// residual out-arc inside its tree, a searched sink-tree node every residual in-arc).
   void leave_tree(Index o) {
+    const Topology& t = *topology;
     const Tree tree = nodes[o].tree;
-    for (Index a = nodes[o].first_arc; a < nodes[o + 1].first_arc; ++a) {
-      const Arc& arc = arcs[a];
-      const Index j = arc.head;
+    for (Index a = t.first_arc[o]; a < t.first_arc[o + 1]; ++a) {
+      const Index j = t.head[a];
       Node& neighbour = nodes[j];
       if (neighbour.tree != tree) continue;
-      const double towards_o = tree == kSourceTree ? arcs[arc.sister].residual : arc.residual;
+      const double towards_o = tree == kSourceTree ? residual[t.sister[a]] : residual[a];
       if (towards_o > 0.0) activate(j);
       if (neighbour.parent != kNone && neighbour.parent != kTerminal &&
-          arcs[neighbour.parent].head == o)
+          t.head[neighbour.parent] == o)
         make_orphan(j);
     }
   }
@@ -276,10 +282,10 @@ struct DynamicMaxFlow::Impl {
         break;
       }
       if (node.parent == kNone) return kNone;
-      k = arcs[node.parent].head;
+      k = topology->head[node.parent];
     }
     Index d = total;
-    for (k = j; nodes[k].stamp != time; k = arcs[nodes[k].parent].head) {
+    for (k = j; nodes[k].stamp != time; k = topology->head[nodes[k].parent]) {
       nodes[k].stamp = time;
       nodes[k].distance = d--;
     }
@@ -292,12 +298,13 @@ struct DynamicMaxFlow::Impl {
     const Tree tree = orphan.tree;
     Index best_arc = kNone;
     Index best_distance = kNone;
-    for (Index a = orphan.first_arc; a < nodes[o + 1].first_arc; ++a) {
-      const Arc& arc = arcs[a];
-      if (nodes[arc.head].tree != tree) continue;
-      const double residual = tree == kSourceTree ? arcs[arc.sister].residual : arc.residual;
-      if (!(residual > 0.0)) continue;
-      const Index d = distance_to_terminal(arc.head);
+    const Topology& t = *topology;
+    for (Index a = t.first_arc[o]; a < t.first_arc[o + 1]; ++a) {
+      const Index j = t.head[a];
+      if (nodes[j].tree != tree) continue;
+      const double towards_o = tree == kSourceTree ? residual[t.sister[a]] : residual[a];
+      if (!(towards_o > 0.0)) continue;
+      const Index d = distance_to_terminal(j);
       if (d < best_distance) {
         best_distance = d;
         best_arc = a;
@@ -321,17 +328,18 @@ struct DynamicMaxFlow::Impl {
   /// Pushes the bottleneck along source terminal -> ... -> u -> v -> ... -> sink terminal,
   /// where `middle` is the arc u -> v; saturated tree arcs and terminals make orphans.
   void augment(Index middle) {
-    const Index u = arcs[arcs[middle].sister].head;
-    const Index v = arcs[middle].head;
-    double bottleneck = arcs[middle].residual;
+    const Topology& t = *topology;
+    const Index u = t.head[t.sister[middle]];
+    const Index v = t.head[middle];
+    double bottleneck = residual[middle];
     for (Index x = u;;) {
       const Index up = nodes[x].parent;
       if (up == kTerminal) {
         bottleneck = std::min(bottleneck, nodes[x].excess);
         break;
       }
-      bottleneck = std::min(bottleneck, arcs[arcs[up].sister].residual);
-      x = arcs[up].head;
+      bottleneck = std::min(bottleneck, residual[t.sister[up]]);
+      x = t.head[up];
     }
     for (Index x = v;;) {
       const Index up = nodes[x].parent;
@@ -339,11 +347,11 @@ struct DynamicMaxFlow::Impl {
         bottleneck = std::min(bottleneck, -nodes[x].excess);
         break;
       }
-      bottleneck = std::min(bottleneck, arcs[up].residual);
-      x = arcs[up].head;
+      bottleneck = std::min(bottleneck, residual[up]);
+      x = t.head[up];
     }
-    arcs[middle].residual -= bottleneck;
-    arcs[arcs[middle].sister].residual += bottleneck;
+    residual[middle] -= bottleneck;
+    residual[t.sister[middle]] += bottleneck;
     for (Index x = u;;) {
       const Index up = nodes[x].parent;
       if (up == kTerminal) {
@@ -351,11 +359,11 @@ struct DynamicMaxFlow::Impl {
         if (nodes[x].excess == 0.0) make_orphan(x);
         break;
       }
-      Arc& down = arcs[arcs[up].sister];  // parent -> x
-      down.residual -= bottleneck;
-      arcs[up].residual += bottleneck;
-      const Index parent = arcs[up].head;
-      if (down.residual == 0.0) make_orphan(x);
+      double& down = residual[t.sister[up]];  // parent -> x
+      down -= bottleneck;
+      residual[up] += bottleneck;
+      const Index parent = t.head[up];
+      if (down == 0.0) make_orphan(x);
       x = parent;
     }
     for (Index x = v;;) {
@@ -365,10 +373,10 @@ struct DynamicMaxFlow::Impl {
         if (nodes[x].excess == 0.0) make_orphan(x);
         break;
       }
-      arcs[up].residual -= bottleneck;
-      arcs[arcs[up].sister].residual += bottleneck;
-      const Index parent = arcs[up].head;
-      if (arcs[up].residual == 0.0) make_orphan(x);
+      residual[up] -= bottleneck;
+      residual[t.sister[up]] += bottleneck;
+      const Index parent = t.head[up];
+      if (residual[up] == 0.0) make_orphan(x);
       x = parent;
     }
     ++stats.augmentations;
@@ -377,22 +385,24 @@ struct DynamicMaxFlow::Impl {
   /// Grows the tree of node i by one scan of its arcs; the arc from the source side to the sink
   /// side when the trees meet there, else kNone.
   Index grow(Index i) {
+    const Topology& t = *topology;
     Node& node = nodes[i];
     const bool source_side = node.tree == kSourceTree;
-    for (Index a = node.first_arc; a < nodes[i + 1].first_arc; ++a) {
-      const Arc& arc = arcs[a];
+    for (Index a = t.first_arc[i]; a < t.first_arc[i + 1]; ++a) {
       // Source tree: grow along i -> j; sink tree: along j -> i.
-      const double residual = source_side ? arc.residual : arcs[arc.sister].residual;
-      if (!(residual > 0.0)) continue;
-      Node& neighbour = nodes[arc.head];
+      const Index sister = t.sister[a];
+      const double open = source_side ? residual[a] : residual[sister];
+      if (!(open > 0.0)) continue;
+      const Index j = t.head[a];
+      Node& neighbour = nodes[j];
       if (neighbour.tree == kFree) {
         neighbour.tree = node.tree;
-        neighbour.parent = arc.sister;
+        neighbour.parent = sister;
         neighbour.stamp = node.stamp;
         neighbour.distance = node.distance + 1;
-        activate(arc.head);
+        activate(j);
       } else if (neighbour.tree != node.tree) {
-        return source_side ? a : arc.sister;
+        return source_side ? a : sister;
       }
     }
     return kNone;
@@ -420,10 +430,11 @@ struct DynamicMaxFlow::Impl {
     double total = 0.0;
     for (std::size_t i = 0; i < num_nodes; ++i)
       total += nodes[i].tree == kSourceTree ? caps.sink[i] : caps.source[i];
+    const Topology& t = *topology;
     for (std::size_t e = 0; e < num_edges; ++e) {
-      const Arc& forward = arcs[forward_arc[e]];
-      const bool to_source = nodes[forward.head].tree == kSourceTree;
-      const bool from_source = nodes[arcs[forward.sister].head].tree == kSourceTree;
+      const Index forward = t.forward_arc[e];
+      const bool to_source = nodes[t.head[forward]].tree == kSourceTree;
+      const bool from_source = nodes[t.head[t.sister[forward]]].tree == kSourceTree;
       if (from_source && !to_source) total += caps.forward[e];
       if (!from_source && to_source) total += caps.backward[e];
     }
@@ -449,32 +460,39 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
                                 " nodes and " + std::to_string(edges.size()) +
                                 " edges exceed the 32-bit arc indices");
   }
-  Impl& m = *impl_;
-  m.num_nodes = num_nodes;
-  m.num_edges = edges.size();
-  m.nodes.assign(num_nodes + 1, Node{});
+  auto topology = std::make_shared<Topology>();
+  Topology& t = *topology;
   // Arcs sorted by tail: count, prefix sums, place.
+  t.first_arc.assign(num_nodes + 1, 0);
   for (const FlowEdge& e : edges) {
-    ++m.nodes[e.from].first_arc;
-    ++m.nodes[e.to].first_arc;
+    ++t.first_arc[e.from];
+    ++t.first_arc[e.to];
   }
   Index offset = 0;
-  for (Node& node : m.nodes) {
-    const Index count = node.first_arc;
-    node.first_arc = offset;
+  for (Index& first : t.first_arc) {
+    const Index count = first;
+    first = offset;
     offset += count;
   }
-  std::vector<Index> fill(num_nodes);
-  for (std::size_t i = 0; i < num_nodes; ++i) fill[i] = m.nodes[i].first_arc;
-  m.arcs.assign(2 * edges.size(), Arc{});
-  m.forward_arc.resize(edges.size());
+  std::vector<Index> fill(t.first_arc.begin(), t.first_arc.end() - 1);
+  t.head.resize(2 * edges.size());
+  t.sister.resize(2 * edges.size());
+  t.forward_arc.resize(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const Index forward = fill[edges[e].from]++;
     const Index backward = fill[edges[e].to]++;
-    m.arcs[forward] = {0.0, edges[e].to, backward};
-    m.arcs[backward] = {0.0, edges[e].from, forward};
-    m.forward_arc[e] = forward;
+    t.head[forward] = edges[e].to;
+    t.sister[forward] = backward;
+    t.head[backward] = edges[e].from;
+    t.sister[backward] = forward;
+    t.forward_arc[e] = forward;
   }
+  Impl& m = *impl_;
+  m.num_nodes = num_nodes;
+  m.num_edges = edges.size();
+  m.topology = std::move(topology);
+  m.nodes.assign(num_nodes, Node{});
+  m.residual.assign(2 * edges.size(), 0.0);
   m.orphans.clear();
   m.touched.clear();
   m.orphans.reserve(num_nodes);
@@ -490,7 +508,7 @@ double DynamicMaxFlow::solve(const FlowCapacities& caps) {
 
 void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
   Impl& m = *impl_;
-  if (m.nodes.empty()) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
+  if (!m.topology) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
   const bool sizes_fit = caps.source.size() == m.num_nodes && caps.sink.size() == m.num_nodes &&
                          caps.forward.size() == m.num_edges && caps.backward.size() == m.num_edges;
   if (!sizes_fit || !Impl::all_valid(caps.source) || !Impl::all_valid(caps.sink) ||
@@ -556,9 +574,14 @@ std::size_t DynamicMaxFlow::memory_bytes() const noexcept {
 
 std::size_t DynamicMaxFlow::memory_bytes_for(std::size_t num_nodes,
                                              std::size_t num_edges) noexcept {
-  const std::size_t per_node = sizeof(Node);
-  const std::size_t per_edge = 2 * sizeof(Arc) + sizeof(Index);  // + forward_arc
-  return (num_nodes + 1) * per_node + num_edges * per_edge;
+  return num_nodes * sizeof(Node) + 2 * num_edges * sizeof(double);
+}
+
+std::size_t DynamicMaxFlow::topology_bytes() const noexcept {
+  const Topology* t = impl_->topology.get();
+  if (t == nullptr) return 0;
+  return (t->first_arc.size() + t->head.size() + t->sister.size() + t->forward_arc.size()) *
+         sizeof(Index);
 }
 
 std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,

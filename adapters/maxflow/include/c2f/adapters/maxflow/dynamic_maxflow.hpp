@@ -23,7 +23,8 @@ struct DynamicSolveStats {
 
 /// Boykov-Kolmogorov max-flow on flat arrays (nodes; arcs sorted by tail, each with its
 /// reverse), built once per topology; a solve allocates nothing once the work lists have grown
-/// to their largest size.
+/// to their largest size. Copies share the topology (heads, reverse arcs, arc ranges) and own
+/// only their flow state, so a copy costs half of what the first graph does.
 ///
 /// solve(caps) starts from zero flow (the MaxFlow contract). A solved graph can then be changed
 /// and solved again from its flow and search trees (Kohli and Torr's dynamic graph cuts):
@@ -72,11 +73,14 @@ class DynamicMaxFlow {
   [[nodiscard]] std::size_t num_edges() const noexcept;
   /// What the last solve() or resolve() did.
   [[nodiscard]] const DynamicSolveStats& last_solve() const noexcept;
-  /// Bytes held by the graph (excluding the small work lists).
+  /// Bytes of the graph's own flow state (node states and arc residuals; not the small work
+  /// lists): what a copy adds.
   [[nodiscard]] std::size_t memory_bytes() const noexcept;
   /// memory_bytes() of a graph with this many nodes and edges, before building it.
   [[nodiscard]] static std::size_t memory_bytes_for(std::size_t num_nodes,
                                                     std::size_t num_edges) noexcept;
+  /// Bytes of the topology, held once by build() and shared by every copy.
+  [[nodiscard]] std::size_t topology_bytes() const noexcept;
 
  private:
   struct Impl;
