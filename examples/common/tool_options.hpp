@@ -83,8 +83,9 @@ class ToolOptions {
 inline constexpr RealRange kTimeLimitRange{0.0, 1e7};
 inline constexpr long long kMaxSteps = 1'000'000'000;
 
-/// Throws std::invalid_argument "<argument>: file '<path>' does not exist" unless `path` names
-/// a regular file (for positional arguments; options use ToolOptions::file).
+/// Throws std::invalid_argument "<argument>: file '<path>' <why_not_a_file>" (does not exist,
+/// is a folder, ...) unless `path` names a regular file (for positional arguments; options use
+/// ToolOptions::file).
 void require_file(const std::string& path, const char* argument);
 
 /// "<option>: <message>", without repeating the option's name when the message already

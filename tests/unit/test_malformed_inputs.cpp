@@ -332,7 +332,7 @@ std::vector<Case> segment_cases() {
       {"segment",
        run + "--gt {dir}/gt-odd.png",
        2,
-       {"GT '", "gt-odd.png': colour (30,200,10) at (2, 2) is none of the seed colours"}},
+       {"GT '", "gt-odd.png': colour (30,200,10) at (2, 2) is none of the label colours"}},
       {"segment",
        run + "--binary --gt {dir}/gt-grey77.png",
        2,

@@ -117,7 +117,7 @@ TEST_CASE("seed conventions load scenes and reject bad input by name", "[segment
   cv::imwrite((dir / "odd.png").string(), odd_gt);
   CHECK_THROWS_WITH(load_segmentation_scene({files.image, files.seeds, (dir / "odd.png").string(),
                                              SeedConvention::colours}),
-                    Catch::Contains("colour (9,9,9) at (7, 5) is none of the seed colours"));
+                    Catch::Contains("colour (9,9,9) at (7, 5) is none of the label colours"));
   // With labels from a GT that has a fourth class no scribble touches: that label has no seeds.
   CHECK_THROWS_WITH(load_segmentation_scene({files.image, files.seeds, (dir / "odd.png").string(),
                                              SeedConvention::labels_from_gt}),
@@ -193,6 +193,33 @@ TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") 
         scene.palette[static_cast<std::size_t>(argmin[0])]);
   CHECK_THROWS_WITH(pixel_error(argmin, std::vector<int>(1200, kNoLabel)),
                     Catch::Contains("scores no pixel"));
+}
+
+TEST_CASE("a label image reads back as the labeling it shows", "[segmentation][io]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-read-label-image";
+  const auto files = test::write_synthetic_segmentation(dir, 12, 9, 3);
+  const SegmentationScene scene =
+      load_segmentation_scene({files.image, files.seeds, files.gt, SeedConvention::colours});
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> label(0, scene.num_labels() - 1);
+  Labeling labeling(scene.image.total());
+  for (Label& l : labeling) l = static_cast<Label>(label(rng));
+  const std::string path = (dir / "labels.png").string();
+  REQUIRE(cv::imwrite(path, label_image(labeling, scene)));
+  CHECK(read_label_image(path, scene) == labeling);
+
+  cv::Mat odd = label_image(labeling, scene);
+  odd.at<cv::Vec3b>(4, 7) = cv::Vec3b(9, 9, 9);
+  const std::string odd_path = (dir / "odd.png").string();
+  REQUIRE(cv::imwrite(odd_path, odd));
+  CHECK_THROWS_WITH(read_label_image(odd_path, scene),
+                    Catch::Contains("labeling '" + odd_path +
+                                    "': colour (9,9,9) at (7, 4) is none of the label colours"));
+  const std::string small_path = (dir / "small.png").string();
+  REQUIRE(cv::imwrite(small_path, cv::Mat(3, 4, CV_8UC3, scene.palette[0])));
+  CHECK_THROWS_WITH(read_label_image(small_path, scene), Catch::Contains("is 4x3, the image 12x9"));
+  CHECK_THROWS_WITH(read_label_image((dir / "missing.png").string(), scene),
+                    Catch::Contains("does not exist"));
 }
 
 #ifdef C2F_SHARED_DATA_DIR

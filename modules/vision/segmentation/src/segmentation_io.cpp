@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 
 namespace c2f::vision {
@@ -15,6 +16,18 @@ cv::Mat label_image(std::span<const Label> labeling, const SegmentationScene& sc
     picture.at<cv::Vec3b>(static_cast<int>(i)) =
         scene.palette[static_cast<std::size_t>(labeling[i])];
   return picture;
+}
+
+Labeling read_label_image(const std::string& path, const SegmentationScene& scene) {
+  const cv::Mat picture = load_colour_image(path);
+  if (picture.size() != scene.image.size()) {
+    throw std::invalid_argument("labeling '" + path + "' is " + std::to_string(picture.cols) + "x" +
+                                std::to_string(picture.rows) + ", the image " +
+                                std::to_string(scene.image.cols) + "x" +
+                                std::to_string(scene.image.rows));
+  }
+  const std::vector<int> labels = labels_by_colour(picture, scene.palette, "labeling", path);
+  return Labeling(labels.begin(), labels.end());
 }
 
 cv::Mat segmentation_overlay(std::span<const Label> labeling, const SegmentationScene& scene) {

@@ -55,11 +55,11 @@ std::vector<cv::Vec3b> distinct_colours(const cv::Mat& image, const cv::Vec3b* s
   return result;
 }
 
-/// Label of each pixel by its colour in `palette` (`skip` gives kNoLabel); throws naming the
-/// first unknown colour.
+}  // namespace
+
 std::vector<int> labels_by_colour(const cv::Mat& image, const std::vector<cv::Vec3b>& palette,
                                   const std::string& what, const std::string& path,
-                                  const cv::Vec3b* skip = nullptr) {
+                                  const cv::Vec3b* skip) {
   std::vector<int> labels(static_cast<std::size_t>(image.total()), kNoLabel);
   for (int y = 0; y < image.rows; ++y) {
     for (int x = 0; x < image.cols; ++x) {
@@ -69,13 +69,15 @@ std::vector<int> labels_by_colour(const cv::Mat& image, const std::vector<cv::Ve
       if (it == palette.end()) {
         throw std::invalid_argument(what + " '" + path + "': colour " + colour_text(c) + " at (" +
                                     std::to_string(x) + ", " + std::to_string(y) +
-                                    ") is none of the seed colours");
+                                    ") is none of the label colours");
       }
       labels[static_cast<std::size_t>(y * image.cols + x)] = static_cast<int>(it - palette.begin());
     }
   }
   return labels;
 }
+
+namespace {
 
 void require_seeds_for_every_label(const SegmentationScene& scene, const std::string& path) {
   std::vector<std::size_t> count(scene.palette.size(), 0);

@@ -16,6 +16,12 @@ namespace c2f::vision {
 /// The labeling as an 8-bit BGR image in the scene's label colours.
 cv::Mat label_image(std::span<const Label> labeling, const SegmentationScene& scene);
 
+/// The inverse of label_image: the labeling an image file shows in the scene's label colours
+/// (a labels.png, or another method's result drawn in the same colours). Throws
+/// std::invalid_argument naming the file when it is unreadable, not the scene's size, or has a
+/// pixel of a colour that is no label's.
+Labeling read_label_image(const std::string& path, const SegmentationScene& scene);
+
 /// The image with every pixel blended half and half with its label's colour, and the
 /// boundaries between labels drawn white.
 cv::Mat segmentation_overlay(std::span<const Label> labeling, const SegmentationScene& scene);

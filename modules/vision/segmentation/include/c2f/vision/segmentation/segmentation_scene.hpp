@@ -68,6 +68,13 @@ struct SegmentationImages {
 SegmentationScene segmentation_scene_from_images(const SegmentationImages& images,
                                                  const SegmentationFiles& files);
 
+/// The label of every pixel of an 8-bit BGR image by its colour in `palette` (pixels of colour
+/// `*skip`, when given, get kNoLabel). Throws std::invalid_argument "<what> '<path>': colour
+/// (r,g,b) at (x, y) is none of the label colours" for the first pixel of another colour.
+std::vector<int> labels_by_colour(const cv::Mat& image, const std::vector<cv::Vec3b>& palette,
+                                  const std::string& what, const std::string& path,
+                                  const cv::Vec3b* skip = nullptr);
+
 /// The scene shrunk by an integer factor: the image by area averaging; a pixel of the result
 /// is seeded with a label when any pixel of its block carries that seed (the first in raster
 /// order when several do, so thin scribbles survive); the truth by the block's top-left pixel.
