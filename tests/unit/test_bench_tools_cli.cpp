@@ -81,6 +81,26 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
   }
 }
 
+TEST_CASE("the benchmark scripts print their usage and refuse a missing data folder untouched",
+          "[bench][cli][malformed]") {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-scripts";
+  std::filesystem::remove_all(out);
+  for (const char* script : {"bench/solvers/run-backends", "bench/stereo/run-middlebury",
+                             "bench/segment/run-coopcuts", "bench/segment/run-gmm-seeds"}) {
+    const std::string path = std::string(C2F_SOURCE_DIR) + "/" + script;
+    const auto help = c2f::test::run_tool(path, "--help");
+    INFO(script << "\n" << help.output);
+    CHECK(help.exit_code == 0);
+    CHECK_THAT(help.output, Catch::Contains("Runs") || Catch::Contains("Segments"));
+    // Once, "--help" was read as the data folder and the default output's rows were emptied.
+    const auto missing = c2f::test::run_tool(path, "/nonexistent-c2f-data " + out.string());
+    INFO(missing.output);
+    CHECK(missing.exit_code != 0);
+    CHECK_THAT(missing.output, Catch::Contains("/nonexistent-c2f-data"));
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
+
 TEST_CASE("c2f-bench-published recomputes the published pixel errors from the published images",
           "[bench][cli][segmentation][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
