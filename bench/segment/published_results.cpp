@@ -1,6 +1,6 @@
 // c2f-bench-published: the coopCuts authors' published segmentations scored under our energies.
 //
-//   c2f-bench-published [--data DIR] [--gmm-seed N] [--classes K]
+//   c2f-bench-published [--data DIR] [--gmm-seed N] [--edge-seed N] [--classes K]
 //
 // For every multi-label coopCuts image with published results (coopcuts/runMultilabel/results:
 // <image>_alphaExpResult.png and <image>_coopResult.png, drawn in the GT's colours), builds our
@@ -29,7 +29,7 @@ namespace {
 
 struct PublishedCommand {
   std::string data = "../shared/data";
-  std::uint64_t gmm_seed = 27;
+  KMeansSeeds seeds;
   int classes = 10;
 };
 
@@ -63,7 +63,7 @@ void print_scores(const std::filesystem::path& set, const std::string& name,
       (set / "labelings" / (name + ".bmp")).string(), SeedConvention::labels_from_gt};
   const SegmentationScene scene = load_segmentation_scene(files);
   const SegmentationProblem problem =
-      segmentation_problem(scene, CoopParameters{}, command.classes, command.gmm_seed);
+      segmentation_problem(scene, CoopParameters{}, command.classes, command.seeds);
   for (const char* method : {"alphaExpResult", "coopResult"}) {
     const std::string path = (set / "results" / (name + "_" + method + ".png")).string();
     const Labeling labeling = read_label_image(path, scene);
@@ -83,8 +83,11 @@ int main(int argc, char** argv) {
         "cooperative cut) scored under our energies: energies and pixel error per image.\n\n"
         "Usage: c2f-bench-published [options]\n\nOptions");
     options.path("data", &command.data, "data root (coopcuts/runMultilabel)")
-        .integer("gmm-seed", &command.gmm_seed, {0, std::numeric_limits<long long>::max()},
+        .integer("gmm-seed", &command.seeds.gmm, {0, std::numeric_limits<long long>::max()},
                  "seed of the k-means that starts each label's colour GMM")
+        .integer("edge-seed", &command.seeds.edge_classes,
+                 {0, std::numeric_limits<long long>::max()},
+                 "seed of the k-means that makes the edge classes")
         .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)");
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;

@@ -28,7 +28,7 @@ TimedProblem build_problem(const SegmentationScene& scene,
                            const examples::SegmentCommand& command) {
   const auto start = Clock::now();
   SegmentationProblem problem =
-      segmentation_problem(scene, command.parameters, command.classes, command.gmm_seed);
+      segmentation_problem(scene, command.parameters, command.classes, command.kmeans_seeds);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet) {
     std::fprintf(stderr, "c2f-segment: GMM unaries and %zu edges in %d classes in %.2f s\n",
@@ -74,8 +74,9 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
   }
   report << ", schedule " << levels.schedule().to_string() << "\nlambda "
          << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
-         << command.parameters.alpha << ", " << command.classes << " edge classes, GMM seed "
-         << command.gmm_seed << "\n"
+         << command.parameters.alpha << ", " << command.classes << " edge classes, k-means seeds "
+         << command.kmeans_seeds.gmm << " (GMMs) and " << command.kmeans_seeds.edge_classes
+         << " (edge classes)\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n";
   write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "

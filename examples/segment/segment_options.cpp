@@ -63,9 +63,12 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       .real("alpha", &command.parameters.alpha, {0.0, 1.0, false, true},
             "slope of the concave costs after the breakpoint")
       .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)")
-      .integer("gmm-seed", &command.gmm_seed, {0, std::numeric_limits<long long>::max()},
+      .integer("gmm-seed", &command.kmeans_seeds.gmm, {0, std::numeric_limits<long long>::max()},
                "seed of the k-means that starts each label's colour GMM (the reference's was "
                "unseeded: its unaries were one random draw)")
+      .integer("edge-seed", &command.kmeans_seeds.edge_classes,
+               {0, std::numeric_limits<long long>::max()},
+               "seed of the k-means that makes the edge classes")
       .integer("downscale", &command.downscale, {1, 1024},
                "shrink the image, seeds and GT by this integer factor first")
       .real("time-limit", &command.time_limit, kTimeLimitRange,

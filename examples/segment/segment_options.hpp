@@ -9,6 +9,7 @@
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
 
 namespace c2f::examples {
@@ -27,7 +28,7 @@ struct SegmentCommand {
   CoopSolverOptions coop;
   vision::CoopParameters parameters;
   int classes = 10;
-  std::uint64_t gmm_seed = 27;  ///< k-means seed of the colour GMMs
+  vision::KMeansSeeds kmeans_seeds;  ///< of the colour GMMs and the edge classes
   int downscale = 1;
   std::string schedule = "superpixels";  ///< parsed once the label count is known
   double time_limit = 0.0;

@@ -340,6 +340,7 @@ std::vector<Case> segment_cases() {
       {"segment", run + "--max-steps x", 2, {"--max-steps: ", "got 'x'"}},
       {"segment", run + "--bogus 3", 2, {"unrecognised option '--bogus'"}},
       {"segment", run + "--gmm-seed -1", 2, {"--gmm-seed: expected an integer in [0, "}},
+      {"segment", run + "--edge-seed x", 2, {"--edge-seed: expected an integer in [0, "}},
       {"segment", run + "--x%original_token%", 2, {"unrecognised option '--x%original_token%'"}},
   };
 }

@@ -26,7 +26,7 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
   const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 4);
   for (const char* flags : {"--method potts --schedule flat", "--aux mm --schedule paper",
                             "--aux greedy --start current --schedule paper-cc --save-partitions",
-                            "--aux ceres --schedule flat --gmm-seed 3"}) {
+                            "--aux ceres --schedule flat --gmm-seed 3 --edge-seed 4"}) {
     const std::string out = (dir / "out").string();
     std::filesystem::remove_all(out);
     const c2f::test::ToolResult r = run(files.image + " " + files.seeds + " --gt " + files.gt +
@@ -39,7 +39,8 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
     const std::string text((std::istreambuf_iterator<char>(summary)), {});
     CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
     const bool reseeded = std::string(flags).find("--gmm-seed 3") != std::string::npos;
-    CHECK_THAT(text, Catch::Contains(reseeded ? "GMM seed 3\n" : "GMM seed 27\n"));
+    CHECK_THAT(text, Catch::Contains(reseeded ? "k-means seeds 3 (GMMs) and 4 (edge classes)\n"
+                                              : "k-means seeds 27 (GMMs) and 27 (edge classes)\n"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
 }

@@ -174,14 +174,22 @@ TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") 
   }
   const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
   CHECK(problem.coop.num_variables() == 1200);
-  // The GMM seed reaches the unaries (27 by default); the edges keep theirs.
+  // The seeds reach the unaries and the edge classes (27 by default).
   const auto same = [](std::span<const double> a, const std::vector<double>& b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end());
   };
   CHECK(same(problem.coop.unaries(), unaries));
-  const SegmentationProblem reseeded = segmentation_problem(scene, CoopParameters{}, 10, 5);
+  const SegmentationProblem reseeded = segmentation_problem(scene, CoopParameters{}, 10, {5, 6});
   CHECK(same(reseeded.coop.unaries(), segmentation_unaries(scene, 5)));
-  CHECK(reseeded.coop.edges().size() == problem.coop.edges().size());
+  const SegmentationEdges classes = segmentation_edges(scene.image, 10, 6);
+  REQUIRE(reseeded.coop.edges().size() == classes.pairs.size());
+  bool classes_match = true;
+  for (std::size_t e = 0; e < classes.pairs.size(); ++e) {
+    const CoopEdge& edge = reseeded.coop.edges()[e];
+    classes_match &= reseeded.coop.entries()[edge.first].edge_class == classes.u_class[e] &&
+                     reseeded.coop.entries()[edge.middle].edge_class == classes.v_class[e];
+  }
+  CHECK(classes_match);
   // The best unary label is right on most pixels of this easy image.
   Labeling argmin(1200);
   for (std::size_t i = 0; i < 1200; ++i) {

@@ -202,6 +202,7 @@ using c2f::vision::gradient_planes;
 using c2f::vision::gradient_scale;
 using c2f::vision::kmeans;
 using c2f::vision::KMeansResult;
+using c2f::vision::KMeansSeeds;
 using c2f::vision::kNoLabel;
 using c2f::vision::kTsgoWeightBounds;
 using c2f::vision::kTsgoWeights;

@@ -126,13 +126,14 @@ std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int 
 
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
                                          const CoopParameters& parameters, int num_classes,
-                                         std::uint64_t gmm_seed) {
+                                         KMeansSeeds seeds) {
   require_memory("segmenting " + std::to_string(scene.image.cols) + "x" +
                      std::to_string(scene.image.rows) + " pixels into " +
                      std::to_string(scene.num_labels()) + " labels",
                  segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
-  CoopEnergy coop = coop_energy(segmentation_unaries(scene, gmm_seed), scene.num_labels(),
-                                segmentation_edges(scene.image, num_classes), parameters);
+  CoopEnergy coop =
+      coop_energy(segmentation_unaries(scene, seeds.gmm), scene.num_labels(),
+                  segmentation_edges(scene.image, num_classes, seeds.edge_classes), parameters);
   PairwiseEnergy potts = potts_energy(coop);
   return {std::move(coop), std::move(potts)};
 }

@@ -52,13 +52,19 @@ struct SegmentationProblem {
 /// edges of both energies and one QPBO move graph (~1 KiB per pixel). std::nullopt on overflow.
 std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int labels);
 
-/// Builds both energies from the scene: unaries from GMMs whose k-means starts from
-/// `gmm_seed`, edge classes from k-means seeded 27 (the reference's seed for them; its GMMs'
-/// k-means was unseeded, so its unaries were one random draw). Throws std::invalid_argument
-/// when the problem needs more memory than is available (require_memory with
-/// segmentation_memory_estimate, checked before anything is allocated).
+/// The seeds of the two k-means runs of the data preparation. The reference seeded its edge
+/// classes' k-means with 27 (of MATLAB's own random stream, which ours does not reproduce) and
+/// left its GMMs' unseeded, so its unaries were one random draw.
+struct KMeansSeeds {
+  std::uint64_t gmm = 27;           ///< starts each label's colour GMM (segmentation_unaries)
+  std::uint64_t edge_classes = 27;  ///< clusters the colour differences (segmentation_edges)
+};
+
+/// Builds both energies from the scene, the k-means runs seeded by `seeds`. Throws
+/// std::invalid_argument when the problem needs more memory than is available (require_memory
+/// with segmentation_memory_estimate, checked before anything is allocated).
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
                                          const CoopParameters& parameters, int num_classes = 10,
-                                         std::uint64_t gmm_seed = 27);
+                                         KMeansSeeds seeds = {});
 
 }  // namespace c2f::vision
