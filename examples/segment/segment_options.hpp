@@ -1,7 +1,6 @@
 #pragma once
 // Command line of c2f-segment: parsing and validation (every flag checked before any work).
 
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
