@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "support/coopcuts_files.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -58,10 +59,8 @@ std::vector<std::string> images_with_results(const std::filesystem::path& set) {
 
 void print_scores(const std::filesystem::path& set, const std::string& name,
                   const PublishedCommand& command) {
-  const SegmentationFiles files{
-      (set / "images" / (name + ".bmp")).string(), (set / "seeds" / (name + ".png")).string(),
-      (set / "labelings" / (name + ".bmp")).string(), SeedConvention::labels_from_gt};
-  const SegmentationScene scene = load_segmentation_scene(files);
+  const SegmentationScene scene =
+      load_segmentation_scene(bench::coopcuts_files(command.data, "multilabel", name));
   const SegmentationProblem problem =
       segmentation_problem(scene, CoopParameters{}, command.classes, command.seeds);
   for (const char* method : {"alphaExpResult", "coopResult"}) {

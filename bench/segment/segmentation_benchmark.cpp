@@ -37,6 +37,7 @@
 #include "c2f/c2f.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
+#include "support/coopcuts_files.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -141,22 +142,7 @@ const char* kColumns[] = {"image",
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
               const std::vector<std::string>& selected) {
-  const std::filesystem::path root(data);
-  SegmentationFiles files;
-  if (set == "multilabel") {
-    const auto dir = root / "coopcuts/runMultilabel";
-    files = {(dir / "images" / (name + ".bmp")).string(),
-             (dir / "seeds" / (name + ".png")).string(),
-             (dir / "labelings" / (name + ".bmp")).string(), SeedConvention::labels_from_gt};
-  } else if (set == "binary") {
-    const auto dir = root / "coopcuts/runBinary/dataset";
-    files = {(dir / "images" / (name + ".jpg")).string(),
-             (dir / "seeds" / (name + ".png")).string(),
-             (dir / "groundtruth" / (name + ".png")).string(), SeedConvention::binary};
-  } else {
-    throw std::invalid_argument("SET must be multilabel or binary, got '" + set + "'");
-  }
-  const SegmentationScene scene = load_segmentation_scene(files);
+  const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
   const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
   // The image's traces land together after its last row (each run stages its own files and
   // owns only the traces of the configurations it runs).
