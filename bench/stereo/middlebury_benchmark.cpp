@@ -4,9 +4,11 @@
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
+//                    [--flat-near-radius R] [--c2f-near-radius R]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
-//       backend, default dynamic),
+//       backend, default dynamic; near moves of radius R, MoveOptions::near_radius, in either
+//       run on request: with `--schedule flat` this compares two flat solvers),
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
@@ -87,18 +89,23 @@ struct Settings {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;
   int downscale = 1;  ///< shrink the views by this factor (the scaling study)
   int labels = 85;
+  int flat_near_radius = 0;  ///< MoveOptions::near_radius of the flat run
+  int c2f_near_radius = 0;   ///< and of the coarse-to-fine run
 };
 
 template <class Backend>
 Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::string& schedule,
-          const Settings& settings, const std::string& trace_path) {
+          int near_radius, const Settings& settings, const std::string& trace_path) {
   ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape());
-  ExpansionSolver<Backend> solver(ExpansionOptions{settings.label_order});
+  ExpansionOptions expansion;
+  expansion.order = settings.label_order;
+  expansion.near_radius = near_radius;
+  ExpansionSolver<Backend> solver(expansion);
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
   options.plateau_steps_at_original =  // a whole sweep without decrease
-      static_cast<int>(ExpansionSolver<>::steps_per_sweep(energy.num_labels()));
+      static_cast<int>(solver.sweep_steps(energy.num_labels()));
   options.time_limit_seconds = settings.time_limit;
   Run run;
   std::ofstream file = open_trace_file(trace_path);
@@ -125,13 +132,14 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
-  auto solve_with = [&](const std::string& schedule, const std::string& trace) {
+  auto solve_with = [&](const std::string& schedule, int near_radius, const std::string& trace) {
     return with_maxflow_backend(settings.maxflow, [&]<class Backend>(Backend) {
-      return solve<Backend>(energy, scene, schedule, settings, (output.staging() / trace).string());
+      return solve<Backend>(energy, scene, schedule, near_radius, settings,
+                            (output.staging() / trace).string());
     });
   };
-  const Run flat = solve_with("flat", name + "-flat.csv");
-  const Run c2f = solve_with(settings.schedule, name + "-c2f.csv");
+  const Run flat = solve_with("flat", settings.flat_near_radius, name + "-flat.csv");
+  const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -277,6 +285,10 @@ int main(int argc, char** argv) {
         .text("maxflow", &maxflow, "dynamic, boost or kolmogorov")
         .integer("downscale", &settings.downscale, {1, 16}, "shrink the views by this factor")
         .integer("labels", &settings.labels, {2, 256}, "disparity labels")
+        .integer("flat-near-radius", &settings.flat_near_radius, {0, 1000000},
+                 "near moves of this radius in the flat run (0: whole moves only)")
+        .integer("c2f-near-radius", &settings.c2f_near_radius, {0, 1000000},
+                 "near moves of this radius in the coarse-to-fine run (0: whole moves only)")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;

@@ -17,6 +17,11 @@ void SolverFlags::declare(ToolOptions& options) {
       .real("graph-memory", &graph_memory_gib_, {0.0, 65536.0},
             "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a "
             "graph solved from zero flow; 0: no recycling)")
+      .integer("near-radius", &near_radius_, {0, 1000000},
+               "expansion: 0 (every move may change every variable) or r: a move to a label frees "
+               "only the variables within r edges of that label or of a pixel whose cheapest "
+               "cost it is, with a sweep of whole moves whenever a sweep of such moves lowers "
+               "nothing (convergence: three sweeps without decrease)")
       .text("label-order", &label_order_,
             "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
             "random, or frequency (labels of most variables first, counted when each level "
@@ -27,8 +32,11 @@ SolverChoice SolverFlags::choice() const {
   SolverChoice choice;
   choice.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
   choice.order = with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
+  choice.near_radius = near_radius_;
   if (const std::string problem = choice.validate(); !problem.empty())
-    throw std::invalid_argument("--label-order with --solver " + solver_ + ": " + problem);
+    throw std::invalid_argument((near_radius_ > 0 ? "--near-radius or --label-order with --solver "
+                                                  : "--label-order with --solver ") +
+                                solver_ + ": " + problem);
   choice.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
   if (!maxflow_available(choice.maxflow)) {
     throw std::invalid_argument("--maxflow " + maxflow_ +
@@ -59,8 +67,7 @@ Options RunRuleFlags::options(const SolverChoice& choice, int num_labels) const 
   options.plateau_steps = {plateau};
   options.plateau_tolerance = plateau_tolerance;
   options.plateau_steps_at_original =
-      final_plateau > 0 ? final_plateau
-                        : static_cast<int>(steps_per_sweep(choice.kind, num_labels));
+      final_plateau > 0 ? final_plateau : static_cast<int>(steps_per_sweep(choice, num_labels));
   options.time_limit_seconds = time_limit;
   options.max_total_steps = max_steps;
   return options;

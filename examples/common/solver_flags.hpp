@@ -1,6 +1,7 @@
 #pragma once
 // The options that choose a solver and end its run, shared by the tools that offer every
-// solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --label-order, and
+// solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --near-radius,
+// --label-order, and
 // --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
 
 #include <string>
@@ -13,7 +14,7 @@ namespace c2f::examples {
 
 class SolverFlags {
  public:
-  /// Declares the four options in `options` (this object receives their values, so it must
+  /// Declares the five options in `options` (this object receives their values, so it must
   /// outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -24,6 +25,7 @@ class SolverFlags {
  private:
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic";
   double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+  int near_radius_ = 0;
 };
 
 /// The options that end levels and the run; the values are public (defaults as shown).

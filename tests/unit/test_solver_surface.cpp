@@ -66,6 +66,13 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   CHECK(steps_per_sweep(SolverKind::swap, 7) == 21);
   CHECK(steps_per_sweep(SolverKind::lbp, 7) == 4);
   CHECK(steps_per_sweep(SolverKind::icm, 7) == 1);
+  SolverChoice near;
+  near.near_radius = 3;
+  CHECK(steps_per_sweep(near, 7) == 21);  // near moves: three sweeps (ExpansionSolver::sweep_steps)
+  CHECK(near.move_options().near_radius == 3);
+  near.kind = SolverKind::swap;
+  CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
+  CHECK(near.move_options().near_radius == 0);
   CHECK_THROWS_WITH(
       solver_kind_from_string("trws"),
       Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));

@@ -50,6 +50,9 @@ std::string SolverChoice::validate() const {
   if (kind == SolverKind::icm && order == VisitOrder::frequency) {
     return "the order 'frequency' orders labels (expansion, swap); icm visits variables";
   }
+  if (near_radius < 0) return "the near-move radius must be >= 0";
+  if (near_radius > 0 && kind != SolverKind::expansion)
+    return "near moves are expansion moves; solver '" + std::string(to_string(kind)) + "' has none";
   return {};
 }
 
@@ -65,6 +68,12 @@ std::size_t steps_per_sweep(SolverKind kind, int num_labels) {
       return IcmSolver::steps_per_sweep(num_labels);
   }
   return 1;
+}
+
+std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels) {
+  if (choice.kind == SolverKind::expansion)
+    return ExpansionSolver<>(choice.move_options()).sweep_steps(num_labels);
+  return steps_per_sweep(choice.kind, num_labels);
 }
 
 }  // namespace c2f

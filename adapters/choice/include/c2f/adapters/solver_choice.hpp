@@ -86,6 +86,7 @@ struct SolverChoice {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
   /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
+  int near_radius = 0;  ///< expansion: MoveOptions::near_radius (0: whole moves only)
 
   /// The MoveOptions of expansion and swap.
   [[nodiscard]] MoveOptions move_options() const {
@@ -93,6 +94,7 @@ struct SolverChoice {
     options.order = order;
     options.seed = seed;
     options.graph_memory_limit = graph_memory_limit;
+    options.near_radius = kind == SolverKind::expansion ? near_radius : 0;
     return options;
   }
 
@@ -103,6 +105,8 @@ struct SolverChoice {
 /// Steps without a decrease that mean convergence with this solver on an energy with
 /// num_labels labels: one sweep of its moves (the solver's steps_per_sweep).
 std::size_t steps_per_sweep(SolverKind kind, int num_labels);
+/// The same for the chosen solver with its options (expansion with near moves: three sweeps).
+std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels);
 
 /// coarse_to_fine (see c2f/driver/coarse_to_fine.hpp) with the chosen solver, built fresh for
 /// this run. Throws std::invalid_argument when choice.validate() reports a problem.

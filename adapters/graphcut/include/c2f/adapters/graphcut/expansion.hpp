@@ -18,6 +18,8 @@
 // accepted move means no move found a lower energy, which for submodular moves means none
 // exists).
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -27,6 +29,7 @@
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/detail/expansion_problems.hpp"
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
+#include "c2f/adapters/graphcut/detail/near_moves.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
@@ -51,6 +54,15 @@ class ExpansionSolver {
     return static_cast<std::size_t>(num_labels);
   }
 
+  /// Steps without a decrease that mean convergence with these options: one sweep; with near
+  /// moves (MoveOptions::near_radius) three. Near and whole moves come in sweeps of L moves,
+  /// aligned with the label cycle's passes, and a near sweep without decrease is always
+  /// followed by a whole one; so 3L steps without decrease hold two complete sweeps, one of
+  /// them a whole sweep that found nothing.
+  [[nodiscard]] std::size_t sweep_steps(int num_labels) const noexcept {
+    return (options_.near_radius > 0 ? 3 : 1) * steps_per_sweep(num_labels);
+  }
+
   /// Starts from `start` (validated); fixes the move graphs' topology. Of
   /// options.graph_memory_limit, up to a quarter keeps every label's move problem (d, p) for
   /// patching, the rest recycled move graphs.
@@ -67,14 +79,45 @@ class ExpansionSolver {
     }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
+    if (options_.near_radius > 0) near_.bind(energy, options_.near_radius);
+    near_moves_done_ = 0;
+    whole_moves_left_ = 0;
   }
 
   /// One expansion move; returns the energy afterwards (never larger than before).
   double step() {
     if (state_.energy == nullptr)
       throw std::logic_error("ExpansionSolver::step: call bind() first");
-    const Labeling& labeling = state_.labeling;
     const Label alpha = cycle_.next();
+    const auto num_labels = static_cast<std::size_t>(state_.energy->num_labels());
+    if (options_.near_radius > 0 && whole_moves_left_ == 0) {
+      if (near_moves_done_ == 0) near_sweep_start_ = state_.value;
+      near_move(alpha);
+      // A sweep of near moves that lowers the energy by at most near_sweep_gain of it hands
+      // over to a sweep of whole moves.
+      if (++near_moves_done_ >= num_labels) {
+        near_moves_done_ = 0;
+        const double gain = near_sweep_start_ - state_.value;
+        if (gain <= options_.near_sweep_gain * std::max(1.0, std::abs(near_sweep_start_)))
+          whole_moves_left_ = num_labels;
+      }
+    } else {
+      whole_move(alpha);
+      if (whole_moves_left_ > 0) --whole_moves_left_;
+    }
+    if (last_.improved) problems_.log_changes(moved_);
+    return state_.value;
+  }
+
+  [[nodiscard]] double energy() const noexcept { return state_.value; }
+  [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
+  /// What the last step() did (all zero before the first step of a binding).
+  [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
+
+ private:
+  /// The move to alpha over every variable.
+  void whole_move(Label alpha) {
+    const Labeling& labeling = state_.labeling;
     std::span<const double> d, p;
     problems_.update(alpha, labeling, d, p);
     last_ = state_.solve_move(alpha, alpha, static_cast<std::size_t>(alpha), d, p);
@@ -84,23 +127,47 @@ class ExpansionSolver {
       state_.candidate[i] = to_alpha ? alpha : labeling[i];
       if (to_alpha) moved_.push_back(static_cast<VariableIndex>(i));
     }
-    const double value = state_.finish_move(last_, moved_.size(), options_.tolerance);
-    if (last_.improved) problems_.log_changes(moved_);
-    return value;
+    state_.finish_move(last_, moved_.size(), options_.tolerance);
   }
 
-  [[nodiscard]] double energy() const noexcept { return state_.value; }
-  [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
-  /// What the last step() did (all zero before the first step of a binding).
-  [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
+  /// The move to alpha over the variables near alpha (detail/near_moves.hpp), on a graph of
+  /// their own built for this move.
+  void near_move(Label alpha) {
+    near_.build(alpha, state_.labeling);
+    const auto free = near_.free();
+    last_ = {};
+    last_.alpha = last_.beta = alpha;
+    last_.near = true;
+    moved_.clear();
+    if (free.empty()) return;
+    near_solver_.bind(free.size(), near_.pairs());
+    near_out_.resize(free.size());
+    const BinaryMoveStats stats = near_solver_.solve(near_.d(), near_.p(), near_out_);
+    last_.unlabeled = stats.unlabeled;
+    last_.used_qpbo = stats.used_qpbo;
+    last_.flow_seconds = stats.flow_seconds;
+    state_.candidate = state_.labeling;
+    for (std::size_t k = 0; k < free.size(); ++k) {
+      if (near_out_[k] != MoveLabel::one) continue;
+      state_.candidate[free[k]] = alpha;
+      moved_.push_back(free[k]);
+    }
+    state_.finish_move(last_, moved_.size(), options_.tolerance);
+  }
 
- private:
   ExpansionOptions options_;
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change
   MoveCycle<Label> cycle_;
   MoveStep last_;
+  // Near moves (options_.near_radius > 0).
+  detail::NearMoves near_;
+  BinaryMoveSolver<Backend> near_solver_;
+  std::vector<MoveLabel> near_out_;
+  std::size_t near_moves_done_ = 0;   // near moves in the current near sweep
+  double near_sweep_start_ = 0.0;     // the energy when it began
+  std::size_t whole_moves_left_ = 0;  // whole moves left in the current whole sweep
 };
 
 static_assert(AnytimeSolver<ExpansionSolver<>, PairwiseEnergy>);

@@ -1,0 +1,122 @@
+#pragma once
+// Internal to ExpansionSolver: the binary problem of an expansion move restricted to the
+// variables near its label (MoveOptions::near_radius). Every other variable keeps its label, so
+// its edges to free variables become unary terms of those variables, and the restricted
+// problem's minimum is the minimum of the whole move's problem over the labelings that keep the
+// held variables: an exact move on a smaller graph.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/core/edge_incidence.hpp"
+#include "c2f/core/labeling.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f::detail {
+
+/// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
+/// lies within `radius` edges of a variable labelled alpha or of a variable whose cheapest
+/// unary label is alpha (itself included). The problem has binary_move.hpp's form over them,
+/// with the free variables numbered in the order of `free()`.
+class NearMoves {
+ public:
+  /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences.
+  void bind(const PairwiseEnergy& energy, int radius) {
+    energy_ = &energy;
+    radius_ = radius;
+    incidence_ = EdgeIncidence(energy);
+    const std::size_t n = energy.num_variables();
+    cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
+    for (std::size_t i = 0; i < n; ++i) {
+      Label best = 0;
+      for (Label l = 1; l < energy.num_labels(); ++l)
+        if (energy.unary(i, l) < energy.unary(i, best)) best = l;
+      cheapest_[static_cast<std::size_t>(best)].push_back(static_cast<VariableIndex>(i));
+    }
+    local_.assign(n, kHeld);
+    depth_.assign(n, kUnreached);
+  }
+
+  /// Builds the restricted problem of the move to alpha from x.
+  void build(Label alpha, std::span<const Label> x) {
+    const PairwiseEnergy& energy = *energy_;
+    const auto edges = energy.edges();
+    for (const VariableIndex v : free_) local_[v] = kHeld;
+    for (const VariableIndex v : reached_) depth_[v] = kUnreached;
+    free_.clear();
+    reached_.clear();
+    // Breadth-first from the variables labelled alpha and those whose cheapest label it is.
+    auto reach = [&](VariableIndex v, int depth) {
+      if (depth_[v] != kUnreached) return;
+      depth_[v] = depth;
+      reached_.push_back(v);
+      if (x[v] != alpha) {
+        local_[v] = static_cast<std::uint32_t>(free_.size());
+        free_.push_back(v);
+      }
+    };
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (x[i] == alpha) reach(static_cast<VariableIndex>(i), 0);
+    for (const VariableIndex v : cheapest_[static_cast<std::size_t>(alpha)]) reach(v, 0);
+    for (std::size_t k = 0; k < reached_.size(); ++k) {
+      const VariableIndex v = reached_[k];
+      if (depth_[v] >= radius_) continue;
+      for (const Incidence& inc : incidence_.of(v)) reach(inc.other, depth_[v] + 1);
+    }
+    // The problem: unaries, edges between free variables as pairs, edges to held variables
+    // folded into the free end's unary.
+    d_.assign(free_.size(), 0.0);
+    p_.clear();
+    pairs_.clear();
+    for (std::size_t k = 0; k < free_.size(); ++k) {
+      const VariableIndex v = free_[k];
+      d_[k] += energy.unary(v, alpha) - energy.unary(v, x[v]);
+      for (const Incidence& inc : incidence_.of(v)) {
+        const Edge& edge = edges[inc.edge];
+        const VariableIndex other = inc.other;
+        if (local_[other] == kHeld) {
+          d_[k] += inc.is_first ? energy.pairwise_cost(edge, alpha, x[other]) -
+                                      energy.pairwise_cost(edge, x[v], x[other])
+                                : energy.pairwise_cost(edge, x[other], alpha) -
+                                      energy.pairwise_cost(edge, x[other], x[v]);
+          continue;
+        }
+        if (!inc.is_first) continue;  // a pair between free variables, added from its u side
+        const Label xu = x[edge.u];
+        const Label xv = x[edge.v];
+        const auto u = static_cast<FlowNode>(local_[edge.u]);
+        const auto w = static_cast<FlowNode>(local_[edge.v]);
+        p_.push_back(0.0);
+        pairs_.push_back({u, w});
+        add_binary_term(d_, p_, p_.size() - 1, u, w, energy.pairwise_cost(edge, xu, xv),
+                        energy.pairwise_cost(edge, xu, alpha),
+                        energy.pairwise_cost(edge, alpha, xv),
+                        energy.pairwise_cost(edge, alpha, alpha));
+      }
+    }
+  }
+
+  [[nodiscard]] std::span<const VariableIndex> free() const noexcept { return free_; }
+  [[nodiscard]] std::span<const FlowEdge> pairs() const noexcept { return pairs_; }
+  [[nodiscard]] std::span<const double> d() const noexcept { return d_; }
+  [[nodiscard]] std::span<const double> p() const noexcept { return p_; }
+
+ private:
+  static constexpr std::uint32_t kHeld = 0xffffffffu;
+  static constexpr int kUnreached = -1;
+
+  const PairwiseEnergy* energy_ = nullptr;
+  int radius_ = 0;
+  EdgeIncidence incidence_;
+  std::vector<std::vector<VariableIndex>> cheapest_;  // per label: variables it is cheapest for
+  std::vector<std::uint32_t> local_;                  // per variable: index in free_, or kHeld
+  std::vector<int> depth_;                            // per variable: BFS depth, or kUnreached
+  std::vector<VariableIndex> free_, reached_;
+  std::vector<double> d_, p_;
+  std::vector<FlowEdge> pairs_;
+};
+
+}  // namespace c2f::detail

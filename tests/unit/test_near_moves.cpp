@@ -1,0 +1,126 @@
+// Near moves (MoveOptions::near_radius): the restricted move problem is exact, frees the
+// variables it promises, and expansion with near moves converges to labelings no whole
+// expansion move improves.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <set>
+#include <vector>
+
+#include "c2f/adapters/graphcut/detail/near_moves.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "support/backends.hpp"
+#include "support/random_models.hpp"
+#include "support/tiny_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+TEST_CASE("a near move's problem is the whole energy over the labelings that keep held variables",
+          "[expansion][near]") {
+  Rng rng(77);
+  for (int trial = 0; trial < 120; ++trial) {
+    const int num_labels = 2 + trial % 4;
+    const PairwiseEnergy energy = random_grid_energy(rng, 4, 3, num_labels);
+    const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
+    const Label alpha = static_cast<Label>(trial % num_labels);
+    detail::NearMoves near;
+    near.bind(energy, 1 + trial % 3);
+    near.build(alpha, x);
+    const auto free = near.free();
+    const auto pairs = near.pairs();
+    REQUIRE(free.size() <= 12);
+    const double base = energy.evaluate(x);
+    // Every assignment b of the free variables: the problem's value plus E(x) is the energy of
+    // x with the variables where b = 1 moved to alpha.
+    for (std::uint32_t b = 0; b < (1u << free.size()); ++b) {
+      Labeling moved = x;
+      double value = base;
+      for (std::size_t k = 0; k < free.size(); ++k) {
+        const bool one = (b >> k) & 1u;
+        if (one) moved[free[k]] = alpha;
+        value += one ? near.d()[k] : 0.0;
+      }
+      for (std::size_t e = 0; e < pairs.size(); ++e) {
+        const bool u_one = (b >> pairs[e].from) & 1u;
+        const bool v_one = (b >> pairs[e].to) & 1u;
+        if (!u_one && v_one) value += near.p()[e];
+      }
+      INFO("trial " << trial << ", assignment " << b);
+      CHECK(close_relative(value, energy.evaluate(moved), 1e-9));
+    }
+  }
+}
+
+TEST_CASE("a near move frees exactly the variables near its label", "[expansion][near]") {
+  // A chain of 9 variables, 3 labels; label 2 is cheapest only at variable 7.
+  const std::size_t n = 9;
+  std::vector<double> unaries(n * 3, 1.0);
+  unaries[7 * 3 + 2] = 0.0;
+  std::vector<Edge> edges;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    edges.push_back({static_cast<VariableIndex>(i), static_cast<VariableIndex>(i + 1), 1.0, 0});
+  const PairwiseEnergy energy(n, 3, std::move(unaries), {PairwiseTerm::potts()}, std::move(edges));
+  //                   0  1  2  3  4  5  6  7  8
+  const Labeling x = {0, 0, 2, 0, 1, 1, 1, 1, 1};
+  detail::NearMoves near;
+  near.bind(energy, 1);
+  near.build(2, x);
+  // Within one edge of variable 2 (labelled 2) or of variable 7 (cheapest 2), not labelled 2.
+  std::set<VariableIndex> expected = {1, 3, 6, 7, 8};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  near.bind(energy, 2);
+  near.build(2, x);
+  expected = {0, 1, 3, 4, 5, 6, 7, 8};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+}
+
+TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole move improves",
+                   "[expansion][near][brute-force]", C2F_MAXFLOW_BACKENDS) {
+  Rng rng(4242);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int num_labels = 2 + trial % 4;
+    const PairwiseEnergy energy =
+        trial % 2 == 0
+            ? random_grid_energy(rng, 6, 5, num_labels)
+            : tiny_model(rng, trial % 3, num_labels,
+                         test_terms(rng, num_labels)[static_cast<std::size_t>(trial) % 4]);
+    ExpansionOptions options;
+    options.near_radius = 1 + trial % 3;
+    options.near_sweep_gain = trial % 3 == 0 ? 0.0 : 1e-3;
+    options.order = trial % 4 == 1 ? VisitOrder::random : VisitOrder::sequential;
+    options.seed = static_cast<std::uint64_t>(trial);
+    ExpansionSolver<TestType> solver(options);
+    REQUIRE(solver.sweep_steps(num_labels) == 3 * static_cast<std::size_t>(num_labels));
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
+    double previous = solver.energy();
+    std::size_t quiet = 0, near_steps = 0;
+    for (int step = 0; step < 3000 && quiet < solver.sweep_steps(num_labels); ++step) {
+      const double now = solver.step();
+      near_steps += solver.last_step().near;
+      CHECK(now <= previous);
+      CHECK(now == energy.evaluate(solver.labeling()));
+      quiet = now < previous ? 0 : quiet + 1;
+      previous = now;
+    }
+    REQUIRE(quiet == solver.sweep_steps(num_labels));
+    CHECK(near_steps >= static_cast<std::size_t>(num_labels));
+    // Converged: one sweep of whole moves from the result finds nothing lower.
+    ExpansionSolver<TestType> whole;
+    whole.bind(energy, solver.labeling());
+    for (int step = 0; step < num_labels; ++step) CHECK(whole.step() == previous);
+    if (energy.num_variables() <= 10) CHECK(previous >= brute_force_minimum(energy).energy - 1e-9);
+  }
+}
+
+TEST_CASE("near moves are validated and belong to expansion", "[expansion][near][validation]") {
+  ExpansionOptions options;
+  options.near_radius = -1;
+  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("near_radius"));
+  options.near_radius = 2;
+  options.near_sweep_gain = -1.0;
+  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("near_sweep_gain"));
+  CHECK(ExpansionSolver<>().sweep_steps(7) == 7);
+}
