@@ -5,6 +5,7 @@
 // problem's minimum is the minimum of the whole move's problem over the labelings that keep the
 // held variables: an exact move on a smaller graph.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -20,7 +21,7 @@ namespace c2f::detail {
 /// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
 /// lies within `radius` edges of a variable labelled alpha or of a variable whose cheapest
 /// unary label is alpha (itself included). The problem has binary_move.hpp's form over them,
-/// with the free variables numbered in the order of `free()`.
+/// with the free variables numbered in the order of `free()` (ascending).
 class NearMoves {
  public:
   /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences.
@@ -53,10 +54,7 @@ class NearMoves {
       if (depth_[v] != kUnreached) return;
       depth_[v] = depth;
       reached_.push_back(v);
-      if (x[v] != alpha) {
-        local_[v] = static_cast<std::uint32_t>(free_.size());
-        free_.push_back(v);
-      }
+      if (x[v] != alpha) free_.push_back(v);
     };
     for (std::size_t i = 0; i < x.size(); ++i)
       if (x[i] == alpha) reach(static_cast<VariableIndex>(i), 0);
@@ -66,6 +64,9 @@ class NearMoves {
       if (depth_[v] >= radius_) continue;
       for (const Incidence& inc : incidence_.of(v)) reach(inc.other, depth_[v] + 1);
     }
+    // In index order, the unary table is read nearly sequentially.
+    std::sort(free_.begin(), free_.end());
+    for (std::size_t k = 0; k < free_.size(); ++k) local_[free_[k]] = static_cast<std::uint32_t>(k);
     // The problem: unaries, edges between free variables as pairs, edges to held variables
     // folded into the free end's unary.
     d_.assign(free_.size(), 0.0);
