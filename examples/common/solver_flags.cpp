@@ -58,8 +58,8 @@ void RunRuleFlags::declare(ToolOptions& options) {
             "down)")
       .integer("final-plateau", &final_plateau, {0, kMaxSteps},
                "stop after this many steps without decrease on the original problem (0: one "
-               "sweep: labels moves for expansion, label pairs for swap, 4 iterations for lbp, 1 "
-               "for icm)");
+               "sweep: labels moves for expansion, three times that with --near-radius, label "
+               "pairs for swap, 4 iterations for lbp, 1 for icm)");
 }
 
 Options RunRuleFlags::options(const SolverChoice& choice, int num_labels) const {

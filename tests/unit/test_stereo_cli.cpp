@@ -11,6 +11,7 @@
 #include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
+#include <vector>
 
 #include "support/run_tool.hpp"
 #include "support/synthetic_stereo.hpp"
@@ -38,6 +39,36 @@ TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]"
                            "trace.csv", "summary.txt", "partition-level0.png"}) {
     CHECK(std::filesystem::exists(dir / "out" / file));
   }
+}
+
+TEST_CASE("c2f-stereo with near moves descends and stops after three quiet sweeps",
+          "[stereo][cli][near]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-near";
+  std::filesystem::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 7);
+  const int labels = 8;
+  const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+                     (dir / "out").string() + " --labels " + std::to_string(labels) +
+                     " --schedule flat --near-radius 2 -q");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // trace.csv: time_s,level,step,energy,num_vars
+  std::ifstream trace(dir / "out" / "trace.csv");
+  std::string line;
+  std::getline(trace, line);
+  std::vector<double> energies;
+  while (std::getline(trace, line)) {
+    std::size_t at = 0;
+    for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
+    energies.push_back(std::stod(line.substr(at)));
+  }
+  REQUIRE(energies.size() > 3 * labels);
+  CHECK(std::is_sorted(energies.rbegin(), energies.rend()));  // never increases
+  CHECK(energies.back() < energies.front());
+  // The default final plateau with near moves is three sweeps: the run ends after 3L steps
+  // without decrease, not one sweep.
+  const auto quiet = std::count(energies.begin(), energies.end(), energies.back()) - 1;
+  CHECK(quiet == 3 * labels);
 }
 
 TEST_CASE("c2f-stereo gives the same disparities on every max-flow backend", "[stereo][cli]") {
