@@ -2,7 +2,9 @@
 // Alpha-expansion (Boykov, Veksler and Zabih) as an AnytimeSolver for PairwiseEnergy, with
 // QPBO for non-submodular moves (as OpenGM's alpha-expansion fusion, which the paper used).
 //
-// One step() = one expansion move for one label alpha: every variable may switch to alpha.
+// One step() = one expansion move for one label alpha: every variable may switch to alpha
+// (with MoveOptions::near_radius, only the variables near alpha, in sweeps that alternate with
+// whole sweeps: see there and detail/near_moves.hpp).
 // Labels are cycled in the configured order, restarting at the first label on every bind()
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
 // level handed a labeling, or on the original problem after coarse levels, the moves that
