@@ -9,6 +9,7 @@
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "support/backends.hpp"
+#include "support/descent.hpp"
 #include "support/random_models.hpp"
 #include "support/tiny_models.hpp"
 
@@ -19,22 +20,6 @@ namespace {
 
 constexpr VisitOrder kOrders[] = {VisitOrder::sequential, VisitOrder::random,
                                   VisitOrder::frequency};
-
-/// Steps until `sweep` consecutive steps change nothing; checks the energy never increases
-/// and always equals evaluate() of the labeling. Returns the final energy.
-template <class Solver>
-double run_to_convergence(Solver& solver, const PairwiseEnergy& energy, std::size_t sweep) {
-  double previous = solver.energy();
-  std::size_t quiet = 0;
-  for (int step = 0; step < 2000 && quiet < sweep; ++step) {
-    const double now = solver.step();
-    CHECK(now <= previous);
-    CHECK(now == energy.evaluate(solver.labeling()));
-    quiet = now < previous ? 0 : quiet + 1;
-    previous = now;
-  }
-  return previous;
-}
 
 }  // namespace
 
@@ -53,16 +38,9 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
     ExpansionSolver<TestType> solver(
         ExpansionOptions{kOrders[trial % 3], static_cast<std::uint64_t>(trial), 0.0});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
-    double previous = solver.energy();
-    std::size_t quiet = 0;
-    for (int step = 0; step < 500 && quiet < solver.steps_per_sweep(energy.num_labels()); ++step) {
-      const double now = solver.step();
-      qpbo_moves += solver.last_step().used_qpbo;
-      CHECK(now <= previous);
-      CHECK(now == energy.evaluate(solver.labeling()));
-      quiet = now < previous ? 0 : quiet + 1;
-      previous = now;
-    }
+    double previous = 0.0;
+    descend(solver, energy, solver.steps_per_sweep(energy.num_labels()), 500, previous,
+            [&](const auto& s) { qpbo_moves += s.last_step().used_qpbo; });
     const double optimum = brute_force_minimum(energy).energy;
     INFO("trial " << trial << ", term " << to_string(term.kind()));
     CHECK(previous >= optimum - 1e-9);

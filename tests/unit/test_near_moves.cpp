@@ -12,6 +12,7 @@
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "support/backends.hpp"
+#include "support/descent.hpp"
 #include "support/random_models.hpp"
 #include "support/tiny_models.hpp"
 
@@ -95,16 +96,11 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
     ExpansionSolver<TestType> solver(options);
     REQUIRE(solver.sweep_steps(num_labels) == 3 * static_cast<std::size_t>(num_labels));
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
-    double previous = solver.energy();
-    std::size_t quiet = 0, near_steps = 0;
-    for (int step = 0; step < 3000 && quiet < solver.sweep_steps(num_labels); ++step) {
-      const double now = solver.step();
-      near_steps += solver.last_step().near;
-      CHECK(now <= previous);
-      CHECK(now == energy.evaluate(solver.labeling()));
-      quiet = now < previous ? 0 : quiet + 1;
-      previous = now;
-    }
+    double previous = 0.0;
+    std::size_t near_steps = 0;
+    const std::size_t quiet =
+        descend(solver, energy, solver.sweep_steps(num_labels), 3000, previous,
+                [&](const auto& s) { near_steps += s.last_step().near; });
     REQUIRE(quiet == solver.sweep_steps(num_labels));
     CHECK(near_steps >= static_cast<std::size_t>(num_labels));
     // Converged: one sweep of whole moves from the result finds nothing lower.
