@@ -12,8 +12,8 @@
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
-//       original problem, in both runs, ends after a whole sweep without decrease. Traces go to
-//       OUT/SCENE-{flat,c2f}.csv.
+//       original problem, in both runs, ends after a whole sweep without decrease (three
+//       sweeps with near moves). Traces go to OUT/SCENE-{flat,c2f}.csv.
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
@@ -104,7 +104,7 @@ Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::str
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
-  options.plateau_steps_at_original =  // a whole sweep without decrease
+  options.plateau_steps_at_original =  // a whole sweep without decrease (near moves: three)
       static_cast<int>(solver.sweep_steps(energy.num_labels()));
   options.time_limit_seconds = settings.time_limit;
   Run run;

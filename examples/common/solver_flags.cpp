@@ -20,8 +20,8 @@ void SolverFlags::declare(ToolOptions& options) {
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "
-               "cost it is, with a sweep of whole moves whenever a sweep of such moves lowers "
-               "nothing (convergence: three sweeps without decrease)")
+               "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
+               "most 1e-4 of the energy (convergence: three sweeps without decrease)")
       .text("label-order", &label_order_,
             "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
             "random, or frequency (labels of most variables first, counted when each level "
