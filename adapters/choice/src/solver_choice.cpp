@@ -50,9 +50,9 @@ std::string SolverChoice::validate() const {
   if (kind == SolverKind::icm && order == VisitOrder::frequency) {
     return "the order 'frequency' orders labels (expansion, swap); icm visits variables";
   }
-  if (near_radius < 0) return "the near-move radius must be >= 0";
-  if (near_radius > 0 && kind != SolverKind::expansion)
+  if (near_radius != 0 && kind != SolverKind::expansion)
     return "near moves are expansion moves; solver '" + std::string(to_string(kind)) + "' has none";
+  if (kind == SolverKind::expansion) return move_options().validate();
   return {};
 }
 
