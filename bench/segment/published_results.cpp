@@ -114,8 +114,7 @@ int main(int argc, char** argv) {
               "slope of F after the breakpoint");
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;
-    const std::filesystem::path set =
-        std::filesystem::path(command.data) / "coopcuts/runMultilabel";
+    const std::filesystem::path set = bench::coopcuts_folder(command.data, "multilabel");
     const std::vector<std::string> names = images_with_results(set);
     std::printf(
         "| image | published labeling | cooperative-cut energy | Potts energy | pixel error | "

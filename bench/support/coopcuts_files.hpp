@@ -9,6 +9,15 @@
 
 namespace c2f::bench {
 
+/// The folder of a coopCuts SET under the data root: coopcuts/runMultilabel (multilabel) or
+/// coopcuts/runBinary/dataset (binary). Throws std::invalid_argument for another set.
+inline std::filesystem::path coopcuts_folder(const std::filesystem::path& data,
+                                             const std::string& set) {
+  if (set == "multilabel") return data / "coopcuts/runMultilabel";
+  if (set == "binary") return data / "coopcuts/runBinary/dataset";
+  throw std::invalid_argument("SET must be multilabel or binary, got '" + set + "'");
+}
+
 /// The files of image `name` of a coopCuts SET under the data root, with the set's seed
 /// convention: multilabel (coopcuts/runMultilabel: images/NAME.bmp, seeds/NAME.png,
 /// labelings/NAME.bmp; labels from the GT) or binary (coopcuts/runBinary/dataset:
@@ -16,17 +25,13 @@ namespace c2f::bench {
 /// another set.
 inline vision::SegmentationFiles coopcuts_files(const std::filesystem::path& data,
                                                 const std::string& set, const std::string& name) {
+  const std::filesystem::path dir = coopcuts_folder(data, set);
   if (set == "multilabel") {
-    const auto dir = data / "coopcuts/runMultilabel";
     return {(dir / "images" / (name + ".bmp")).string(), (dir / "seeds" / (name + ".png")).string(),
             (dir / "labelings" / (name + ".bmp")).string(), vision::SeedConvention::labels_from_gt};
   }
-  if (set == "binary") {
-    const auto dir = data / "coopcuts/runBinary/dataset";
-    return {(dir / "images" / (name + ".jpg")).string(), (dir / "seeds" / (name + ".png")).string(),
-            (dir / "groundtruth" / (name + ".png")).string(), vision::SeedConvention::binary};
-  }
-  throw std::invalid_argument("SET must be multilabel or binary, got '" + set + "'");
+  return {(dir / "images" / (name + ".jpg")).string(), (dir / "seeds" / (name + ".png")).string(),
+          (dir / "groundtruth" / (name + ".png")).string(), vision::SeedConvention::binary};
 }
 
 }  // namespace c2f::bench
