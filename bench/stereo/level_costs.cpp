@@ -16,6 +16,7 @@
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "c2f/vision/superpixels.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -62,10 +63,12 @@ int main(int argc, char** argv) {
     const GridShape shape{static_cast<std::size_t>(scene.left.cols),
                           static_cast<std::size_t>(scene.left.rows)};
     TsgoOptions tsgo;
-    const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
+    const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
+    const PairwiseEnergy& energy = problem.energy;
     std::printf("%-14s %9s %9s %6s %10s %9s %7s %12s %12s\n", "level", "variables", "edges",
                 "degree", "ms/move", "flow", "qpbo", "E start", "E sweep");
-    ScheduleProvider provider(parse_stereo_schedule(schedule_text), shape);
+    ScheduleProvider provider(parse_stereo_schedule(schedule_text), shape,
+                              slic_source(problem.guide));
     while (auto partition = provider.next(energy)) {
       const PairwiseEnergy reduced = reduce(energy, *partition);
       report(provider.reports().back().level.c_str(), reduced,

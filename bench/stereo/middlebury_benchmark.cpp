@@ -45,6 +45,7 @@
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "c2f/vision/superpixels.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "tool_options.hpp"
@@ -94,9 +95,11 @@ struct Settings {
 };
 
 template <class Backend>
-Run solve(const PairwiseEnergy& energy, const StereoScene& scene, const std::string& schedule,
+Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::string& schedule,
           int near_radius, const Settings& settings, const std::string& trace_path) {
-  ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape());
+  const PairwiseEnergy& energy = problem.energy;
+  ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape(),
+                            slic_source(problem.guide));
   ExpansionOptions expansion;
   expansion.order = settings.label_order;
   expansion.near_radius = near_radius;
@@ -128,13 +131,13 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   const GridShape shape = scene.shape();
   TsgoOptions tsgo;
   tsgo.labels = settings.labels;
-  const PairwiseEnergy energy = tsgo_energy(tsgo_cost(scene.left, scene.right, tsgo), tsgo);
+  const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
   auto solve_with = [&](const std::string& schedule, int near_radius, const std::string& trace) {
     return with_maxflow_backend(settings.maxflow, [&]<class Backend>(Backend) {
-      return solve<Backend>(energy, scene, schedule, near_radius, settings,
+      return solve<Backend>(problem, scene, schedule, near_radius, settings,
                             (output.staging() / trace).string());
     });
   };

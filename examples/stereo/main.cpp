@@ -30,19 +30,16 @@ StereoScene load_input(const examples::StereoCommand& command) {
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
 /// the same for flat and coarse-to-fine runs.
 struct StereoProblem {
-  PairwiseEnergy energy;
-  cv::Mat guide;  ///< the (equalised) left image: SLIC levels segment it
+  TsgoProblem tsgo;  ///< the energy and the image its SLIC levels segment
   double seconds;
 };
 
 StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, bool quiet) {
   const auto start = Clock::now();
-  TsgoCost cost = tsgo_cost(scene.left, scene.right, tsgo);
-  cv::Mat guide = cost.left.clone();
-  PairwiseEnergy energy = tsgo_energy(std::move(cost), tsgo);
+  TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!quiet) std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s\n", seconds);
-  return {std::move(energy), std::move(guide), seconds};
+  return {std::move(problem), seconds};
 }
 
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
@@ -103,12 +100,12 @@ int main(int argc, char** argv) {
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!command.export_uai.empty())
-      write_uai_file(problem.energy, record.stage(command.export_uai).string());
+      write_uai_file(problem.tsgo.energy, record.stage(command.export_uai).string());
 
-    ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.guide));
+    ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);
     const Summary summary = coarse_to_fine(
-        problem.energy, levels, command.solver, examples::run_options(command),
+        problem.tsgo.energy, levels, command.solver, examples::run_options(command),
         record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
                         interrupts, {std::ref(partitions)}));
 

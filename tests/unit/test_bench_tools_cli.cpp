@@ -137,3 +137,33 @@ TEST_CASE("c2f-bench-published recomputes the published pixel errors and descend
     CHECK(std::stod(cells[5]) <= std::stod(cells[2]));
   }
 }
+
+TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c2f-stereo does",
+          "[bench][cli][stereo][data]") {
+  const std::filesystem::path data = C2F_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data / "scenes.csv")) {
+    WARN("no shared Middlebury data at " << data << ": skipped");
+    return;
+  }
+  const std::string bench = C2F_BENCH_DIR;
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-bench-slic";
+  std::filesystem::remove_all(out);
+  // Once, a slic:S level was refused here ("no superpixel source") although c2f-stereo ran it.
+  const auto run = c2f::test::run_tool(
+      bench + "/c2f-bench-stereo",
+      "run Teddy --schedule \"slic:8 flat\" --downscale 3 --labels 28 --header --out " +
+          (out / "rows").string() + " --data " + data.string());
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK(std::filesystem::exists(out / "rows" / "Teddy-c2f.csv"));
+  // The C2F row ends on the original problem, converged like the flat one.
+  CHECK_THAT(run.output, Catch::Contains("Teddy\t") && Catch::EndsWith("converged\tconverged\n"));
+
+  const auto levels = c2f::test::run_tool(
+      bench + "/c2f-bench-levels", "Teddy --schedule \"slic:16 slic:8\" --data " + data.string());
+  INFO(levels.output);
+  REQUIRE(levels.exit_code == 0);
+  CHECK_THAT(levels.output, Catch::Contains("\nslic:16 ") && Catch::Contains("\nslic:8 ") &&
+                                Catch::Contains("\noriginal "));
+  std::filesystem::remove_all(out);
+}

@@ -10,6 +10,7 @@
 #include "c2f/vision/stereo/evaluation.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
+#include "c2f/vision/superpixels.hpp"
 #include "support/synthetic_stereo.hpp"
 
 using namespace c2f;
@@ -46,4 +47,30 @@ TEST_CASE("TSGO recovers a synthetic disparity map, flat and coarse to fine",
   // but not a much worse one (stated tolerance: 1% of the flat energy).
   CHECK(c2f_summary.energy <= flat_summary.energy * 1.01);
   CHECK(c2f_summary.energy == energy.evaluate(c2f_summary.labeling));
+}
+
+TEST_CASE("tsgo_problem is both TSGO steps plus the image that superpixel levels segment",
+          "[stereo][pipeline]") {
+  const test::SyntheticPair pair = test::synthetic_pair(96, 64, 3, 9, 42);
+  TsgoOptions tsgo;
+  tsgo.labels = 16;
+  const TsgoProblem problem = tsgo_problem(pair.left, pair.right, tsgo);
+  const PairwiseEnergy steps = tsgo_energy(tsgo_cost(pair.left, pair.right, tsgo), tsgo);
+  REQUIRE(problem.energy.num_variables() == steps.num_variables());
+  REQUIRE(problem.energy.num_labels() == steps.num_labels());
+  const Labeling argmin = initial_labeling(steps, InitialLabeling::unary_argmin);
+  CHECK(problem.energy.evaluate(argmin) == steps.evaluate(argmin));
+  CHECK(problem.guide.size() == pair.left.size());
+
+  const GridShape shape{96, 64};
+  ScheduleProvider slic(vision::parse_stereo_schedule("slic:8 flat"), shape,
+                        slic_source(problem.guide));
+  ExpansionSolver<> solver;
+  Options options;
+  options.plateau_steps = {4};
+  options.plateau_steps_at_original = tsgo.labels;
+  const Summary summary = coarse_to_fine(problem.energy, slic, solver, options);
+  REQUIRE(summary.levels.size() == 2);
+  CHECK(summary.levels.front().num_variables < problem.energy.num_variables());
+  CHECK(summary.energy == problem.energy.evaluate(summary.labeling));
 }

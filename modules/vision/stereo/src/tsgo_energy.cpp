@@ -81,4 +81,10 @@ PairwiseEnergy tsgo_energy(TsgoCost cost, const TsgoOptions& options) {
       [&](VariableIndex u, VariableIndex v) { return tsgo_edge_weight(image, u, v); });
 }
 
+TsgoProblem tsgo_problem(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options) {
+  TsgoCost cost = tsgo_cost(left, right, options);
+  cv::Mat guide = cost.left.clone();
+  return {tsgo_energy(std::move(cost), options), std::move(guide)};
+}
+
 }  // namespace c2f::vision

@@ -59,4 +59,15 @@ TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions&
 /// L1 colour difference classes of the left image (tsgo_edge_weight). Consumes the volume.
 PairwiseEnergy tsgo_energy(TsgoCost cost, const TsgoOptions& options = {});
 
+/// Both steps for a pair of views, keeping the image a schedule's slic:S levels segment.
+struct TsgoProblem {
+  PairwiseEnergy energy;
+  cv::Mat guide;  ///< the (equalised) left image of TsgoCost: give it to slic_source
+};
+
+/// tsgo_energy(tsgo_cost(left, right, options), options) and that cost's left image. Throws as
+/// tsgo_cost does.
+TsgoProblem tsgo_problem(const cv::Mat& left, const cv::Mat& right,
+                         const TsgoOptions& options = {});
+
 }  // namespace c2f::vision
