@@ -15,17 +15,16 @@
 // that produced a labeling, that descent should barely move it; `--lambda`, `--theta` and
 // `--alpha` change the model to test other parameters.
 
-#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "c2f/c2f.hpp"
 #include "support/coopcuts_files.hpp"
+#include "support/published_labelings.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -40,40 +39,6 @@ struct PublishedCommand {
   CoopParameters parameters;
 };
 
-/// Majorise-minimise descent from `start` until a step no longer lowers the energy.
-Labeling descend_from(const CoopEnergy& energy, const Labeling& start) {
-  CoopSolverOptions options;
-  options.strategy = AuxStrategy::mm;
-  CoopSolver solver(options);
-  solver.bind(energy, start);
-  double before = solver.energy();
-  while (solver.step() < before) before = solver.energy();
-  return Labeling(solver.labeling().begin(), solver.labeling().end());
-}
-
-/// The images of the multi-label set that have both published results, in name order.
-std::vector<std::string> images_with_results(const std::filesystem::path& set) {
-  std::error_code error;
-  for (const char* folder : {"seeds", "results"}) {
-    if (!std::filesystem::is_directory(set / folder, error))
-      throw std::invalid_argument("--data: no folder '" + (set / folder).string() + "'");
-  }
-  const auto is_file = [&](const std::filesystem::path& path) {
-    return std::filesystem::is_regular_file(path, error);
-  };
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(set / "seeds")) {
-    const std::string name = entry.path().stem().string();
-    const bool has_results = is_file(set / "results" / (name + "_alphaExpResult.png")) &&
-                             is_file(set / "results" / (name + "_coopResult.png"));
-    if (entry.path().extension() == ".png" && has_results) names.push_back(name);
-  }
-  std::sort(names.begin(), names.end());
-  if (names.empty())
-    throw std::invalid_argument("--data: no image of '" + set.string() + "' has published results");
-  return names;
-}
-
 void print_scores(const std::filesystem::path& set, const std::string& name,
                   const PublishedCommand& command) {
   const SegmentationScene scene =
@@ -81,9 +46,9 @@ void print_scores(const std::filesystem::path& set, const std::string& name,
   const SegmentationProblem problem =
       segmentation_problem(scene, command.parameters, command.classes, command.seeds);
   for (const char* method : {"alphaExpResult", "coopResult"}) {
-    const std::string path = (set / "results" / (name + "_" + method + ".png")).string();
-    const Labeling labeling = read_label_image(path, scene);
-    const Labeling descended = descend_from(problem.coop, labeling);
+    const Labeling labeling =
+        read_label_image(bench::published_result_path(set, name, method), scene);
+    const Labeling descended = bench::descend_from(problem.coop, labeling);
     std::printf("| %s | %s | %.4f | %.4f | %.3f%% | %.4f | %.3f%% |\n", name.c_str(), method,
                 problem.coop.evaluate(labeling), problem.potts.evaluate(labeling),
                 100.0 * pixel_error(labeling, scene.truth), problem.coop.evaluate(descended),
@@ -115,7 +80,7 @@ int main(int argc, char** argv) {
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;
     const std::filesystem::path set = bench::coopcuts_folder(command.data, "multilabel");
-    const std::vector<std::string> names = images_with_results(set);
+    const std::vector<std::string> names = bench::images_with_results(set);
     std::printf(
         "| image | published labeling | cooperative-cut energy | Potts energy | pixel error | "
         "energy after mm descent from it | its pixel error |\n"

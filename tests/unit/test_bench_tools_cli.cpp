@@ -71,6 +71,10 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-published", "--data /nonexistent",
        "--data: no folder '/nonexistent/coopcuts/runMultilabel/seeds'"},
       {"c2f-bench-published", "more", "unexpected argument 'more'"},
+      {"c2f-bench-published-fit", "--lambdas 1,,2", "--lambdas: expected a finite number"},
+      {"c2f-bench-published-fit", "--thetas 0.001,", "--thetas: expected a comma-separated list"},
+      {"c2f-bench-published-fit", "--alphas 1", "--alphas: expected a finite number in [0, 1)"},
+      {"c2f-bench-published-fit", "--top -1", "--top: expected an integer in [0, 1000]"},
       {"c2f-plot", "-o plot.png", "need -o PLOT.png and at least one NAME=TRACE.csv"},
       {"c2f-plot", "-o plot.png =trace.csv", "unexpected argument '=trace.csv'"},
       {"c2f-plot", "-o plot.png --column", "the required argument for option '--column'"},
@@ -136,6 +140,58 @@ TEST_CASE("c2f-bench-published recomputes the published pixel errors and descend
     // The descent starts from the published labeling and never raises its energy.
     CHECK(std::stod(cells[5]) <= std::stod(cells[2]));
   }
+}
+
+TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-published reports",
+          "[bench][cli][segmentation][data]") {
+  const std::filesystem::path data = C2F_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data / "coopcuts/runMultilabel/results")) {
+    WARN("no shared coopCuts data at " << data << ": skipped");
+    return;
+  }
+  const std::string bench = C2F_BENCH_DIR;
+  const auto scores = c2f::test::run_tool(bench + "/c2f-bench-published",
+                                          "--data " + data.string() + " --theta 0.001");
+  const auto fit = c2f::test::run_tool(
+      bench + "/c2f-bench-published-fit",
+      "--data " + data.string() + " --lambdas 1.5 --thetas 0.005,0.001 --alphas 0 --top 0");
+  INFO(scores.output << "\n" << fit.output);
+  REQUIRE(scores.exit_code == 0);
+  REQUIRE(fit.exit_code == 0);
+  const auto cells_of = [](const std::string& line) {
+    std::vector<std::string> cells;
+    for (std::size_t bar = 0; (bar = line.find('|', bar)) != std::string::npos; ++bar)
+      cells.push_back(line.substr(bar + 1, line.find('|', bar + 1) - bar - 1));
+    return cells;
+  };
+  const auto line_starting = [](const std::string& text, const std::string& start) {
+    const auto at = text.find(start);
+    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+  };
+  // The header names the images; each model's row has one gain per image and their mean.
+  const auto header = cells_of(line_starting(fit.output, "| lambda | theta | alpha |"));
+  const auto theta_001 = cells_of(line_starting(fit.output, "| 1.5 | 0.001 | 0 |"));
+  const auto theta_005 = cells_of(line_starting(fit.output, "| 1.5 | 0.005 | 0 |"));
+  REQUIRE(header.size() == 8);  // 3 parameters, 3 images, the mean, and the end of the line
+  REQUIRE(theta_001.size() == header.size());
+  REQUIRE(theta_005.size() == header.size());
+  // Ranked by mean gain, smallest first.
+  const bool first_is_001 =
+      fit.output.find("| 1.5 | 0.001 | 0 |") < fit.output.find("| 1.5 | 0.005 | 0 |");
+  CHECK((std::stod(theta_001[6]) <= std::stod(theta_005[6])) == first_is_001);
+  // Each gain is (E(published) - E(descended)) / E(published) as c2f-bench-published shows it.
+  double mean = 0.0;
+  for (std::size_t image = 3; image < 6; ++image) {
+    const std::string name = header[image].substr(header[image].find("gain ") + 5);
+    const auto row = cells_of(
+        line_starting(scores.output, "| " + name.substr(0, name.size() - 1) + " | coopResult |"));
+    REQUIRE(row.size() == 8);
+    const double before = std::stod(row[2]), after = std::stod(row[5]);
+    CHECK(std::abs(std::stod(theta_001[image]) - 100 * (before - after) / before) <= 0.001);
+    mean += std::stod(theta_001[image]) / 3;
+  }
+  CHECK(std::abs(std::stod(theta_001[6]) - mean) <= 0.002);
+  CHECK_THAT(fit.output, !Catch::Contains("Our greedy"));
 }
 
 TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c2f-stereo does",
