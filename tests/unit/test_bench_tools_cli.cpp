@@ -14,6 +14,25 @@
 
 #include "support/run_tool.hpp"
 
+namespace {
+
+/// The line of `text` that starts with `start` (without its newline); empty when there is none.
+std::string line_starting(const std::string& text, const std::string& start) {
+  const auto at = text.find(start);
+  return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+}
+
+/// The cells of a markdown table row "| a | b |": "", " a ", " b " and "" (the text before
+/// the first bar is dropped, the text after the last one kept).
+std::vector<std::string> markdown_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  for (std::size_t bar = 0; (bar = line.find('|', bar)) != std::string::npos; ++bar)
+    cells.push_back(line.substr(bar + 1, line.find('|', bar + 1) - bar - 1));
+  return cells;
+}
+
+}  // namespace
+
 TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plot][cli]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-plot";
   std::filesystem::remove_all(dir);
@@ -125,15 +144,10 @@ TEST_CASE("c2f-bench-published recomputes the published pixel errors and descend
       {"2_21_s", "alphaExpResult", 5.67},  {"2_21_s", "coopResult", 4.62},
       {"17_12_s", "alphaExpResult", 5.12}, {"17_12_s", "coopResult", 4.53}};
   for (const auto& [image, method, error] : published) {
-    const std::string row = "| " + image + " | " + method + " | ";
-    const auto at = r.output.find(row);
-    REQUIRE(at != std::string::npos);
-    const auto line_end = r.output.find('\n', at);
-    const std::string line = r.output.substr(at, line_end - at);
+    const std::string line = line_starting(r.output, "| " + image + " | " + method + " | ");
+    REQUIRE_FALSE(line.empty());
     // | image | labeling | energy | Potts energy | error | energy after descent | its error |
-    std::vector<std::string> cells;
-    for (std::size_t bar = 0; (bar = line.find('|', bar)) != std::string::npos; ++bar)
-      cells.push_back(line.substr(bar + 1, line.find('|', bar + 1) - bar - 1));
+    const std::vector<std::string> cells = markdown_cells(line);
     INFO(line);
     REQUIRE(cells.size() == 8);
     CHECK(std::abs(std::stod(cells[4]) - error) <= 0.006);
@@ -158,20 +172,10 @@ TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-publish
   INFO(scores.output << "\n" << fit.output);
   REQUIRE(scores.exit_code == 0);
   REQUIRE(fit.exit_code == 0);
-  const auto cells_of = [](const std::string& line) {
-    std::vector<std::string> cells;
-    for (std::size_t bar = 0; (bar = line.find('|', bar)) != std::string::npos; ++bar)
-      cells.push_back(line.substr(bar + 1, line.find('|', bar + 1) - bar - 1));
-    return cells;
-  };
-  const auto line_starting = [](const std::string& text, const std::string& start) {
-    const auto at = text.find(start);
-    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
-  };
   // The header names the images; each model's row has one gain per image and their mean.
-  const auto header = cells_of(line_starting(fit.output, "| lambda | theta | alpha |"));
-  const auto theta_001 = cells_of(line_starting(fit.output, "| 1.5 | 0.001 | 0 |"));
-  const auto theta_005 = cells_of(line_starting(fit.output, "| 1.5 | 0.005 | 0 |"));
+  const auto header = markdown_cells(line_starting(fit.output, "| lambda | theta | alpha |"));
+  const auto theta_001 = markdown_cells(line_starting(fit.output, "| 1.5 | 0.001 | 0 |"));
+  const auto theta_005 = markdown_cells(line_starting(fit.output, "| 1.5 | 0.005 | 0 |"));
   REQUIRE(header.size() == 8);  // 3 parameters, 3 images, the mean, and the end of the line
   REQUIRE(theta_001.size() == header.size());
   REQUIRE(theta_005.size() == header.size());
@@ -183,7 +187,7 @@ TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-publish
   double mean = 0.0;
   for (std::size_t image = 3; image < 6; ++image) {
     const std::string name = header[image].substr(header[image].find("gain ") + 5);
-    const auto row = cells_of(
+    const auto row = markdown_cells(
         line_starting(scores.output, "| " + name.substr(0, name.size() - 1) + " | coopResult |"));
     REQUIRE(row.size() == 8);
     const double before = std::stod(row[2]), after = std::stod(row[5]);
