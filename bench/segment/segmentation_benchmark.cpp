@@ -2,7 +2,7 @@
 // data, with the Potts alpha-expansion baseline.
 //
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
-//                     [--configs A,B,...]
+//                     [--configs A,B,...] [--lambda X] [--theta X] [--alpha X]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
@@ -141,9 +141,9 @@ const char* kColumns[] = {"image",
 
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
-              const std::vector<std::string>& selected) {
+              const std::vector<std::string>& selected, const CoopParameters& parameters) {
   const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
-  const SegmentationProblem problem = segmentation_problem(scene, CoopParameters{});
+  const SegmentationProblem problem = segmentation_problem(scene, parameters);
   // The image's traces land together after its last row (each run stages its own files and
   // owns only the traces of the configurations it runs).
   std::vector<std::string> traces;
@@ -287,6 +287,7 @@ int main(int argc, char** argv) {
     std::string data = "../shared/data", out = "out/bench-segment", config_list;
     double time_limit = 600;
     bool header = false;
+    CoopParameters parameters;
     c2f::examples::ToolOptions options(
         "c2f-bench-segment: cooperative-cut segmentation of one image, flat and coarse to fine, "
         "one row per configuration.\n\nUsage: c2f-bench-segment run SET NAME [options]\n"
@@ -295,7 +296,12 @@ int main(int argc, char** argv) {
         .path("out", &out, "folder for traces and label images")
         .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
         .text("configs", &config_list, "comma-separated configurations (default: all)")
-        .flag("header", &header, "print the TSV header first");
+        .flag("header", &header, "print the TSV header first")
+        .real("lambda", &parameters.lambda, {0.0, 1e6}, "weight of the pairwise part")
+        .real("theta", &parameters.theta, {0.0, 1e6},
+              "breakpoint of F as a fraction of the class's total weight")
+        .real("alpha", &parameters.alpha, {0.0, 1.0, false, true},
+              "slope of F after the breakpoint");
     const auto arguments = options.parse(argc, argv, {"run SET NAME | summarize ROWS.tsv", 3});
     if (!arguments) return 0;
     const bench::BenchCommand command = bench::bench_command(*arguments, "SET NAME");
@@ -308,7 +314,8 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
       selected.push_back(name);
     }
-    return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected);
+    return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected,
+                     parameters);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;
