@@ -84,6 +84,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
        "--time-limit: expected a finite number in (0, 1e+07], got '0'"},
       {"c2f-bench-segment", "run set name --configs nope",
        "--configs: unknown configuration 'nope'"},
+      {"c2f-bench-segment", "run set name --alpha 1",
+       "--alpha: expected a finite number in [0, 1), got '1'"},
       {"c2f-bench-levels", "", "give SCENE"},
       {"c2f-bench-levels", "Teddy --schedule cp:x", "--schedule: level 'cp:x'"},
       {"c2f-bench-partitions", "data more", "unexpected argument 'more'"},
