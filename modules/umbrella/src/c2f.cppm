@@ -28,6 +28,7 @@ using c2f::BlockLevel;
 using c2f::BoostMaxFlow;
 using c2f::bp_schedule_from_string;
 using c2f::BpSchedule;
+using c2f::cheapest_label;
 using c2f::check_capacities;
 using c2f::check_topology;
 using c2f::checked_product;

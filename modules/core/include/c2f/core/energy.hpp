@@ -59,4 +59,20 @@ concept Energy = requires(const E& e, std::span<const Label> x, std::size_t v, L
   { energy_traits<E>::evaluate(e, x) } -> std::convertible_to<double>;
 };
 
+/// The label with the lowest unary cost at variable v (ties: the smallest such label).
+template <Energy E>
+Label cheapest_label(const E& energy, std::size_t v) {
+  const int num_labels = energy_traits<E>::num_labels(energy);
+  Label best = 0;
+  double best_cost = energy_traits<E>::unary(energy, v, 0);
+  for (Label l = 1; l < num_labels; ++l) {
+    const double cost = energy_traits<E>::unary(energy, v, l);
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = l;
+    }
+  }
+  return best;
+}
+
 }  // namespace c2f

@@ -26,19 +26,9 @@ namespace c2f {
 template <Energy E>
 Labeling initial_labeling(const E& energy, InitialLabeling kind) {
   const std::size_t n = energy_traits<E>::num_variables(energy);
-  const int num_labels = energy_traits<E>::num_labels(energy);
   Labeling labeling(n, 0);
   if (kind == InitialLabeling::zero) return labeling;
-  for (std::size_t v = 0; v < n; ++v) {
-    double best = energy_traits<E>::unary(energy, v, 0);
-    for (Label l = 1; l < num_labels; ++l) {
-      const double cost = energy_traits<E>::unary(energy, v, l);
-      if (cost < best) {
-        best = cost;
-        labeling[v] = l;
-      }
-    }
-  }
+  for (std::size_t v = 0; v < n; ++v) labeling[v] = cheapest_label(energy, v);
   return labeling;
 }
 

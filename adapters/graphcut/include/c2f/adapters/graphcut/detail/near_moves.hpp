@@ -13,6 +13,7 @@
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/core/edge_incidence.hpp"
+#include "c2f/core/energy.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -32,10 +33,8 @@ class NearMoves {
     const std::size_t n = energy.num_variables();
     cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
     for (std::size_t i = 0; i < n; ++i) {
-      Label best = 0;
-      for (Label l = 1; l < energy.num_labels(); ++l)
-        if (energy.unary(i, l) < energy.unary(i, best)) best = l;
-      cheapest_[static_cast<std::size_t>(best)].push_back(static_cast<VariableIndex>(i));
+      cheapest_[static_cast<std::size_t>(cheapest_label(energy, i))].push_back(
+          static_cast<VariableIndex>(i));
     }
     local_.assign(n, kHeld);
     depth_.assign(n, kUnreached);
