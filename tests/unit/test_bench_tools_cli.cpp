@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -128,6 +129,25 @@ TEST_CASE("the benchmark scripts print their usage and refuse a missing data fol
   }
 }
 
+TEST_CASE("run-coopcuts refuses a malformed model flag by name before writing anything",
+          "[bench][cli][malformed]") {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-coopcuts";
+  std::filesystem::remove_all(out);
+  const std::string script = std::string(C2F_SOURCE_DIR) + "/bench/segment/run-coopcuts";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"multilabel --gamma 1", "unknown flag '--gamma'"},
+      {"multilabel --lambda", "--lambda needs a value"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    const auto r = c2f::test::run_tool(
+        script, std::string(C2F_SHARED_DATA_DIR) + " " + out.string() + " " + arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains("run-coopcuts: ") && Catch::Contains(expected));
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
+
 TEST_CASE("c2f-bench-published recomputes the published pixel errors and descends from them",
           "[bench][cli][segmentation][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
@@ -227,5 +247,62 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
   REQUIRE(levels.exit_code == 0);
   CHECK_THAT(levels.output, Catch::Contains("\nslic:16 ") && Catch::Contains("\nslic:8 ") &&
                                 Catch::Contains("\noriginal "));
+  std::filesystem::remove_all(out);
+}
+
+TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat run",
+          "[bench][cli][segmentation][data]") {
+  const std::filesystem::path data = C2F_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data / "coopcuts/runMultilabel/seeds/1_11_s.png")) {
+    WARN("no shared coopCuts data at " << data << ": skipped");
+    return;
+  }
+  const std::string tool = std::string(C2F_BENCH_DIR) + "/c2f-bench-segment";
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-bench-seg";
+  std::filesystem::remove_all(out);
+  const std::string common = "run multilabel 1_11_s --data " + data.string() + " --out " +
+                             out.string() + " --lambda 0.5 --theta 0.0007 --alpha 0.2";
+  // A coarse-to-fine configuration without its flat run is refused by name, before any run.
+  const auto alone = c2f::test::run_tool(tool, common + " --configs c2f-slic-greedy-zero");
+  INFO(alone.output);
+  CHECK(alone.exit_code == 2);
+  CHECK_THAT(alone.output, Catch::Contains("c2f-slic-greedy-zero is compared with "
+                                           "flat-greedy-zero, which is not in the list"));
+  CHECK_FALSE(std::filesystem::exists(out / "1_11_s-c2f-slic-greedy-zero.csv"));
+
+  const auto run = c2f::test::run_tool(tool, common + " --configs flat-mm,c2f-slic-mm");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  // The rows, one per configuration, tab-separated (progress on stderr has no tabs).
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(run.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("1_11_s\t", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, '\t');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  REQUIRE(rows.size() == 2);
+  const auto& f = rows[0];
+  const auto& c = rows[1];
+  REQUIRE(f.size() == 13);
+  REQUIRE(c.size() == 13);
+  CHECK(f[3] == "flat-mm");
+  CHECK(c[3] == "c2f-slic-mm");
+  CHECK(f[8] == "converged");
+  CHECK(c[8] == "converged");
+  // The ratio is the time C2F first reaches flat's final energy over flat's whole run time; a
+  // run that ends above flat's energy never reaches it.
+  const double flat_energy = std::stod(f[4]), flat_seconds = std::stod(f[6]);
+  if (std::stod(c[4]) <= flat_energy) {
+    const double reach = std::stod(c[9]);
+    CHECK(reach > 0.0);
+    CHECK(reach <= std::stod(c[6]));
+    CHECK(std::stod(c[10]) == Approx(reach / flat_seconds).epsilon(2e-3));
+  } else {
+    CHECK(c[9] == "nan");
+  }
+  CHECK(std::filesystem::exists(out / "1_11_s-c2f-slic-mm.csv"));
   std::filesystem::remove_all(out);
 }
