@@ -293,15 +293,16 @@ TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat 
   CHECK(f[8] == "converged");
   CHECK(c[8] == "converged");
   // The ratio is the time C2F first reaches flat's final energy over flat's whole run time; a
-  // run that ends above flat's energy never reaches it.
+  // run that never reaches it ends no lower than flat (energies printed to 1e-6, times to 1 ms).
   const double flat_energy = std::stod(f[4]), flat_seconds = std::stod(f[6]);
-  if (std::stod(c[4]) <= flat_energy) {
+  if (c[9] != "nan") {
     const double reach = std::stod(c[9]);
+    CHECK(std::stod(c[4]) <= flat_energy + 1e-6);
     CHECK(reach > 0.0);
     CHECK(reach <= std::stod(c[6]));
-    CHECK(std::stod(c[10]) == Approx(reach / flat_seconds).epsilon(2e-3));
+    CHECK(std::stod(c[10]) == Approx(reach / flat_seconds).epsilon(0.01));
   } else {
-    CHECK(c[9] == "nan");
+    CHECK(std::stod(c[4]) >= flat_energy - 1e-6);
   }
   CHECK(std::filesystem::exists(out / "1_11_s-c2f-slic-mm.csv"));
   std::filesystem::remove_all(out);
