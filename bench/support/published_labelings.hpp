@@ -15,6 +15,12 @@
 
 namespace c2f::bench {
 
+/// The published labeling of `method` (alphaExpResult or coopResult) for image `name`.
+inline std::string published_result_path(const std::filesystem::path& set, const std::string& name,
+                                         const std::string& method) {
+  return (set / "results" / (name + "_" + method + ".png")).string();
+}
+
 /// The images of the multi-label set folder `set` (coopcuts_folder(data, "multilabel")) that
 /// have both published results, results/NAME_alphaExpResult.png and results/NAME_coopResult.png
 /// (drawn in the GT's colours), in name order. Throws std::invalid_argument naming --data when
@@ -25,26 +31,19 @@ inline std::vector<std::string> images_with_results(const std::filesystem::path&
     if (!std::filesystem::is_directory(set / folder, error))
       throw std::invalid_argument("--data: no folder '" + (set / folder).string() + "'");
   }
-  const auto is_file = [&](const std::filesystem::path& path) {
-    return std::filesystem::is_regular_file(path, error);
+  const auto has_result = [&](const std::string& name, const char* method) {
+    return std::filesystem::is_regular_file(published_result_path(set, name, method), error);
   };
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(set / "seeds")) {
     const std::string name = entry.path().stem().string();
-    const bool has_results = is_file(set / "results" / (name + "_alphaExpResult.png")) &&
-                             is_file(set / "results" / (name + "_coopResult.png"));
+    const bool has_results = has_result(name, "alphaExpResult") && has_result(name, "coopResult");
     if (entry.path().extension() == ".png" && has_results) names.push_back(name);
   }
   std::sort(names.begin(), names.end());
   if (names.empty())
     throw std::invalid_argument("--data: no image of '" + set.string() + "' has published results");
   return names;
-}
-
-/// The published labeling of `method` (alphaExpResult or coopResult) for image `name`.
-inline std::string published_result_path(const std::filesystem::path& set, const std::string& name,
-                                         const std::string& method) {
-  return (set / "results" / (name + "_" + method + ".png")).string();
 }
 
 /// Majorise-minimise descent from `start` until a step no longer lowers the energy. Under the
