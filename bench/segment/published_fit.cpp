@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
 #include "support/published_labelings.hpp"
 #include "tool_options.hpp"
@@ -140,9 +141,9 @@ int main(int argc, char** argv) {
                  "the ranking)");
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;
-    const auto lambdas = number_list("--lambdas", command.lambdas, {0.0, 1e6});
-    const auto thetas = number_list("--thetas", command.thetas, {0.0, 1e6});
-    const auto alphas = number_list("--alphas", command.alphas, {0.0, 1.0, false, true});
+    const auto lambdas = number_list("--lambdas", command.lambdas, examples::kLambdaRange);
+    const auto thetas = number_list("--thetas", command.thetas, examples::kThetaRange);
+    const auto alphas = number_list("--alphas", command.alphas, examples::kAlphaRange);
 
     const std::filesystem::path set = bench::coopcuts_folder(command.data, "multilabel");
     std::vector<ImageData> images;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
 #include "support/published_labelings.hpp"
 #include "tool_options.hpp"
@@ -71,12 +72,8 @@ int main(int argc, char** argv) {
         .integer("edge-seed", &command.seeds.edge_classes,
                  {0, std::numeric_limits<long long>::max()},
                  "seed of the k-means that makes the edge classes")
-        .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)")
-        .real("lambda", &command.parameters.lambda, {0.0, 1e6}, "weight of the pairwise part")
-        .real("theta", &command.parameters.theta, {0.0, 1e6},
-              "breakpoint of F as a fraction of the class's total weight")
-        .real("alpha", &command.parameters.alpha, {0.0, 1.0, false, true},
-              "slope of F after the breakpoint");
+        .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)");
+    examples::declare_coop_parameters(options, command.parameters);
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;
     const std::filesystem::path set = bench::coopcuts_folder(command.data, "multilabel");

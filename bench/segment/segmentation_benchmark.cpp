@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "coop_flags.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "support/coopcuts_files.hpp"
@@ -298,12 +299,8 @@ int main(int argc, char** argv) {
         .path("out", &out, "folder for traces and label images")
         .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
         .text("configs", &config_list, "comma-separated configurations (default: all)")
-        .flag("header", &header, "print the TSV header first")
-        .real("lambda", &parameters.lambda, {0.0, 1e6}, "weight of the pairwise part")
-        .real("theta", &parameters.theta, {0.0, 1e6},
-              "breakpoint of F as a fraction of the class's total weight")
-        .real("alpha", &parameters.alpha, {0.0, 1.0, false, true},
-              "slope of F after the breakpoint");
+        .flag("header", &header, "print the TSV header first");
+    c2f::examples::declare_coop_parameters(options, parameters);
     const auto arguments = options.parse(argc, argv, {"run SET NAME | summarize ROWS.tsv", 3});
     if (!arguments) return 0;
     const bench::BenchCommand command = bench::bench_command(*arguments, "SET NAME");

@@ -1,5 +1,6 @@
 #include "segment_options.hpp"
 
+#include "coop_flags.hpp"
 #include "tool_options.hpp"
 
 #include <algorithm>
@@ -56,12 +57,8 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       .text("schedule", &command.schedule,
             "flat, superpixels (slic:16 slic:8 flat: with --aux mm the fastest measured, "
             "docs/results.md), paper (the paper's CP(k,2) CP(k,3), k = ceil(L/2): cp:k,1 "
-            "cp:k,2), paper-cc, or levels such as \"cp:2,1/cc slic:16 flat\"")
-      .real("lambda", &command.parameters.lambda, {0.0, 1e6}, "weight of the pairwise part")
-      .real("theta", &command.parameters.theta, {0.0, 1e6},
-            "breakpoint of the concave costs, fraction of a class's weight")
-      .real("alpha", &command.parameters.alpha, {0.0, 1.0, false, true},
-            "slope of the concave costs after the breakpoint")
+            "cp:k,2), paper-cc, or levels such as \"cp:2,1/cc slic:16 flat\"");
+  declare_coop_parameters(options, command.parameters)
       .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)")
       .integer("gmm-seed", &command.kmeans_seeds.gmm, {0, std::numeric_limits<long long>::max()},
                "seed of the k-means that starts each label's colour GMM (the reference's was "
