@@ -32,6 +32,15 @@ std::vector<std::string> markdown_cells(const std::string& line) {
   return cells;
 }
 
+/// True when the shared data holds `needed`; otherwise warns that the test is skipped for want
+/// of the shared `what` data (the project does not need that data to build or test).
+bool shared_data_has(const std::filesystem::path& needed, const char* what) {
+  if (std::filesystem::exists(needed)) return true;
+  WARN("no shared " << what << " data at " << std::filesystem::path(C2F_SHARED_DATA_DIR)
+                    << ": skipped");
+  return false;
+}
+
 }  // namespace
 
 TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plot][cli]") {
@@ -151,10 +160,7 @@ TEST_CASE("run-coopcuts refuses a malformed model flag by name before writing an
 TEST_CASE("c2f-bench-published recomputes the published pixel errors and descends from them",
           "[bench][cli][segmentation][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(data / "coopcuts/runMultilabel/results")) {
-    WARN("no shared coopCuts data at " << data << ": skipped");
-    return;
-  }
+  if (!shared_data_has(data / "coopcuts/runMultilabel/results", "coopCuts")) return;
   const auto r = c2f::test::run_tool(std::string(C2F_BENCH_DIR) + "/c2f-bench-published",
                                      "--data " + data.string());
   INFO(r.output);
@@ -181,10 +187,7 @@ TEST_CASE("c2f-bench-published recomputes the published pixel errors and descend
 TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-published reports",
           "[bench][cli][segmentation][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(data / "coopcuts/runMultilabel/results")) {
-    WARN("no shared coopCuts data at " << data << ": skipped");
-    return;
-  }
+  if (!shared_data_has(data / "coopcuts/runMultilabel/results", "coopCuts")) return;
   const std::string bench = C2F_BENCH_DIR;
   const auto scores = c2f::test::run_tool(bench + "/c2f-bench-published",
                                           "--data " + data.string() + " --theta 0.001");
@@ -223,10 +226,7 @@ TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-publish
 TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c2f-stereo does",
           "[bench][cli][stereo][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(data / "scenes.csv")) {
-    WARN("no shared Middlebury data at " << data << ": skipped");
-    return;
-  }
+  if (!shared_data_has(data / "scenes.csv", "Middlebury")) return;
   const std::string bench = C2F_BENCH_DIR;
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-bench-slic";
   std::filesystem::remove_all(out);
@@ -253,10 +253,7 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
 TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat run",
           "[bench][cli][segmentation][data]") {
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
-  if (!std::filesystem::exists(data / "coopcuts/runMultilabel/seeds/1_11_s.png")) {
-    WARN("no shared coopCuts data at " << data << ": skipped");
-    return;
-  }
+  if (!shared_data_has(data / "coopcuts/runMultilabel/seeds/1_11_s.png", "coopCuts")) return;
   const std::string tool = std::string(C2F_BENCH_DIR) + "/c2f-bench-segment";
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-bench-seg";
   std::filesystem::remove_all(out);
