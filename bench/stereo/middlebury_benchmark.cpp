@@ -4,11 +4,12 @@
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
-//                    [--flat-near-radius R] [--c2f-near-radius R]
+//                    [--flat-near-radius R] [--c2f-near-radius R] [--near-levels original|all]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
 //       backend, default dynamic; near moves of radius R, MoveOptions::near_radius, in either
-//       run on request: with `--schedule flat` this compares two flat solvers),
+//       run on request, on the original problem only or on every level: with `--schedule flat`
+//       this compares two flat solvers),
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
@@ -90,8 +91,9 @@ struct Settings {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;
   int downscale = 1;  ///< shrink the views by this factor (the scaling study)
   int labels = 85;
-  int flat_near_radius = 0;  ///< MoveOptions::near_radius of the flat run
-  int c2f_near_radius = 0;   ///< and of the coarse-to-fine run
+  int flat_near_radius = 0;                       ///< MoveOptions::near_radius of the flat run
+  int c2f_near_radius = 0;                        ///< and of the coarse-to-fine run
+  NearLevels near_levels = NearLevels::original;  ///< where near moves are made
 };
 
 template <class Backend>
@@ -104,6 +106,9 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   expansion.order = settings.label_order;
   expansion.near_radius = near_radius;
   ExpansionSolver<Backend> solver(expansion);
+  ExpansionOptions coarse_expansion = expansion;
+  if (settings.near_levels == NearLevels::original) coarse_expansion.near_radius = 0;
+  ExpansionSolver<Backend> coarse_solver(coarse_expansion);
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
@@ -114,11 +119,12 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
-  run.summary = coarse_to_fine(energy, provider, solver, options, [&](const StepEvent& event) {
-    writer(event);
-    run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
-    return ObserverDecision::continue_run;
-  });
+  run.summary =
+      coarse_to_fine(energy, provider, coarse_solver, solver, options, [&](const StepEvent& event) {
+        writer(event);
+        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+        return ObserverDecision::continue_run;
+      });
   close_checked(file, trace_path);
   run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
                               scene.nonoccluded);
@@ -271,7 +277,7 @@ int summarize(const std::string& path) {
 int main(int argc, char** argv) {
   try {
     std::string data = "../shared/data", out = "out/bench-stereo", label_order = "sequential",
-                maxflow = "dynamic";
+                maxflow = "dynamic", near_levels = std::string(to_string(NearLevels::original));
     Settings settings;
     bool header = false;
     c2f::examples::ToolOptions options(
@@ -292,6 +298,9 @@ int main(int argc, char** argv) {
                  "near moves of this radius in the flat run (0: whole moves only)")
         .integer("c2f-near-radius", &settings.c2f_near_radius, {0, 1000000},
                  "near moves of this radius in the coarse-to-fine run (0: whole moves only)")
+        .text("near-levels", &near_levels,
+              "where near moves are made: original (the original problem only; coarse levels "
+              "make whole moves) or all")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
@@ -301,6 +310,8 @@ int main(int argc, char** argv) {
         "--label-order", [&] { return visit_order_from_string(label_order); });
     settings.maxflow =
         c2f::examples::with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
+    settings.near_levels = c2f::examples::with_flag(
+        "--near-levels", [&] { return near_levels_from_string(near_levels); });
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",
                              [&] { return parse_stereo_schedule(settings.schedule); });

@@ -1,7 +1,7 @@
 #pragma once
 // The options that choose a solver and end its run, shared by the tools that offer every
 // solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --near-radius,
-// --label-order, and
+// --near-levels, --label-order, and
 // --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
 
 #include <string>
@@ -14,7 +14,7 @@ namespace c2f::examples {
 
 class SolverFlags {
  public:
-  /// Declares the five options in `options` (this object receives their values, so it must
+  /// Declares the six options in `options` (this object receives their values, so it must
   /// outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -23,7 +23,8 @@ class SolverFlags {
   [[nodiscard]] SolverChoice choice() const;
 
  private:
-  std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic";
+  std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
+              near_levels_ = std::string(to_string(NearLevels::original));
   double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
   int near_radius_ = 0;
 };

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "c2f/c2f.hpp"
@@ -42,6 +43,14 @@ StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, b
   return {std::move(problem), seconds};
 }
 
+/// ", near moves of radius R on ..." when the solver makes near moves, else "".
+std::string near_moves_text(const SolverChoice& solver) {
+  if (solver.kind != SolverKind::expansion || solver.near_radius == 0) return {};
+  return ", near moves of radius " + std::to_string(solver.near_radius) +
+         (solver.near_levels == NearLevels::original ? " on the original problem only"
+                                                     : " on every level");
+}
+
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
                    const ScheduleProvider& levels, const Summary& summary,
@@ -52,7 +61,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
          << ", solver " << to_string(command.solver.kind) << ", max-flow "
-         << to_string(command.solver.maxflow) << "\n"
+         << to_string(command.solver.maxflow) << near_moves_text(command.solver) << "\n"
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
   write_run_report(report, levels.reports(), summary, interrupts);

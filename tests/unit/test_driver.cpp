@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "c2f/adapters/icm/icm.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
@@ -26,6 +28,25 @@ std::vector<DensePartition> random_sequence(Rng& rng, std::size_t n) {
 struct Recorded {
   std::vector<StepEvent> events;
   std::vector<double> ground_energies;
+};
+
+/// ICM that records the sizes of the energies it is bound to, its steps and its releases.
+struct CountingSolver {
+  IcmSolver icm;
+  std::vector<std::size_t> bound_sizes;
+  long steps = 0;
+  int releases = 0;
+  void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
+    bound_sizes.push_back(energy.num_variables());
+    icm.bind(energy, start);
+  }
+  double step() {
+    ++steps;
+    return icm.step();
+  }
+  [[nodiscard]] double energy() const { return icm.energy(); }
+  [[nodiscard]] std::span<const Label> labeling() const { return icm.labeling(); }
+  void release() { ++releases; }
 };
 
 }  // namespace
@@ -85,6 +106,35 @@ TEST_CASE("a flat run is a coarse-to-fine run without partitions", "[driver]") {
   CHECK(summary.levels[0].num_variables == 120);
   CHECK(summary.levels[0].steps >= 4);  // plateau of 4 steps without decrease
   CHECK(summary.energy <= summary.levels[0].start_energy);
+}
+
+TEST_CASE("coarse levels and the original problem can have solvers of their own", "[driver]") {
+  Rng rng(31);
+  const PairwiseEnergy energy = random_grid_energy(rng, 16, 16, 4);
+  Options options;
+  options.plateau_steps = {3};
+  CountingSolver coarse, original;
+  BlockHierarchy levels(GridShape{16, 16}, {8, 4});
+  const Summary summary = coarse_to_fine(energy, levels, coarse, original, options);
+  REQUIRE(summary.levels.size() == 3);
+  // The coarse solver solves both coarse levels (2x2 and 4x4 blocks), the original solver the
+  // original problem; the coarse solver is released once, when the original problem begins.
+  CHECK(coarse.bound_sizes == std::vector<std::size_t>{4, 16});
+  CHECK(original.bound_sizes == std::vector<std::size_t>{256});
+  CHECK(coarse.steps == summary.levels[0].steps + summary.levels[1].steps);
+  CHECK(original.steps == summary.levels[2].steps);
+  CHECK(coarse.releases == 1);
+  CHECK(original.releases == 0);
+  CHECK(summary.energy == energy.evaluate(summary.labeling));
+
+  // Two solvers configured alike give the run of one; one object passed twice is not released.
+  BlockHierarchy same_levels(GridShape{16, 16}, {8, 4});
+  CountingSolver both;
+  const Summary one = coarse_to_fine(energy, same_levels, both, both, options);
+  CHECK(one.labeling == summary.labeling);
+  CHECK(one.total_steps == summary.total_steps);
+  CHECK(both.bound_sizes == std::vector<std::size_t>{4, 16, 256});
+  CHECK(both.releases == 0);
 }
 
 TEST_CASE("stopping rules end the run with their reason", "[driver][rules]") {

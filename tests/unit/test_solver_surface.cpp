@@ -70,6 +70,14 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   near.near_radius = 3;
   CHECK(steps_per_sweep(near, 7) == 21);  // near moves: three sweeps (ExpansionSolver::sweep_steps)
   CHECK(near.move_options().near_radius == 3);
+  CHECK(near.coarse_move_options().near_radius == 0);  // near moves on the original only
+  near.near_levels = NearLevels::all;
+  CHECK(near.coarse_move_options().near_radius == 3);
+  for (const NearLevels levels : {NearLevels::original, NearLevels::all})
+    CHECK(near_levels_from_string(to_string(levels)) == levels);
+  CHECK_THROWS_WITH(
+      near_levels_from_string("coarse"),
+      Catch::Contains("unknown near-move levels 'coarse' (expected original or all)"));
   near.kind = SolverKind::swap;
   CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
   CHECK(near.move_options().near_radius == 0);
@@ -123,4 +131,62 @@ TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
   CHECK(icm.total_steps > 0);
   CHECK_THROWS_WITH(by_name({SolverKind::lbp, VisitOrder::frequency}),
                     Catch::Contains("solver choice: lbp"));
+}
+
+TEST_CASE("near moves chosen by name are made where near_levels says",
+          "[solvers][surface][driver]") {
+  Rng rng(77);
+  const PairwiseEnergy energy = potts_grid(rng, 30, 24, 6);
+  const DensePartition coarse = random_partition(rng, energy.num_variables(), 200);
+  Options options;
+  options.plateau_steps = {6};
+  options.plateau_steps_at_original = 18;
+  ExpansionOptions whole, near;
+  near.near_radius = 1;
+  // The energies after every step of a run on the coarse level, then the original problem.
+  auto energies = [&](auto&& run) {
+    std::vector<double> seen;
+    PartitionList provider({coarse});
+    run(provider, [&](const StepEvent& event) {
+      seen.push_back(event.energy);
+      return ObserverDecision::continue_run;
+    });
+    return seen;
+  };
+  auto by_name = [&](NearLevels levels) {
+    SolverChoice choice;
+    choice.near_radius = 1;
+    choice.near_levels = levels;
+    return energies([&](PartitionList& provider, const Observer& observer) {
+      coarse_to_fine(energy, provider, choice, options, observer);
+    });
+  };
+  const std::vector<double> original_only = by_name(NearLevels::original);
+  const std::vector<double> everywhere = by_name(NearLevels::all);
+  CHECK(original_only == energies([&](PartitionList& provider, const Observer& observer) {
+          ExpansionSolver<> coarse_solver(whole), original_solver(near);
+          coarse_to_fine(energy, provider, coarse_solver, original_solver, options, observer);
+        }));
+  CHECK(everywhere == energies([&](PartitionList& provider, const Observer& observer) {
+          ExpansionSolver<> solver(near);
+          coarse_to_fine(energy, provider, solver, options, observer);
+        }));
+  CHECK(original_only != everywhere);  // the coarse level's moves differ
+}
+
+TEST_CASE("a released expansion solver must be bound again, and then runs as a new one",
+          "[solvers][surface]") {
+  Rng rng(5);
+  const PairwiseEnergy energy = potts_grid(rng, 10, 8, 4);
+  const Labeling start = random_labeling(rng, energy.num_variables(), energy.num_labels());
+  ExpansionSolver<> used, fresh;
+  used.bind(energy, start);
+  for (int i = 0; i < 5; ++i) used.step();
+  used.release();
+  CHECK_THROWS_WITH(used.step(), Catch::Contains("call bind() first"));
+  used.bind(energy, start);
+  fresh.bind(energy, start);
+  for (int i = 0; i < 8; ++i) CHECK(used.step() == fresh.step());
+  CHECK(std::vector<Label>(used.labeling().begin(), used.labeling().end()) ==
+        std::vector<Label>(fresh.labeling().begin(), fresh.labeling().end()));
 }

@@ -71,6 +71,38 @@ TEST_CASE("c2f-stereo with near moves descends and stops after three quiet sweep
   CHECK(quiet == 3 * labels);
 }
 
+TEST_CASE("c2f-stereo makes near moves on the levels --near-levels names, and says so",
+          "[stereo][cli][near]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-near-levels";
+  std::filesystem::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 7);
+  // summary.txt's second line and trace.csv without its times.
+  auto solve = [&](const std::string& levels) {
+    const auto out = dir / levels;
+    const auto r =
+        run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+            out.string() + " --labels 8 --schedule \"local:1,1/cc flat\" --near-radius 2" +
+            " --near-levels " + levels + " -q");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    std::ifstream summary(out / "summary.txt");
+    std::string line;
+    std::getline(summary, line);
+    std::getline(summary, line);
+    std::ifstream trace(out / "trace.csv");
+    std::vector<std::string> rows;
+    for (std::string row; std::getline(trace, row);)
+      rows.push_back(row.substr(row.find(',') + 1));  // without time_s, which always differs
+    return std::pair{line, rows};
+  };
+  const auto [original_line, original_trace] = solve("original");
+  const auto [all_line, all_trace] = solve("all");
+  CHECK_THAT(original_line, Catch::EndsWith("near moves of radius 2 on the original problem only"));
+  CHECK_THAT(all_line, Catch::EndsWith("near moves of radius 2 on every level"));
+  CHECK(original_trace.size() > 1);
+  CHECK(original_trace != all_trace);  // the coarse level moves differently
+}
+
 TEST_CASE("c2f-stereo gives the same disparities on every max-flow backend", "[stereo][cli]") {
   // Integer-valued costs are not guaranteed here, so ties between minimum cuts could in
   // principle be broken differently; on this small scene all backends agree exactly.

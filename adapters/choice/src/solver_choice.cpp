@@ -42,6 +42,21 @@ MaxFlowKind maxflow_kind_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "max-flow backend");
 }
 
+std::string_view to_string(NearLevels levels) {
+  switch (levels) {
+    case NearLevels::original:
+      return "original";
+    case NearLevels::all:
+      return "all";
+  }
+  return "unknown";
+}
+
+NearLevels near_levels_from_string(std::string_view text) {
+  constexpr NearLevels kAll[] = {NearLevels::original, NearLevels::all};
+  return enum_from_string(text, kAll, "near-move levels");
+}
+
 std::string SolverChoice::validate() const {
   if (kind == SolverKind::lbp && order != VisitOrder::sequential) {
     return "lbp visits every message in every step; the order '" + std::string(to_string(order)) +

@@ -32,11 +32,53 @@ Labeling initial_labeling(const E& energy, InitialLabeling kind) {
   return labeling;
 }
 
+namespace detail {
+
+/// The solver of the level being solved: `coarse` on every reduced energy, `original` on the
+/// original one. Both may be the same object; when they differ and the coarse solver has
+/// release(), it is called as the original problem begins, so the coarse levels' memory (e.g.
+/// recycled move graphs) is not held beside the original problem's.
+template <class E, class CoarseSolver, class OriginalSolver>
+class LevelSolver {
+ public:
+  LevelSolver(CoarseSolver& coarse, OriginalSolver& original)
+      : coarse_(coarse), original_(original) {}
+
+  void bind(const E& energy, std::span<const Label> start, bool at_original) {
+    at_original_ = at_original;
+    if (at_original) {
+      if constexpr (requires { coarse_.release(); }) {
+        if (static_cast<const void*>(&coarse_) != static_cast<const void*>(&original_))
+          coarse_.release();
+      }
+      original_.bind(energy, start);
+    } else {
+      coarse_.bind(energy, start);
+    }
+  }
+  double step() { return at_original_ ? original_.step() : coarse_.step(); }
+  [[nodiscard]] double energy() const {
+    return at_original_ ? original_.energy() : coarse_.energy();
+  }
+  [[nodiscard]] std::span<const Label> labeling() const {
+    return at_original_ ? original_.labeling() : coarse_.labeling();
+  }
+
+ private:
+  CoarseSolver& coarse_;
+  OriginalSolver& original_;
+  bool at_original_ = false;
+};
+
+}  // namespace detail
+
 /// Minimises `energy` coarse to fine. For each partition that `levels` provides (coarsest
 /// first), the energy is reduced by it, the current labeling is transferred to it (same
-/// energy), the solver is bound to the reduced energy and stepped until `rules` say refine;
-/// then the original energy is solved the same way, until the rules say refine (finished) or
-/// stop. A provider that yields no partition gives the flat run, with the same code and clock.
+/// energy), `coarse_solver` is bound to the reduced energy and stepped until `rules` say
+/// refine; then `original_solver` solves the original energy the same way, until the rules say
+/// refine (finished) or stop. The two may be one object (the overload below) or differ, e.g.
+/// whole expansion moves on the coarse levels and near moves on the original problem. A
+/// provider that yields no partition gives the flat run, with the same code and clock.
 ///
 /// The run clock starts before the first partition is built; partitions, reductions, transfers
 /// and binding are on it; time inside `observer` is not. The observer sees every step,
@@ -50,13 +92,16 @@ Labeling initial_labeling(const E& energy, InitialLabeling kind) {
 /// Levels may come as any Partition type (converted with to_dense_partition, on the clock).
 /// Throws std::invalid_argument when a provided partition does not cover the energy's variables
 /// or, with LevelTransfer::exact, does not refine the previous level.
-template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
-Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
+template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> CoarseSolver,
+          AnytimeSolver<E> OriginalSolver>
+Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
+                       OriginalSolver& original_solver, const Rules& rules,
                        const Observer& observer = {},
                        InitialLabeling init = InitialLabeling::unary_argmin,
                        LevelTransfer transfer = LevelTransfer::exact) {
   if (rules.empty())
     throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
+  detail::LevelSolver<E, CoarseSolver, OriginalSolver> solver(coarse_solver, original_solver);
   detail::RunClock clock;
   Summary summary;
   std::optional<DensePartition> previous;  // partition of the last finished level
@@ -98,7 +143,7 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
                   ? transfer_labels(labeling, *previous, *partition)
                   : transfer_labels_by_majority(labeling, *previous, *partition);
     }
-    solver.bind(level_energy, start);
+    solver.bind(level_energy, start, at_original);
     const double setup_done = clock.elapsed();
     stats.setup_seconds = setup_done - partition_done;
     stats.num_variables = energy_traits<E>::num_variables(level_energy);
@@ -152,13 +197,32 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
   return summary;
 }
 
+/// As above with one solver for every level.
+template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
+Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
+                       const Observer& observer = {},
+                       InitialLabeling init = InitialLabeling::unary_argmin,
+                       LevelTransfer transfer = LevelTransfer::exact) {
+  return coarse_to_fine(energy, levels, solver, solver, rules, observer, init, transfer);
+}
+
 /// As above with the rules and initial labeling of `options`; throws std::invalid_argument
 /// when options.validate() reports a problem.
 template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
 Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Options& options,
                        const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, solver, options.rules(), observer, options.initial_labeling,
-                        options.level_transfer);
+  return coarse_to_fine(energy, levels, solver, solver, options.rules(), observer,
+                        options.initial_labeling, options.level_transfer);
+}
+
+/// The same with one solver for the coarse levels and another for the original problem.
+template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> CoarseSolver,
+          AnytimeSolver<E> OriginalSolver>
+Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
+                       OriginalSolver& original_solver, const Options& options,
+                       const Observer& observer = {}) {
+  return coarse_to_fine(energy, levels, coarse_solver, original_solver, options.rules(), observer,
+                        options.initial_labeling, options.level_transfer);
 }
 
 }  // namespace c2f

@@ -86,6 +86,10 @@ class ExpansionSolver {
     whole_moves_left_ = 0;
   }
 
+  /// Frees what bind() built (move problems, recycled graphs, near-move graphs); the options
+  /// stay. bind() again before the next step().
+  void release() { *this = ExpansionSolver(options_); }
+
   /// One expansion move; returns the energy afterwards (never larger than before).
   double step() {
     if (state_.energy == nullptr)
