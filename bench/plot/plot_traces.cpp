@@ -1,8 +1,8 @@
 // c2f-plot: draws anytime traces (CSV: time_s,level,step,energy,num_vars[,error]) as PNG line
 // plots of energy against time and, when every trace has it, error against time.
 //
-// Usage: c2f-plot -o PLOT.png [--title T] [--column energy|error] NAME=TRACE.csv [NAME=TRACE.csv
-// ...]
+// Usage: c2f-plot -o PLOT.png [--title T] [--column energy|error] [--gap-to E]
+//                 NAME=TRACE.csv [NAME=TRACE.csv ...]
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -73,6 +73,16 @@ Series read_trace(const std::string& name, const std::string& path, const std::s
   return series;
 }
 
+/// The smallest relative gap --gap-to draws: labelings at or below the reference sit on it.
+constexpr double kGapFloor = 1e-7;
+
+/// Replaces each value by log10 of its relative gap above `reference`, (v - reference) /
+/// max(1, |reference|), floored at kGapFloor.
+void to_log_gap(Series& series, double reference) {
+  const double scale = std::max(1.0, std::abs(reference));
+  for (double& v : series.value) v = std::log10(std::max(kGapFloor, (v - reference) / scale));
+}
+
 std::string format(double v) {
   char text[32];
   std::snprintf(text, sizeof text, std::abs(v) >= 1000 ? "%.0f" : "%.4g", v);
@@ -82,7 +92,7 @@ std::string format(double v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out, title = "energy against time", column = "energy";
+  std::string out, title = "energy against time", column = "energy", gap_to;
   std::vector<std::pair<std::string, std::string>> inputs;
   try {
     c2f::examples::ToolOptions options(
@@ -90,7 +100,11 @@ int main(int argc, char** argv) {
         "Usage: c2f-plot -o PLOT.png [options] NAME=TRACE.csv ...\n\nOptions");
     options.path("out,o", &out, "the PNG to write")
         .text("title", &title, "plot title")
-        .text("column", &column, "the trace column to plot: energy or error");
+        .text("column", &column, "the trace column to plot: energy or error")
+        .text("gap-to", &gap_to,
+              "plot log10 of each value's relative gap above this reference, (v - ref) / "
+              "max(1, |ref|), floored at 1e-7 (values at or below the reference sit on the "
+              "floor): shows how close runs get to, e.g., flat's final energy");
     const auto arguments = options.parse(argc, argv, {"NAME=TRACE.csv ...", 64});
     if (!arguments) return 0;
     for (const std::string& argument : *arguments) {
@@ -102,8 +116,17 @@ int main(int argc, char** argv) {
     }
     if (out.empty() || inputs.empty())
       throw std::invalid_argument("need -o PLOT.png and at least one NAME=TRACE.csv");
+    std::optional<double> reference;
+    if (!gap_to.empty()) {
+      reference = c2f::parse_real(gap_to);
+      if (!reference || std::abs(*reference) > 1e300)
+        throw std::invalid_argument("--gap-to: expected a finite number, got '" + gap_to + "'");
+    }
     std::vector<Series> series;
-    for (const auto& [name, path] : inputs) series.push_back(read_trace(name, path, column));
+    for (const auto& [name, path] : inputs) {
+      series.push_back(read_trace(name, path, column));
+      if (reference) to_log_gap(series.back(), *reference);
+    }
     double t_max = 0, v_min = std::numeric_limits<double>::infinity(), v_max = -v_min;
     for (const Series& s : series) {
       t_max = std::max(t_max, s.time.back());
@@ -129,10 +152,13 @@ int main(int argc, char** argv) {
       cv::putText(plot, format(v), {8, py(v) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
     }
     cv::rectangle(plot, {left, top}, {width - right, height - bottom}, black);
-    cv::putText(plot, title, {left, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.7, black, 2);
+    cv::putText(plot, title, {left, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.7, black, 2);
     cv::putText(plot, "time (s, run clock)", {width / 2 - 70, height - 20},
                 cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
-    cv::putText(plot, column, {8, top - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
+    const std::string axis =
+        reference ? "log10 of (" + column + " - " + gap_to + ") / " + gap_to + ", floor -7"
+                  : column;
+    cv::putText(plot, axis, {8, top - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
     const cv::Scalar colours[] = {
         {200, 60, 30}, {30, 60, 220}, {40, 160, 40}, {160, 40, 160}, {0, 140, 200}};
     for (std::size_t s = 0; s < series.size(); ++s) {

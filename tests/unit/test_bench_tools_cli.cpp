@@ -71,6 +71,20 @@ TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plo
       c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + good);
   CHECK(ok.exit_code == 0);
   CHECK(std::filesystem::exists(dir / "plot.png"));
+  // The gap view: a finite reference is drawn (values below it sit on the floor), any other
+  // text is refused by name.
+  const auto gap = c2f::test::run_tool(
+      C2F_PLOT_BINARY, "-o " + (dir / "gap.png").string() + " --gap-to 9 a=" + good);
+  CHECK(gap.exit_code == 0);
+  CHECK(std::filesystem::exists(dir / "gap.png"));
+  for (const char* bad : {"nan", "1e400", "low"}) {
+    const auto r = c2f::test::run_tool(
+        C2F_PLOT_BINARY, "-o " + (dir / "bad.png").string() + " --gap-to " + bad + " a=" + good);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(std::string("--gap-to: expected a finite number, got '") +
+                                         bad + "'"));
+  }
+  CHECK_FALSE(std::filesystem::exists(dir / "bad.png"));
 }
 
 TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli][malformed]") {
