@@ -36,6 +36,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -277,7 +278,7 @@ int summarize(const std::string& path) {
 int main(int argc, char** argv) {
   try {
     std::string data = "../shared/data", out = "out/bench-stereo", label_order = "sequential",
-                maxflow = "dynamic", near_levels = std::string(to_string(NearLevels::original));
+                maxflow = "dynamic", near_levels;
     Settings settings;
     bool header = false;
     c2f::examples::ToolOptions options(
@@ -299,8 +300,8 @@ int main(int argc, char** argv) {
         .integer("c2f-near-radius", &settings.c2f_near_radius, {0, 1000000},
                  "near moves of this radius in the coarse-to-fine run (0: whole moves only)")
         .text("near-levels", &near_levels,
-              "where near moves are made: original (the original problem only; coarse levels "
-              "make whole moves) or all")
+              "where the coarse-to-fine run makes near moves: original (the default: the "
+              "original problem only; coarse levels make whole moves) or all")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
@@ -310,8 +311,12 @@ int main(int argc, char** argv) {
         "--label-order", [&] { return visit_order_from_string(label_order); });
     settings.maxflow =
         c2f::examples::with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow); });
-    settings.near_levels = c2f::examples::with_flag(
-        "--near-levels", [&] { return near_levels_from_string(near_levels); });
+    if (!near_levels.empty()) {
+      settings.near_levels = c2f::examples::with_flag(
+          "--near-levels", [&] { return near_levels_from_string(near_levels); });
+      if (settings.c2f_near_radius == 0)
+        throw std::invalid_argument("--near-levels: has no effect without --c2f-near-radius");
+    }
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",
                              [&] { return parse_stereo_schedule(settings.schedule); });

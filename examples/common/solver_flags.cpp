@@ -23,8 +23,9 @@ void SolverFlags::declare(ToolOptions& options) {
                "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
                "most 1e-4 of the energy (convergence: three sweeps without decrease)")
       .text("near-levels", &near_levels_,
-            "where --near-radius applies: original (the original problem only; coarse levels "
-            "make whole moves: the faster coarse-to-fine run, docs/results.md) or all")
+            "where --near-radius applies: original (the default: the original problem only; "
+            "coarse levels make whole moves, the faster coarse-to-fine run, docs/results.md) or "
+            "all")
       .text("label-order", &label_order_,
             "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
             "random, or frequency (labels of most variables first, counted when each level "
@@ -36,8 +37,12 @@ SolverChoice SolverFlags::choice() const {
   choice.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
   choice.order = with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
   choice.near_radius = near_radius_;
-  choice.near_levels =
-      with_flag("--near-levels", [&] { return near_levels_from_string(near_levels_); });
+  if (!near_levels_.empty()) {
+    choice.near_levels =
+        with_flag("--near-levels", [&] { return near_levels_from_string(near_levels_); });
+    if (near_radius_ == 0)
+      throw std::invalid_argument("--near-levels: has no effect without --near-radius");
+  }
   if (const std::string problem = choice.validate(); !problem.empty())
     throw std::invalid_argument((near_radius_ > 0 ? "--near-radius or --label-order with --solver "
                                                   : "--label-order with --solver ") +

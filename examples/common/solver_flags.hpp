@@ -24,7 +24,7 @@ class SolverFlags {
 
  private:
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
-              near_levels_ = std::string(to_string(NearLevels::original));
+              near_levels_;  // empty: not given (SolverChoice's default)
   double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
   int near_radius_ = 0;
 };

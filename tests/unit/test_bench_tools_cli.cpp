@@ -105,6 +105,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
        "--c2f-near-radius: expected an integer in [0, "},
       {"c2f-bench-stereo", "run Teddy --near-levels some",
        "--near-levels: unknown near-move levels 'some' (expected original or all)"},
+      {"c2f-bench-stereo", "run Teddy --flat-near-radius 5 --near-levels all",
+       "--near-levels: has no effect without --c2f-near-radius"},
       {"c2f-bench-stereo", "run Teddy Dolls", "unexpected argument 'Dolls'"},
       {"c2f-bench-segment", "run set name --time-limit 0",
        "--time-limit: expected a finite number in (0, 1e+07], got '0'"},
