@@ -97,35 +97,31 @@ struct Settings {
   NearLevels near_levels = NearLevels::original;  ///< where near moves are made
 };
 
-template <class Backend>
 Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::string& schedule,
           int near_radius, const Settings& settings, const std::string& trace_path) {
   const PairwiseEnergy& energy = problem.energy;
   ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape(),
                             slic_source(problem.guide));
-  ExpansionOptions expansion;
+  SolverChoice expansion;
   expansion.order = settings.label_order;
+  expansion.maxflow = settings.maxflow;
   expansion.near_radius = near_radius;
-  ExpansionSolver<Backend> solver(expansion);
-  ExpansionOptions coarse_expansion = expansion;
-  if (settings.near_levels == NearLevels::original) coarse_expansion.near_radius = 0;
-  ExpansionSolver<Backend> coarse_solver(coarse_expansion);
+  expansion.near_levels = settings.near_levels;
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
   options.plateau_steps_at_original =  // a whole sweep without decrease (near moves: three)
-      static_cast<int>(solver.sweep_steps(energy.num_labels()));
+      static_cast<int>(steps_per_sweep(expansion, energy.num_labels()));
   options.time_limit_seconds = settings.time_limit;
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
-  run.summary =
-      coarse_to_fine(energy, provider, coarse_solver, solver, options, [&](const StepEvent& event) {
-        writer(event);
-        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
-        return ObserverDecision::continue_run;
-      });
+  run.summary = coarse_to_fine(energy, provider, expansion, options, [&](const StepEvent& event) {
+    writer(event);
+    run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+    return ObserverDecision::continue_run;
+  });
   close_checked(file, trace_path);
   run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
                               scene.nonoccluded);
@@ -143,10 +139,8 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   // each stages its own files).
   OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
   auto solve_with = [&](const std::string& schedule, int near_radius, const std::string& trace) {
-    return with_maxflow_backend(settings.maxflow, [&]<class Backend>(Backend) {
-      return solve<Backend>(problem, scene, schedule, near_radius, settings,
-                            (output.staging() / trace).string());
-    });
+    return solve(problem, scene, schedule, near_radius, settings,
+                 (output.staging() / trace).string());
   };
   const Run flat = solve_with("flat", settings.flat_near_radius, name + "-flat.csv");
   const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, name + "-c2f.csv");
