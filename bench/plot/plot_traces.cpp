@@ -28,6 +28,9 @@ struct Series {
   std::vector<double> time, value;
 };
 
+/// The largest magnitude a plotted value (or a --gap-to reference) may have.
+constexpr double kMaxPlotValue = 1e300;
+
 Series read_trace(const std::string& name, const std::string& path, const std::string& column) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open trace '" + path + "'");
@@ -57,7 +60,7 @@ Series read_trace(const std::string& name, const std::string& path, const std::s
       const std::string& text = fields[static_cast<std::size_t>(col)];
       const std::optional<double> value = c2f::parse_real(text);
       const bool in_range =
-          value && (is_time ? *value >= 0.0 && *value <= 1e12 : std::abs(*value) <= 1e300);
+          value && (is_time ? *value >= 0.0 && *value <= 1e12 : std::abs(*value) <= kMaxPlotValue);
       if (!in_range) {
         throw std::runtime_error("trace '" + path + "' line " + std::to_string(number) + ": " +
                                  columns[static_cast<std::size_t>(col)] + " '" + text +
@@ -119,7 +122,7 @@ int main(int argc, char** argv) {
     std::optional<double> reference;
     if (!gap_to.empty()) {
       reference = c2f::parse_real(gap_to);
-      if (!reference || std::abs(*reference) > 1e300)
+      if (!reference || std::abs(*reference) > kMaxPlotValue)
         throw std::invalid_argument("--gap-to: expected a finite number, got '" + gap_to + "'");
     }
     std::vector<Series> series;
@@ -155,9 +158,10 @@ int main(int argc, char** argv) {
     cv::putText(plot, title, {left, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.7, black, 2);
     cv::putText(plot, "time (s, run clock)", {width / 2 - 70, height - 20},
                 cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
-    const std::string axis =
-        reference ? "log10 of (" + column + " - " + gap_to + ") / " + gap_to + ", floor -7"
-                  : column;
+    const std::string axis = reference
+                                 ? "log10 of the relative gap of " + column + " above " + gap_to +
+                                       " (floor " + format(std::log10(kGapFloor)) + ")"
+                                 : column;
     cv::putText(plot, axis, {8, top - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
     const cv::Scalar colours[] = {
         {200, 60, 30}, {30, 60, 220}, {40, 160, 40}, {160, 40, 160}, {0, 140, 200}};
