@@ -44,6 +44,7 @@ TEST_CASE("connected components keep refining sequences nested", "[lift][connect
         "cp:1,1/cc cp:2,1/cc cp:3,1/cc flat");
   CHECK(vision::parse_stereo_schedule("regions").to_string() ==
         "local:1,1/cc local:2,1/cc local:3,1/cc flat");
+  CHECK(vision::parse_stereo_schedule("aggregated").to_string() == "agg:1/cc flat");
   CHECK_THROWS_WITH(vision::parse_stereo_schedule("regions flat"),
                     Catch::Contains("'regions' stands alone"));
   CHECK(Schedule::parse("threshold:5/cc blocks:4").levels[0].connected);

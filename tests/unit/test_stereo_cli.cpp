@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -194,4 +195,28 @@ TEST_CASE("c2f-stereo replaces an earlier run's outputs only when it succeeds", 
        {"disparity.pfm", "disparity.png", "disparity-colour.png", "trace.csv", "summary.txt"})
     CHECK(second.count(file) == 1);
   CHECK(second.size() == 6);
+}
+
+TEST_CASE("c2f-stereo --schedule aggregated solves on a level of aggregated best labels",
+          "[stereo][cli][aggregated]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-aggregated";
+  std::filesystem::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 7);
+  const auto out = dir / "out";
+  const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+                     out.string() + " --labels 8 --schedule aggregated --near-radius 2 -q");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream summary(out / "summary.txt");
+  std::stringstream text;
+  text << summary.rdbuf();
+  CHECK_THAT(text.str(), Catch::Contains("schedule agg:1/cc flat"));
+  // One coarse level with fewer groups than the 48 x 32 pixels, then the original problem.
+  const std::string groups_line = "partition agg:1/cc: ";
+  const auto at = text.str().find(groups_line);
+  REQUIRE(at != std::string::npos);
+  const long groups = std::stol(text.str().substr(at + groups_line.size()));
+  CHECK(groups > 0);
+  CHECK(groups < 48 * 32);
+  CHECK_THAT(text.str(), Catch::Contains("level 1: 1536 variables"));
 }

@@ -5,6 +5,7 @@
 #include <utility>
 #include <variant>
 
+#include "c2f/lift/aggregated_best_labels.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/local_grouping.hpp"
 #include "c2f/lift/threshold_partition.hpp"
@@ -28,6 +29,8 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
   }
   if (const auto* threshold = std::get_if<ThresholdLevel>(&spec.partition))
     return threshold_partition(view, shape_, threshold->tau, threshold->radius);
+  if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition))
+    return aggregated_best_labels(view, shape_, aggregated->radius);
   if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))
     return block_partition(shape_, static_cast<std::size_t>(blocks->size));
   return superpixels(std::get<SlicLevel>(spec.partition), previous);

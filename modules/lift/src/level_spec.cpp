@@ -20,6 +20,9 @@ struct LevelText {
   std::string operator()(const SlicLevel& l) const {
     return "slic:" + std::to_string(l.region_size);
   }
+  std::string operator()(const AggregatedLevel& l) const {
+    return "agg:" + std::to_string(l.radius);
+  }
   std::string operator()(const BlockLevel& l) const { return "blocks:" + std::to_string(l.size); }
 };
 

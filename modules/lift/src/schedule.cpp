@@ -52,7 +52,8 @@ LevelSpec parse_level(const std::string& token) {
   }
   const auto colon = body.find(':');
   if (colon == std::string::npos) {
-    bad(token, "expected KIND:ARGS (cp, local, threshold, slic, blocks, auto), flat or a preset");
+    bad(token,
+        "expected KIND:ARGS (cp, local, threshold, slic, agg, blocks, auto), flat or a preset");
   }
   const std::string kind = body.substr(0, colon);
   const auto args = split(std::string_view(body).substr(colon + 1), ',');
@@ -75,6 +76,9 @@ LevelSpec parse_level(const std::string& token) {
   } else if (kind == "slic") {
     if (args.size() != 1) bad(token, "expected slic:SIZE");
     spec.partition = SlicLevel{whole_number(token, args[0], 2)};
+  } else if (kind == "agg") {
+    if (args.size() != 1) bad(token, "expected agg:RADIUS");
+    spec.partition = AggregatedLevel{whole_number(token, args[0], 0)};
   } else if (kind == "blocks") {
     if (args.size() != 1) bad(token, "expected blocks:SIZE");
     spec.partition = BlockLevel{whole_number(token, args[0], 1)};

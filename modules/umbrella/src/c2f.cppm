@@ -15,6 +15,8 @@ export module c2f;
 
 export namespace c2f {
 using c2f::add_binary_term;
+using c2f::aggregated_best_labels;
+using c2f::AggregatedLevel;
 using c2f::AnytimeSolver;
 using c2f::auto_levels;
 using c2f::aux_strategy_from_string;

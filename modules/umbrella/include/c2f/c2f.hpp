@@ -39,6 +39,7 @@
 #include "c2f/driver/rules.hpp"
 #include "c2f/driver/run_report.hpp"
 #include "c2f/driver/summary.hpp"
+#include "c2f/lift/aggregated_best_labels.hpp"
 #include "c2f/lift/auto_levels.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "c2f/lift/colour_passing.hpp"

@@ -33,14 +33,21 @@ struct SlicLevel {
   friend bool operator==(const SlicLevel&, const SlicLevel&) = default;
 };
 
+/// agg:R: pixels of equal best label after summing unaries over a (2R+1) x (2R+1) window
+/// (aggregated_best_labels.hpp).
+struct AggregatedLevel {
+  int radius = 1;
+  friend bool operator==(const AggregatedLevel&, const AggregatedLevel&) = default;
+};
+
 /// blocks:S: S x S pixel blocks.
 struct BlockLevel {
   int size = 1;
   friend bool operator==(const BlockLevel&, const BlockLevel&) = default;
 };
 
-using LevelPartition =
-    std::variant<ColourPassingLevel, LocalGroupingLevel, ThresholdLevel, SlicLevel, BlockLevel>;
+using LevelPartition = std::variant<ColourPassingLevel, LocalGroupingLevel, ThresholdLevel,
+                                    SlicLevel, AggregatedLevel, BlockLevel>;
 
 struct LevelSpec {
   LevelPartition partition;

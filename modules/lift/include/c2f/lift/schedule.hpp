@@ -7,6 +7,8 @@
 //   local:N_L,N_iter     the reference implementation's local grouping (local_grouping.hpp)
 //   threshold:TAU[,R]    threshold partition with L1 distance TAU, window radius R (default 1)
 //   slic:S               SLIC superpixels of region size S, nested into the previous level
+//   agg:R                pixels of equal best label after summing unaries over a (2R+1) x
+//                        (2R+1) window (aggregated_best_labels.hpp)
 //   blocks:S             S x S pixel blocks
 //   auto:F1,F2,...       colour-passing levels whose group counts are closest to the fractions
 //                        F1 < F2 < ... of the number of pixels (alone, optionally + flat)

@@ -15,6 +15,9 @@ namespace c2f::vision {
 /// paper-cc         cp:1,1/cc cp:2,1/cc cp:3,1/cc flat (split into connected components)
 /// regions          local:1,1/cc local:2,1/cc local:3,1/cc flat (connected regions of equal
 ///                  best-label tuples; docs/results.md)
+/// aggregated       agg:1/cc flat (connected regions of equal best label of the unaries
+///                  summed over 3 x 3 windows; with --plateau-tolerance 3e-5 and near moves
+///                  on the original problem, the best labeling at deadlines: docs/results.md)
 std::span<const SchedulePreset> stereo_schedule_presets();
 
 /// Schedule::parse with the stereo presets.

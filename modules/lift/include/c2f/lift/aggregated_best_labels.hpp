@@ -1,0 +1,22 @@
+#pragma once
+// Aggregated best labels: pixels whose unary costs, summed over a window around them, are
+// cheapest at the same label share a group. The sum smooths the per-pixel best labels (noisy
+// where the unaries are, as stereo matching costs are), so with /cc the groups are far fewer
+// and larger regions than those of equal per-pixel best labels (local:1,1/cc).
+
+#include "c2f/core/grid.hpp"
+#include "c2f/lift/dense_partition.hpp"
+#include "c2f/lift/lifting_view.hpp"
+
+namespace c2f {
+
+/// Pixel v = y * width + x of the width x height grid is in group l when l is the label with
+/// the least sum of unary costs over the pixels of the (2 radius + 1) x (2 radius + 1) window
+/// centred on v, clipped at the grid's border (ties: the smallest label). Groups are numbered
+/// in the order of their smallest pixel; they need not be connected (add /cc in a schedule, or
+/// connected_components()). radius 0: pixels share a group when their own cheapest labels are
+/// equal. O(N * L * (2 radius + 1)) time, O(width * L * (2 radius + 2)) extra memory. Throws
+/// std::invalid_argument when the view does not have width * height variables or radius < 0.
+DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius);
+
+}  // namespace c2f

@@ -1,0 +1,94 @@
+// Aggregated best labels (agg:R): groups of equal best label after summing unaries over a
+// window, against the sums taken pixel by pixel.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "c2f/lift/aggregated_best_labels.hpp"
+#include "c2f/lift/connected_components.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+namespace {
+
+/// The partition by the definition: every pixel's window sums, one pixel at a time.
+DensePartition window_minimum_by_hand(const PairwiseEnergy& energy, GridShape shape, int radius) {
+  const auto w = static_cast<long>(shape.width), h = static_cast<long>(shape.height);
+  std::vector<std::int64_t> best(shape.size());
+  for (long y = 0; y < h; ++y) {
+    for (long x = 0; x < w; ++x) {
+      std::vector<double> sums(static_cast<std::size_t>(energy.num_labels()), 0.0);
+      for (long y2 = std::max(0L, y - radius); y2 <= std::min(h - 1, y + radius); ++y2)
+        for (long x2 = std::max(0L, x - radius); x2 <= std::min(w - 1, x + radius); ++x2)
+          for (std::size_t l = 0; l < sums.size(); ++l)
+            sums[l] += energy.unary(static_cast<std::size_t>(y2 * w + x2), static_cast<Label>(l));
+      best[static_cast<std::size_t>(y * w + x)] =
+          std::min_element(sums.begin(), sums.end()) - sums.begin();
+    }
+  }
+  return DensePartition::from_ids(best);
+}
+
+}  // namespace
+
+TEST_CASE("aggregated best labels group pixels by their window's cheapest label",
+          "[lift][aggregated]") {
+  // A 5x1 row, 2 labels: label 1 is cheap only at pixel 2, by enough to win the windows that
+  // hold it once the radius reaches them.
+  const std::vector<double> unaries{0, 1, 0, 1, 4, 0, 0, 1, 0, 1};
+  const PairwiseEnergy row(5, 2, unaries, {}, {});
+  auto groups = [&](int radius) {
+    const DensePartition p = aggregated_best_labels(lifting_view(row), {5, 1}, radius);
+    return std::vector<VariableIndex>(p.group_ids().begin(), p.group_ids().end());
+  };
+  CHECK(groups(0) == std::vector<VariableIndex>{0, 0, 1, 0, 0});
+  CHECK(groups(1) == std::vector<VariableIndex>{0, 1, 1, 1, 0});  // pixels 1-3: 4 against 2
+  // Radius 2: label 1 wins every window but pixel 2's, which holds the whole row and ties
+  // (4 against 4): the smaller label, 0.
+  CHECK(groups(2) == std::vector<VariableIndex>{0, 0, 1, 0, 0});
+  CHECK_THROWS_WITH(aggregated_best_labels(lifting_view(row), {5, 1}, -1),
+                    Catch::Contains("radius must be >= 0"));
+  CHECK_THROWS_WITH(aggregated_best_labels(lifting_view(row), {2, 2}, 1),
+                    Catch::Contains("the energy has 5 variables"));
+}
+
+TEST_CASE("aggregated best labels equal the window sums taken pixel by pixel",
+          "[lift][aggregated][property]") {
+  Rng rng(31);
+  for (int trial = 0; trial < 60; ++trial) {
+    const GridShape shape{static_cast<std::size_t>(1 + trial % 7),
+                          static_cast<std::size_t>(1 + trial % 5)};
+    const int radius = trial % 4;
+    const PairwiseEnergy energy = random_grid_energy(rng, shape.width, shape.height, 2 + trial % 4);
+    INFO("trial " << trial << ": " << shape.width << "x" << shape.height << ", radius " << radius);
+    CHECK(aggregated_best_labels(lifting_view(energy), shape, radius) ==
+          window_minimum_by_hand(energy, shape, radius));
+  }
+}
+
+TEST_CASE("agg levels parse, print and build through the schedule",
+          "[lift][aggregated][schedule]") {
+  const Schedule schedule = Schedule::parse("agg:2 agg:1/cc");
+  CHECK(schedule.to_string() == "agg:2 agg:1/cc flat");
+  CHECK(std::get<AggregatedLevel>(schedule.levels[1].partition) == AggregatedLevel{1});
+  CHECK(Schedule::parse("agg:0").levels[0].partition == LevelPartition{AggregatedLevel{0}});
+  CHECK_THROWS_WITH(Schedule::parse("agg:-1"), Catch::Contains("'-1' must be a whole number >= 0"));
+  CHECK_THROWS_WITH(Schedule::parse("agg:1,2"), Catch::Contains("expected agg:RADIUS"));
+  CHECK_THROWS_WITH(Schedule::parse("agg:x"), Catch::Contains("'x' is not a number"));
+
+  Rng rng(8);
+  const GridShape shape{16, 12};
+  const PairwiseEnergy energy = random_grid_energy(rng, shape.width, shape.height, 4);
+  ScheduleProvider provider(Schedule::parse("agg:1/cc"), shape);
+  const auto level = provider.next(energy);
+  REQUIRE(level);
+  CHECK(*level ==
+        connected_components(aggregated_best_labels(lifting_view(energy), shape, 1), shape));
+}
