@@ -71,6 +71,9 @@ TEST_CASE("aggregated best labels equal the window sums taken pixel by pixel",
     CHECK(aggregated_best_labels(lifting_view(energy), shape, radius) ==
           window_minimum_by_hand(energy, shape, radius));
   }
+  // A window larger than the grid is the whole grid for every pixel, found in O(N * L).
+  const PairwiseEnergy energy = random_grid_energy(rng, 300, 200, 3);
+  CHECK(aggregated_best_labels(lifting_view(energy), {300, 200}, 1'000'000'000).num_groups() == 1);
 }
 
 TEST_CASE("agg levels parse, print and build through the schedule",

@@ -11,21 +11,23 @@ namespace c2f {
 namespace {
 
 /// Row y's horizontal window sums, label-minor: out[x * L + l] = sum over x' in
-/// [x - radius, x + radius] (clipped) of unary(y * width + x', l).
+/// [x - radius, x + radius] (clipped) of unary(y * width + x', l). O(width * L) whatever the
+/// radius: differences of prefix sums (`prefix` is scratch).
 void row_window_sums(const LiftingView& view, GridShape shape, std::size_t y, std::size_t radius,
-                     std::vector<double>& out) {
+                     std::vector<double>& prefix, std::vector<double>& out) {
   const std::size_t w = shape.width;
   const auto L = static_cast<std::size_t>(view.num_labels);
   const double* row = view.unaries.data() + y * w * L;
-  out.assign(w * L, 0.0);
+  prefix.assign((w + 1) * L, 0.0);
+  for (std::size_t x = 0; x < w; ++x)
+    for (std::size_t l = 0; l < L; ++l)
+      prefix[(x + 1) * L + l] = prefix[x * L + l] + row[x * L + l];
+  out.resize(w * L);
   for (std::size_t x = 0; x < w; ++x) {
     const std::size_t first = x >= radius ? x - radius : 0;
-    const std::size_t last = std::min(w - 1, x + radius);
-    double* sums = out.data() + x * L;
-    for (std::size_t x2 = first; x2 <= last; ++x2) {
-      const double* costs = row + x2 * L;
-      for (std::size_t l = 0; l < L; ++l) sums[l] += costs[l];
-    }
+    const std::size_t end = std::min(w, x + 1 + std::min(radius, w));
+    for (std::size_t l = 0; l < L; ++l)
+      out[x * L + l] = prefix[end * L + l] - prefix[first * L + l];
   }
 }
 
@@ -37,28 +39,27 @@ DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, 
   const std::size_t w = shape.width, h = shape.height;
   const auto L = static_cast<std::size_t>(view.num_labels);
   const auto r = static_cast<std::size_t>(radius);
-  // The window's rows' horizontal sums, kept for rows y - r .. y + r in a ring of 2r + 1 rows.
-  const std::size_t ring_rows = std::min(h, 2 * r + 1);
-  std::vector<std::vector<double>> ring(ring_rows);
-  std::vector<double> window(w * L);
+  // The window's sums slide down the grid: a row's horizontal sums are added as the row enters
+  // the window and computed again and subtracted as it leaves.
+  std::vector<double> window(w * L, 0.0), sums, prefix;
   std::vector<std::int64_t> best(shape.size());
-  std::size_t next_row = 0;  // the next row whose sums enter the ring
+  std::size_t entered = 0, left = 0;  // rows [left, entered) are in the window
   for (std::size_t y = 0; y < h; ++y) {
     const std::size_t first = y >= r ? y - r : 0;
-    const std::size_t last = std::min(h - 1, y + r);
-    for (; next_row <= last; ++next_row)
-      row_window_sums(view, shape, next_row, r, ring[next_row % ring_rows]);
-    // Summed row by row in a fixed order, so equal windows give equal sums.
-    std::fill(window.begin(), window.end(), 0.0);
-    for (std::size_t y2 = first; y2 <= last; ++y2) {
-      const std::vector<double>& sums = ring[y2 % ring_rows];
+    const std::size_t end = std::min(h, y + 1 + std::min(r, h));
+    for (; entered < end; ++entered) {
+      row_window_sums(view, shape, entered, r, prefix, sums);
       for (std::size_t k = 0; k < window.size(); ++k) window[k] += sums[k];
     }
+    for (; left < first; ++left) {
+      row_window_sums(view, shape, left, r, prefix, sums);
+      for (std::size_t k = 0; k < window.size(); ++k) window[k] -= sums[k];
+    }
     for (std::size_t x = 0; x < w; ++x) {
-      const double* sums = window.data() + x * L;
+      const double* costs = window.data() + x * L;
       std::size_t label = 0;
       for (std::size_t l = 1; l < L; ++l)
-        if (sums[l] < sums[label]) label = l;
+        if (costs[l] < costs[label]) label = l;
       best[y * w + x] = static_cast<std::int64_t>(label);
     }
   }

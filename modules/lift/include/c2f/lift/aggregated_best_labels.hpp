@@ -15,7 +15,8 @@ namespace c2f {
 /// centred on v, clipped at the grid's border (ties: the smallest label). Groups are numbered
 /// in the order of their smallest pixel; they need not be connected (add /cc in a schedule, or
 /// connected_components()). radius 0: pixels share a group when their own cheapest labels are
-/// equal. O(N * L * (2 radius + 1)) time, O(width * L * (2 radius + 2)) extra memory. Throws
+/// equal. O(N * L) time whatever the radius, O(width * L) extra memory: the sums slide across
+/// the grid, so they are exact up to rounding, and rounding may break near-ties. Throws
 /// std::invalid_argument when the view does not have width * height variables or radius < 0.
 DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius);
 
