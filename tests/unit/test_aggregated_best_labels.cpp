@@ -40,8 +40,8 @@ DensePartition window_minimum_by_hand(const PairwiseEnergy& energy, GridShape sh
 
 TEST_CASE("aggregated best labels group pixels by their window's cheapest label",
           "[lift][aggregated]") {
-  // A 5x1 row, 2 labels: label 1 is cheap only at pixel 2, by enough to win the windows that
-  // hold it once the radius reaches them.
+  // A 5x1 row, 2 labels: label 1 is 4 cheaper than label 0 at pixel 2 and 1 dearer at every
+  // other pixel, so it wins the windows that hold pixel 2 and fewer than four others.
   const std::vector<double> unaries{0, 1, 0, 1, 4, 0, 0, 1, 0, 1};
   const PairwiseEnergy row(5, 2, unaries, {}, {});
   auto groups = [&](int radius) {
