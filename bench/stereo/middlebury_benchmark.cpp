@@ -4,12 +4,13 @@
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
-//                    [--flat-near-radius R] [--c2f-near-radius R] [--near-levels original|all]
+//                    [--flat-near-radius R] [--c2f-near-radius R] [--flat-shift-moves]
+//                    [--c2f-shift-moves] [--near-levels original|all]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
-//       backend, default dynamic; near moves of radius R, MoveOptions::near_radius, in either
-//       run on request, on the original problem only or on every level: with `--schedule flat`
-//       this compares two flat solvers),
+//       backend, default dynamic; near moves of radius R, MoveOptions::near_radius, and shift
+//       moves, MoveOptions::shift_moves, in either run on request, on the original problem
+//       only or on every level: with `--schedule flat` this compares two flat solvers),
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
@@ -94,11 +95,14 @@ struct Settings {
   int labels = 85;
   int flat_near_radius = 0;                       ///< MoveOptions::near_radius of the flat run
   int c2f_near_radius = 0;                        ///< and of the coarse-to-fine run
-  NearLevels near_levels = NearLevels::original;  ///< where near moves are made
+  bool flat_shift_moves = false;                  ///< MoveOptions::shift_moves of the flat run
+  bool c2f_shift_moves = false;                   ///< and of the coarse-to-fine run
+  NearLevels near_levels = NearLevels::original;  ///< where near and shift moves are made
 };
 
 Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::string& schedule,
-          int near_radius, const Settings& settings, const std::string& trace_path) {
+          int near_radius, bool shift_moves, const Settings& settings,
+          const std::string& trace_path) {
   const PairwiseEnergy& energy = problem.energy;
   ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape(),
                             slic_source(problem.guide));
@@ -106,11 +110,12 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   expansion.order = settings.label_order;
   expansion.maxflow = settings.maxflow;
   expansion.near_radius = near_radius;
+  expansion.shift_moves = shift_moves;
   expansion.near_levels = settings.near_levels;
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;
-  options.plateau_steps_at_original =  // a whole sweep without decrease (near moves: three)
+  options.plateau_steps_at_original =  // a sweep without decrease (near moves: three)
       static_cast<int>(steps_per_sweep(expansion, energy.num_labels()));
   options.time_limit_seconds = settings.time_limit;
   Run run;
@@ -138,12 +143,15 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
-  auto solve_with = [&](const std::string& schedule, int near_radius, const std::string& trace) {
-    return solve(problem, scene, schedule, near_radius, settings,
+  auto solve_with = [&](const std::string& schedule, int near_radius, bool shift_moves,
+                        const std::string& trace) {
+    return solve(problem, scene, schedule, near_radius, shift_moves, settings,
                  (output.staging() / trace).string());
   };
-  const Run flat = solve_with("flat", settings.flat_near_radius, name + "-flat.csv");
-  const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, name + "-c2f.csv");
+  const Run flat =
+      solve_with("flat", settings.flat_near_radius, settings.flat_shift_moves, name + "-flat.csv");
+  const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, settings.c2f_shift_moves,
+                             name + "-c2f.csv");
 
   const double flat_final = flat.summary.energy;
   double reach = std::nan("");
@@ -293,9 +301,13 @@ int main(int argc, char** argv) {
                  "near moves of this radius in the flat run (0: whole moves only)")
         .integer("c2f-near-radius", &settings.c2f_near_radius, {0, 1000000},
                  "near moves of this radius in the coarse-to-fine run (0: whole moves only)")
+        .flag("flat-shift-moves", &settings.flat_shift_moves,
+              "shift moves (every variable one label up, then down) in the flat run's sweeps")
+        .flag("c2f-shift-moves", &settings.c2f_shift_moves,
+              "shift moves in the coarse-to-fine run's sweeps")
         .text("near-levels", &near_levels,
-              "where the coarse-to-fine run makes near moves: original (the default: the "
-              "original problem only; coarse levels make whole moves) or all")
+              "where the coarse-to-fine run makes near and shift moves: original (the default: "
+              "the original problem only; coarse levels make whole moves) or all")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
@@ -308,8 +320,10 @@ int main(int argc, char** argv) {
     if (!near_levels.empty()) {
       settings.near_levels = c2f::examples::with_flag(
           "--near-levels", [&] { return near_levels_from_string(near_levels); });
-      if (settings.c2f_near_radius == 0)
-        throw std::invalid_argument("--near-levels: has no effect without --c2f-near-radius");
+      if (settings.c2f_near_radius == 0 && !settings.c2f_shift_moves) {
+        throw std::invalid_argument(
+            "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves");
+      }
     }
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",

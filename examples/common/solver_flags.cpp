@@ -22,10 +22,14 @@ void SolverFlags::declare(ToolOptions& options) {
                "only the variables within r edges of that label or of a pixel whose cheapest "
                "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
                "most 1e-4 of the energy (convergence: three sweeps without decrease)")
+      .flag("shift-moves", &shift_moves_,
+            "expansion: every sweep begins with two moves in which every variable may step one "
+            "label up, then down, at once (moves regions that are off by one label, e.g. one "
+            "disparity; convergence: no expansion or shift move helps)")
       .text("near-levels", &near_levels_,
-            "where --near-radius applies: original (the default: the original problem only; "
-            "coarse levels make whole moves, the faster coarse-to-fine run, docs/results.md) or "
-            "all")
+            "where --near-radius and --shift-moves apply: original (the default: the original "
+            "problem only; coarse levels make whole moves, the faster coarse-to-fine run, "
+            "docs/results.md) or all")
       .text("label-order", &label_order_,
             "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
             "random, or frequency (labels of most variables first, counted when each level "
@@ -37,16 +41,23 @@ SolverChoice SolverFlags::choice() const {
   choice.kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
   choice.order = with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
   choice.near_radius = near_radius_;
+  choice.shift_moves = shift_moves_;
   if (!near_levels_.empty()) {
     choice.near_levels =
         with_flag("--near-levels", [&] { return near_levels_from_string(near_levels_); });
-    if (near_radius_ == 0)
-      throw std::invalid_argument("--near-levels: has no effect without --near-radius");
+    if (near_radius_ == 0 && !shift_moves_) {
+      throw std::invalid_argument(
+          "--near-levels: has no effect without --near-radius or --shift-moves");
+    }
   }
-  if (const std::string problem = choice.validate(); !problem.empty())
-    throw std::invalid_argument((near_radius_ > 0 ? "--near-radius or --label-order with --solver "
-                                                  : "--label-order with --solver ") +
-                                solver_ + ": " + problem);
+  if (const std::string problem = choice.validate(); !problem.empty()) {
+    // The flags that may have asked for what the solver lacks, e.g. "--near-radius or
+    // --label-order".
+    std::string flags = near_radius_ > 0 ? "--near-radius" : "";
+    if (shift_moves_) flags += flags.empty() ? "--shift-moves" : ", --shift-moves";
+    flags += flags.empty() ? "--label-order" : " or --label-order";
+    throw std::invalid_argument(flags + " with --solver " + solver_ + ": " + problem);
+  }
   choice.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
   if (!maxflow_available(choice.maxflow)) {
     throw std::invalid_argument("--maxflow " + maxflow_ +

@@ -1,7 +1,7 @@
 #pragma once
 // The options that choose a solver and end its run, shared by the tools that offer every
 // solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --near-radius,
-// --near-levels, --label-order, and
+// --shift-moves, --near-levels, --label-order, and
 // --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
 
 #include <string>
@@ -14,7 +14,7 @@ namespace c2f::examples {
 
 class SolverFlags {
  public:
-  /// Declares the six options in `options` (this object receives their values, so it must
+  /// Declares the seven options in `options` (this object receives their values, so it must
   /// outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -27,6 +27,7 @@ class SolverFlags {
               near_levels_;  // empty: not given (SolverChoice's default)
   double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
   int near_radius_ = 0;
+  bool shift_moves_ = false;
 };
 
 /// The options that end levels and the run; the values are public (defaults as shown).

@@ -43,10 +43,15 @@ StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, b
   return {std::move(problem), seconds};
 }
 
-/// ", near moves of radius R on ..." when the solver makes near moves, else "".
+/// ", near moves of radius R and shift moves on ..." for the near and shift moves the solver
+/// makes, else "".
 std::string near_moves_text(const SolverChoice& solver) {
-  if (solver.kind != SolverKind::expansion || solver.near_radius == 0) return {};
-  return ", near moves of radius " + std::to_string(solver.near_radius) +
+  if (solver.kind != SolverKind::expansion) return {};
+  std::string moves;
+  if (solver.near_radius > 0) moves = "near moves of radius " + std::to_string(solver.near_radius);
+  if (solver.shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
+  if (moves.empty()) return {};
+  return ", " + moves +
          (solver.near_levels == NearLevels::original ? " on the original problem only"
                                                      : " on every level");
 }

@@ -32,10 +32,11 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .text("schedule", &schedule,
             "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic "
             "(the same three levels with another partition kind), paper-cc (split into connected "
-            "components), regions (connected regions of equal best labels; fastest measured: "
-            "local:1,1/cc with --plateau-tolerance 3e-5), aggregated (agg:1/cc flat: connected "
-            "regions of equal best label of 3x3-summed unaries; best labeling at deadlines with "
-            "--plateau-tolerance 3e-5 --near-radius 5), "
+            "components), regions (connected regions of equal best labels; fastest with whole "
+            "moves only: local:1,1/cc with --plateau-tolerance 3e-5), aggregated (agg:1/cc flat: "
+            "connected regions of equal best label of 3x3-summed unaries; fastest measured and "
+            "best labeling at deadlines with --plateau-tolerance 3e-5 --near-radius 5 "
+            "--shift-moves), "
             "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")
       .flag("allow-non-refining", &command.allow_non_refining,
             "accept levels that do not refine each other (labels handed down by majority vote)")

@@ -106,7 +106,7 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-stereo", "run Teddy --near-levels some",
        "--near-levels: unknown near-move levels 'some' (expected original or all)"},
       {"c2f-bench-stereo", "run Teddy --flat-near-radius 5 --near-levels all",
-       "--near-levels: has no effect without --c2f-near-radius"},
+       "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves"},
       {"c2f-bench-stereo", "run Teddy Dolls", "unexpected argument 'Dolls'"},
       {"c2f-bench-segment", "run set name --time-limit 0",
        "--time-limit: expected a finite number in (0, 1e+07], got '0'"},

@@ -81,6 +81,19 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   near.kind = SolverKind::swap;
   CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
   CHECK(near.move_options().near_radius == 0);
+  SolverChoice shift;
+  shift.shift_moves = true;
+  CHECK(steps_per_sweep(shift, 7) == 9);  // L expansion moves and two shift moves
+  shift.near_radius = 3;
+  CHECK(steps_per_sweep(shift, 7) == 27);
+  CHECK(shift.move_options().shift_moves);
+  CHECK_FALSE(shift.coarse_move_options().shift_moves);  // on the original problem only
+  shift.near_levels = NearLevels::all;
+  CHECK(shift.coarse_move_options().shift_moves);
+  shift.near_radius = 0;
+  shift.kind = SolverKind::lbp;
+  CHECK_THAT(shift.validate(), Catch::Contains("shift moves are made by expansion"));
+  CHECK_FALSE(shift.move_options().shift_moves);
   CHECK_THROWS_WITH(
       solver_kind_from_string("trws"),
       Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));

@@ -104,6 +104,45 @@ TEST_CASE("c2f-stereo makes near moves on the levels --near-levels names, and sa
   CHECK(original_trace != all_trace);  // the coarse level moves differently
 }
 
+TEST_CASE(
+    "c2f-stereo with shift moves descends, ends after a quiet sweep of L + 2 steps, and "
+    "says so",
+    "[stereo][cli][shift]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-shift";
+  std::filesystem::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 7);
+  const int labels = 8;
+  const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+                     (dir / "out").string() + " --labels " + std::to_string(labels) +
+                     " --schedule \"local:1,1/cc flat\" --shift-moves -q");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream summary(dir / "out" / "summary.txt");
+  std::string line;
+  std::getline(summary, line);
+  std::getline(summary, line);
+  CHECK_THAT(line, Catch::EndsWith("shift moves on the original problem only"));
+  // trace.csv: time_s,level,step,energy,num_vars; the original problem is the last level.
+  std::ifstream trace(dir / "out" / "trace.csv");
+  std::getline(trace, line);
+  std::vector<double> energies;
+  std::string last_level;
+  while (std::getline(trace, line)) {
+    const std::size_t level_end = line.find(',', line.find(',') + 1);
+    const std::string level = line.substr(line.find(',') + 1, level_end - line.find(',') - 1);
+    if (level != last_level) energies.clear();
+    last_level = level;
+    std::size_t at = 0;
+    for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
+    energies.push_back(std::stod(line.substr(at)));
+  }
+  REQUIRE(energies.size() > labels + 2);
+  CHECK(std::is_sorted(energies.rbegin(), energies.rend()));  // never increases
+  // The default final plateau is one sweep: L expansion moves and the two shift moves.
+  const auto quiet = std::count(energies.begin(), energies.end(), energies.back()) - 1;
+  CHECK(quiet == labels + 2);
+}
+
 TEST_CASE("c2f-stereo gives the same disparities on every max-flow backend", "[stereo][cli]") {
   // Integer-valued costs are not guaranteed here, so ties between minimum cuts could in
   // principle be broken differently; on this small scene all backends agree exactly.

@@ -67,6 +67,9 @@ std::string SolverChoice::validate() const {
   }
   if (near_radius != 0 && kind != SolverKind::expansion)
     return "near moves are expansion moves; solver '" + std::string(to_string(kind)) + "' has none";
+  if (shift_moves && kind != SolverKind::expansion)
+    return "shift moves are made by expansion; solver '" + std::string(to_string(kind)) +
+           "' has none";
   if (kind == SolverKind::expansion) return move_options().validate();
   return {};
 }

@@ -78,10 +78,10 @@ decltype(auto) with_maxflow_backend(MaxFlowKind kind, F&& f) {
       "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
 }
 
-/// Where expansion's near moves (SolverChoice::near_radius > 0) are made in a coarse-to-fine
-/// run.
+/// Where expansion's near moves (SolverChoice::near_radius > 0) and shift moves
+/// (SolverChoice::shift_moves) are made in a coarse-to-fine run.
 enum class NearLevels {
-  original,  ///< on the original problem only; coarse levels make whole moves
+  original,  ///< on the original problem only; coarse levels make whole expansion moves only
   all,       ///< on every level
 };
 
@@ -97,10 +97,11 @@ struct SolverChoice {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
   /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
-  int near_radius = 0;  ///< expansion: MoveOptions::near_radius (0: whole moves only)
-  /// expansion with near_radius > 0: the levels that make near moves. On the original problem
-  /// only (the default) was the faster coarse-to-fine run in every measurement
-  /// (docs/results.md, "Near moves on the original problem only").
+  int near_radius = 0;       ///< expansion: MoveOptions::near_radius (0: whole moves only)
+  bool shift_moves = false;  ///< expansion: MoveOptions::shift_moves
+  /// expansion with near_radius > 0 or shift_moves: the levels that make near and shift moves.
+  /// On the original problem only (the default) was the faster coarse-to-fine run in every
+  /// measurement (docs/results.md, "Near moves on the original problem only").
   NearLevels near_levels = NearLevels::original;
 
   /// The MoveOptions of expansion and swap on the original problem.
@@ -110,12 +111,16 @@ struct SolverChoice {
     options.seed = seed;
     options.graph_memory_limit = graph_memory_limit;
     options.near_radius = kind == SolverKind::expansion ? near_radius : 0;
+    options.shift_moves = kind == SolverKind::expansion && shift_moves;
     return options;
   }
-  /// The same on coarse levels (without near moves unless near_levels is all).
+  /// The same on coarse levels (without near and shift moves unless near_levels is all).
   [[nodiscard]] MoveOptions coarse_move_options() const {
     MoveOptions options = move_options();
-    if (near_levels == NearLevels::original) options.near_radius = 0;
+    if (near_levels == NearLevels::original) {
+      options.near_radius = 0;
+      options.shift_moves = false;
+    }
     return options;
   }
 
@@ -126,7 +131,8 @@ struct SolverChoice {
 /// Steps without a decrease that mean convergence with this solver on an energy with
 /// num_labels labels: one sweep of its moves (the solver's steps_per_sweep).
 std::size_t steps_per_sweep(SolverKind kind, int num_labels);
-/// The same for the chosen solver with its options (expansion with near moves: three sweeps).
+/// The same for the chosen solver with its options (expansion with near moves: three sweeps;
+/// with shift moves, sweeps of L + 2 steps).
 std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels);
 
 /// coarse_to_fine (see c2f/driver/coarse_to_fine.hpp) with the chosen solver, built fresh for

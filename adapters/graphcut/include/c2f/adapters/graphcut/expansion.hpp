@@ -4,7 +4,9 @@
 //
 // One step() = one expansion move for one label alpha: every variable may switch to alpha
 // (with MoveOptions::near_radius, only the variables near alpha, in sweeps that alternate with
-// whole sweeps: see there and detail/near_moves.hpp).
+// whole sweeps: see there and detail/near_moves.hpp). A sweep is one move per label; with
+// MoveOptions::shift_moves it begins with two shift moves, in which every variable may step
+// one label up (then down) at once (detail/shift_moves.hpp).
 // Labels are cycled in the configured order, restarting at the first label on every bind()
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
 // level handed a labeling, or on the original problem after coarse levels, the moves that
@@ -32,6 +34,7 @@
 #include "c2f/adapters/graphcut/detail/expansion_problems.hpp"
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
+#include "c2f/adapters/graphcut/detail/shift_moves.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
@@ -56,22 +59,22 @@ class ExpansionSolver {
     return static_cast<std::size_t>(num_labels);
   }
 
-  /// Steps without a decrease that mean convergence with these options: one sweep; with near
-  /// moves (MoveOptions::near_radius) three. Near and whole moves come in sweeps of L moves,
-  /// aligned with the label cycle's passes, and a near sweep without decrease is always
-  /// followed by a whole one; so 3L steps without decrease hold two complete sweeps, one of
-  /// them a whole sweep that found nothing.
+  /// Steps without a decrease that mean convergence with these options: one sweep (L moves,
+  /// L + 2 with shift moves); with near moves (MoveOptions::near_radius) three sweeps. Near
+  /// and whole moves come in sweeps aligned with the label cycle's passes, and a near sweep
+  /// without decrease is always followed by a whole one; so three sweeps' steps without
+  /// decrease hold two complete sweeps, one of them a whole sweep that found nothing.
   [[nodiscard]] std::size_t sweep_steps(int num_labels) const noexcept {
-    return (options_.near_radius > 0 ? 3 : 1) * steps_per_sweep(num_labels);
+    return (options_.near_radius > 0 ? 3 : 1) * (shift_steps() + steps_per_sweep(num_labels));
   }
 
   /// Starts from `start` (validated); fixes the move graphs' topology. Of
   /// options.graph_memory_limit, up to a quarter keeps every label's move problem (d, p) for
-  /// patching, the rest recycled move graphs.
+  /// patching, the rest recycled move graphs (keys: the labels, then shifts up and down).
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     problems_.bind(energy, options_.graph_memory_limit / 4);
     state_.bind(energy, start, "ExpansionSolver::bind: start",
-                static_cast<std::size_t>(energy.num_labels()),
+                static_cast<std::size_t>(energy.num_labels()) + shift_steps(),
                 options_.graph_memory_limit - problems_.memory_bytes());
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
@@ -82,34 +85,30 @@ class ExpansionSolver {
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
     if (options_.near_radius > 0) near_.bind(energy, options_.near_radius);
-    near_moves_done_ = 0;
-    whole_moves_left_ = 0;
+    sweep_steps_done_ = 0;
+    whole_sweep_ = options_.near_radius == 0;
   }
 
   /// Frees what bind() built (move problems, recycled graphs, near-move graphs); the options
   /// stay. bind() again before the next step().
   void release() { *this = ExpansionSolver(options_); }
 
-  /// One expansion move; returns the energy afterwards (never larger than before).
+  /// One move (a sweep's shift moves first, then one expansion move per label); returns the
+  /// energy afterwards (never larger than before).
   double step() {
     if (state_.energy == nullptr)
       throw std::logic_error("ExpansionSolver::step: call bind() first");
-    const Label alpha = cycle_.next();
-    const auto num_labels = static_cast<std::size_t>(state_.energy->num_labels());
-    if (options_.near_radius > 0 && whole_moves_left_ == 0) {
-      if (near_moves_done_ == 0) near_sweep_start_ = state_.value;
-      near_move(alpha);
-      // A sweep of near moves that lowers the energy by at most near_sweep_gain of it hands
-      // over to a sweep of whole moves.
-      if (++near_moves_done_ >= num_labels) {
-        near_moves_done_ = 0;
-        const double gain = near_sweep_start_ - state_.value;
-        if (gain <= options_.near_sweep_gain * std::max(1.0, std::abs(near_sweep_start_)))
-          whole_moves_left_ = num_labels;
-      }
+    if (sweep_steps_done_ == 0) sweep_start_ = state_.value;
+    if (sweep_steps_done_ < shift_steps()) {
+      shift_move(sweep_steps_done_ == 0 ? 1 : -1);
+    } else if (whole_sweep_) {
+      whole_move(cycle_.next());
     } else {
-      whole_move(alpha);
-      if (whole_moves_left_ > 0) --whole_moves_left_;
+      near_move(cycle_.next());
+    }
+    if (++sweep_steps_done_ == shift_steps() + steps_per_sweep(state_.energy->num_labels())) {
+      sweep_steps_done_ = 0;
+      end_sweep();
     }
     if (last_.improved) problems_.log_changes(moved_);
     return state_.value;
@@ -121,6 +120,38 @@ class ExpansionSolver {
   [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
 
  private:
+  /// Steps of a sweep spent on shift moves: up, then down.
+  [[nodiscard]] std::size_t shift_steps() const noexcept { return options_.shift_moves ? 2 : 0; }
+
+  /// Chooses the next sweep's moves. With near moves: a near sweep that lowered the energy by
+  /// at most near_sweep_gain of it hands over to one sweep of whole moves, then near again.
+  void end_sweep() {
+    if (options_.near_radius == 0) return;
+    if (whole_sweep_) {
+      whole_sweep_ = false;
+      return;
+    }
+    const double gain = sweep_start_ - state_.value;
+    whole_sweep_ = gain <= options_.near_sweep_gain * std::max(1.0, std::abs(sweep_start_));
+  }
+
+  /// The shift move by `shift` labels over every variable (detail/shift_moves.hpp).
+  void shift_move(int shift) {
+    const Labeling& labeling = state_.labeling;
+    shifted_.resize(labeling.size());
+    detail::shift_problem(*state_.energy, labeling, shift, shifted_, state_.d, state_.p);
+    const auto key = static_cast<std::size_t>(state_.energy->num_labels()) + (shift > 0 ? 0 : 1);
+    last_ = state_.solve_move(0, 0, key);
+    last_.shift = shift;
+    moved_.clear();
+    for (std::size_t i = 0; i < labeling.size(); ++i) {
+      const bool moves = state_.out[i] == MoveLabel::one && shifted_[i] != labeling[i];
+      state_.candidate[i] = moves ? shifted_[i] : labeling[i];
+      if (moves) moved_.push_back(static_cast<VariableIndex>(i));
+    }
+    state_.finish_move(last_, moved_.size(), options_.tolerance);
+  }
+
   /// The move to alpha over every variable.
   void whole_move(Label alpha) {
     const Labeling& labeling = state_.labeling;
@@ -167,13 +198,15 @@ class ExpansionSolver {
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change
   MoveCycle<Label> cycle_;
   MoveStep last_;
+  std::size_t sweep_steps_done_ = 0;  // steps of the current sweep so far
+  double sweep_start_ = 0.0;          // the energy when it began
+  bool whole_sweep_ = true;           // it makes whole moves (else near moves)
   // Near moves (options_.near_radius > 0).
   detail::NearMoves near_;
   BinaryMoveSolver<Backend> near_solver_;
   std::vector<MoveLabel> near_out_;
-  std::size_t near_moves_done_ = 0;   // near moves in the current near sweep
-  double near_sweep_start_ = 0.0;     // the energy when it began
-  std::size_t whole_moves_left_ = 0;  // whole moves left in the current whole sweep
+  // Shift moves (options_.shift_moves).
+  Labeling shifted_;  // the labeling shifted by the current shift move's shift
 };
 
 static_assert(AnytimeSolver<ExpansionSolver<>, PairwiseEnergy>);

@@ -35,6 +35,12 @@ struct MoveOptions {
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;
+  /// Expansion only. Every sweep begins with two shift moves (detail/shift_moves.hpp): every
+  /// variable may step one label up, in one move; then one label down. For labels with an
+  /// order (disparities), they move a region that is off by one label all at once, which no
+  /// expansion move can; the solver then converges where neither kind of move helps. A sweep
+  /// then has L + 2 steps (ExpansionSolver::sweep_steps).
+  bool shift_moves = false;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
@@ -51,6 +57,9 @@ struct MoveStep : StepOutcome {
   bool used_qpbo = false;     ///< the move was not submodular and went to QPBO
   bool recycled = false;      ///< solved on the move's own graph, resumed from its last flow
   bool near = false;  ///< expansion: a near move (MoveOptions::near_radius), on its own graph
+  /// expansion: +1 or -1 for a shift move (MoveOptions::shift_moves; alpha and beta are then
+  /// 0), 0 for an expansion move
+  int shift = 0;
   double flow_seconds = 0.0;  ///< time inside the max-flow backend
 };
 

@@ -16,8 +16,9 @@ namespace c2f::vision {
 /// regions          local:1,1/cc local:2,1/cc local:3,1/cc flat (connected regions of equal
 ///                  best-label tuples; docs/results.md)
 /// aggregated       agg:1/cc flat (connected regions of equal best label of the unaries
-///                  summed over 3 x 3 windows; with --plateau-tolerance 3e-5 and near moves
-///                  on the original problem, the best labeling at deadlines: docs/results.md)
+///                  summed over 3 x 3 windows; with --plateau-tolerance 3e-5 and near and
+///                  shift moves on the original problem, the fastest to flat's final energy
+///                  and the best labeling at deadlines: docs/results.md)
 std::span<const SchedulePreset> stereo_schedule_presets();
 
 /// Schedule::parse with the stereo presets.
