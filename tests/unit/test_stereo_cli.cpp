@@ -23,6 +23,25 @@ c2f::test::ToolResult run(const std::string& arguments) {
   return c2f::test::run_tool(C2F_STEREO_BINARY, arguments);
 }
 
+/// The energies of the last level's rows of a trace.csv (time_s,level,step,energy,num_vars...),
+/// in order.
+std::vector<double> last_level_energies(const std::filesystem::path& trace_path) {
+  std::ifstream trace(trace_path);
+  std::string line;
+  std::getline(trace, line);
+  std::vector<double> energies;
+  std::string last_level;
+  while (std::getline(trace, line)) {
+    const std::size_t level_at = line.find(',') + 1;
+    const std::size_t step_at = line.find(',', level_at) + 1;
+    const std::string level = line.substr(level_at, step_at - 1 - level_at);
+    if (level != last_level) energies.clear();
+    last_level = level;
+    energies.push_back(std::stod(line.substr(line.find(',', step_at) + 1)));
+  }
+  return energies;
+}
+
 }  // namespace
 
 TEST_CASE("c2f-stereo writes disparity maps, trace and summary", "[stereo][cli]") {
@@ -53,16 +72,7 @@ TEST_CASE("c2f-stereo with near moves descends and stops after three quiet sweep
                      " --schedule flat --near-radius 2 -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  // trace.csv: time_s,level,step,energy,num_vars
-  std::ifstream trace(dir / "out" / "trace.csv");
-  std::string line;
-  std::getline(trace, line);
-  std::vector<double> energies;
-  while (std::getline(trace, line)) {
-    std::size_t at = 0;
-    for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
-    energies.push_back(std::stod(line.substr(at)));
-  }
+  const std::vector<double> energies = last_level_energies(dir / "out" / "trace.csv");
   REQUIRE(energies.size() > 3 * labels);
   CHECK(std::is_sorted(energies.rbegin(), energies.rend()));  // never increases
   CHECK(energies.back() < energies.front());
@@ -122,20 +132,8 @@ TEST_CASE(
   std::getline(summary, line);
   std::getline(summary, line);
   CHECK_THAT(line, Catch::EndsWith("shift moves on the original problem only"));
-  // trace.csv: time_s,level,step,energy,num_vars; the original problem is the last level.
-  std::ifstream trace(dir / "out" / "trace.csv");
-  std::getline(trace, line);
-  std::vector<double> energies;
-  std::string last_level;
-  while (std::getline(trace, line)) {
-    const std::size_t level_end = line.find(',', line.find(',') + 1);
-    const std::string level = line.substr(line.find(',') + 1, level_end - line.find(',') - 1);
-    if (level != last_level) energies.clear();
-    last_level = level;
-    std::size_t at = 0;
-    for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
-    energies.push_back(std::stod(line.substr(at)));
-  }
+  // The original problem is the last level.
+  const std::vector<double> energies = last_level_energies(dir / "out" / "trace.csv");
   REQUIRE(energies.size() > labels + 2);
   CHECK(std::is_sorted(energies.rbegin(), energies.rend()));  // never increases
   // The default final plateau is one sweep: L expansion moves and the two shift moves.
