@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -72,7 +73,8 @@ TEST_CASE("a shift move's problem is the energy of every fusion with the shifted
             : tiny_model(rng, trial % 3, num_labels,
                          test_terms(rng, num_labels)[static_cast<std::size_t>(trial) % 4]);
     const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
-    const int shift = trial % 4 < 2 ? 1 - 2 * (trial % 2) : 2 - 4 * (trial % 2);  // +-1, +-2
+    // +1, -1, +2 and -2 on both kinds of model.
+    const int shift = std::array{1, -1, 2, -2}[static_cast<std::size_t>(trial / 2) % 4];
     Labeling shifted(x.size());
     std::vector<double> d(x.size()), p(energy.edges().size());
     detail::shift_problem(energy, x, shift, shifted, d, p);
