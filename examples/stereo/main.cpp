@@ -45,7 +45,7 @@ StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, b
 
 /// ", near moves of radius R and shift moves on ..." for the near and shift moves the solver
 /// makes, else "".
-std::string near_moves_text(const SolverChoice& solver) {
+std::string near_and_shift_moves_text(const SolverChoice& solver) {
   if (solver.kind != SolverKind::expansion) return {};
   std::string moves;
   if (solver.near_radius > 0) moves = "near moves of radius " + std::to_string(solver.near_radius);
@@ -66,7 +66,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
          << ", solver " << to_string(command.solver.kind) << ", max-flow "
-         << to_string(command.solver.maxflow) << near_moves_text(command.solver) << "\n"
+         << to_string(command.solver.maxflow) << near_and_shift_moves_text(command.solver) << "\n"
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
   write_run_report(report, levels.reports(), summary, interrupts);
