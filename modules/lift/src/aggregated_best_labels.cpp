@@ -57,10 +57,7 @@ DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, 
     }
     for (std::size_t x = 0; x < w; ++x) {
       const double* costs = window.data() + x * L;
-      std::size_t label = 0;
-      for (std::size_t l = 1; l < L; ++l)
-        if (costs[l] < costs[label]) label = l;
-      best[y * w + x] = static_cast<std::int64_t>(label);
+      best[y * w + x] = std::min_element(costs, costs + L) - costs;  // ties: the smallest label
     }
   }
   return DensePartition::from_ids(best);
