@@ -22,18 +22,16 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
-#include <functional>
-#include <mutex>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "c2f/c2f.hpp"
 #include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
+#include "support/number_list.hpp"
+#include "support/parallel_for.hpp"
 #include "support/published_labelings.hpp"
 #include "tool_options.hpp"
 
@@ -49,18 +47,6 @@ struct FitCommand {
   std::string alphas = "0,0.05,0.1,0.15,0.2,0.3";
   int top = 10;
 };
-
-/// A comma-separated list of numbers in `range`, each checked as the option's value.
-std::vector<double> number_list(const std::string& option, const std::string& text,
-                                examples::RealRange range) {
-  std::vector<double> values;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');)
-    values.push_back(examples::parse_real_option(option, item, range));
-  if (values.empty() || text.back() == ',')
-    throw std::invalid_argument(option + ": expected a comma-separated list, got '" + text + "'");
-  return values;
-}
 
 /// One image's data: everything but the parameters of the cooperative part.
 struct ImageData {
@@ -95,28 +81,6 @@ Labeling greedy_labeling(const CoopEnergy& energy) {
   return coarse_to_fine(energy, flat, solver, options).labeling;
 }
 
-/// Calls task(i) for every i < count on all cores (each i once, in no particular order).
-void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task) {
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors;
-  std::mutex errors_mutex;
-  const auto work = [&] {
-    for (std::size_t i; (i = next++) < count;) {
-      try {
-        task(i);
-      } catch (...) {
-        const std::lock_guard lock(errors_mutex);
-        errors.push_back(std::current_exception());
-      }
-    }
-  };
-  std::vector<std::thread> workers(std::max(1u, std::thread::hardware_concurrency()) - 1);
-  for (std::thread& worker : workers) worker = std::thread(work);
-  work();
-  for (std::thread& worker : workers) worker.join();
-  if (!errors.empty()) std::rethrow_exception(errors.front());
-}
-
 std::string model_cells(const CoopParameters& p) {
   char text[96];
   std::snprintf(text, sizeof text, "%g | %g | %g", p.lambda, p.theta, p.alpha);
@@ -141,9 +105,9 @@ int main(int argc, char** argv) {
                  "the ranking)");
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;
-    const auto lambdas = number_list("--lambdas", command.lambdas, examples::kLambdaRange);
-    const auto thetas = number_list("--thetas", command.thetas, examples::kThetaRange);
-    const auto alphas = number_list("--alphas", command.alphas, examples::kAlphaRange);
+    const auto lambdas = bench::number_list("--lambdas", command.lambdas, examples::kLambdaRange);
+    const auto thetas = bench::number_list("--thetas", command.thetas, examples::kThetaRange);
+    const auto alphas = bench::number_list("--alphas", command.alphas, examples::kAlphaRange);
 
     const std::filesystem::path set = bench::coopcuts_folder(command.data, "multilabel");
     std::vector<ImageData> images;
@@ -167,7 +131,7 @@ int main(int argc, char** argv) {
       }
     }
     std::atomic<std::size_t> done{0};
-    parallel_for(models.size(), [&](std::size_t m) {
+    bench::parallel_for(models.size(), [&](std::size_t m) {
       Model& model = models[m];
       for (const ImageData& image : images) {
         const CoopEnergy energy = energy_of(image, model.parameters);
@@ -208,7 +172,7 @@ int main(int argc, char** argv) {
     std::printf("\n");
     // Every (model, image) greedy run first, on all cores; then the table.
     std::vector<double> errors(segmented.size() * images.size());
-    parallel_for(errors.size(), [&](std::size_t task) {
+    bench::parallel_for(errors.size(), [&](std::size_t task) {
       const auto& [label, parameters] = segmented[task / images.size()];
       const ImageData& image = images[task % images.size()];
       std::fprintf(stderr, "c2f-bench-published-fit: %s, greedy on %s\n", label.c_str(),

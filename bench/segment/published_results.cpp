@@ -35,8 +35,7 @@ namespace {
 
 struct PublishedCommand {
   std::string data = "../shared/data";
-  KMeansSeeds seeds;
-  int classes = 10;
+  examples::PreparationFlags preparation;
   CoopParameters parameters;
 };
 
@@ -45,7 +44,7 @@ void print_scores(const std::filesystem::path& set, const std::string& name,
   const SegmentationScene scene =
       load_segmentation_scene(bench::coopcuts_files(command.data, "multilabel", name));
   const SegmentationProblem problem =
-      segmentation_problem(scene, command.parameters, command.classes, command.seeds);
+      segmentation_problem(scene, command.parameters, command.preparation.resolved());
   for (const char* method : {"alphaExpResult", "coopResult"}) {
     const Labeling labeling =
         read_label_image(bench::published_result_path(set, name, method), scene);
@@ -66,13 +65,8 @@ int main(int argc, char** argv) {
         "c2f-bench-published: the coopCuts authors' published segmentations (alpha-expansion and "
         "cooperative cut) scored under our energies: energies and pixel error per image.\n\n"
         "Usage: c2f-bench-published [options]\n\nOptions");
-    options.path("data", &command.data, "data root (coopcuts/runMultilabel)")
-        .integer("gmm-seed", &command.seeds.gmm, {0, std::numeric_limits<long long>::max()},
-                 "seed of the k-means that starts each label's colour GMM")
-        .integer("edge-seed", &command.seeds.edge_classes,
-                 {0, std::numeric_limits<long long>::max()},
-                 "seed of the k-means that makes the edge classes")
-        .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)");
+    options.path("data", &command.data, "data root (coopcuts/runMultilabel)");
+    examples::declare_data_preparation(options, command.preparation);
     examples::declare_coop_parameters(options, command.parameters);
     const auto arguments = options.parse(argc, argv, {"", 0});
     if (!arguments) return 0;

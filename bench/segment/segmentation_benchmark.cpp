@@ -3,6 +3,7 @@
 //
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
 //                     [--configs A,B,...] [--lambda X] [--theta X] [--alpha X]
+//                     [--classes K] [--kmeans reference|plusplus] [--gmm-seed S] [--edge-seed S]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
@@ -144,9 +145,10 @@ const char* kColumns[] = {"image",
 
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
-              const std::vector<std::string>& selected, const CoopParameters& parameters) {
+              const std::vector<std::string>& selected, const CoopParameters& parameters,
+              const DataPreparation& preparation) {
   const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
-  const SegmentationProblem problem = segmentation_problem(scene, parameters);
+  const SegmentationProblem problem = segmentation_problem(scene, parameters, preparation);
   // The image's traces land together after its last row (each run stages its own files and
   // owns only the traces of the configurations it runs).
   std::vector<std::string> traces;
@@ -291,6 +293,7 @@ int main(int argc, char** argv) {
     double time_limit = 600;
     bool header = false;
     CoopParameters parameters;
+    c2f::examples::PreparationFlags preparation;
     c2f::examples::ToolOptions options(
         "c2f-bench-segment: cooperative-cut segmentation of one image, flat and coarse to fine, "
         "one row per configuration.\n\nUsage: c2f-bench-segment run SET NAME [options]\n"
@@ -301,6 +304,7 @@ int main(int argc, char** argv) {
         .text("configs", &config_list, "comma-separated configurations (default: all)")
         .flag("header", &header, "print the TSV header first");
     c2f::examples::declare_coop_parameters(options, parameters);
+    c2f::examples::declare_data_preparation(options, preparation);
     const auto arguments = options.parse(argc, argv, {"run SET NAME | summarize ROWS.tsv", 3});
     if (!arguments) return 0;
     const bench::BenchCommand command = bench::bench_command(*arguments, "SET NAME");
@@ -314,7 +318,7 @@ int main(int argc, char** argv) {
       selected.push_back(name);
     }
     return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected,
-                     parameters);
+                     parameters, preparation.resolved());
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

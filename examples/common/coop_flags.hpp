@@ -1,9 +1,15 @@
 #pragma once
-// The options that set a cooperative cut's parameters, shared by the tools that build a
-// CoopEnergy (c2f-segment, c2f-bench-segment, c2f-bench-published): --lambda, --theta and
-// --alpha, and the ranges they accept (c2f-bench-published-fit checks its lists against them).
+// The options that set a cooperative cut's parameters and its data preparation, shared by the
+// tools that build a CoopEnergy (c2f-segment, c2f-bench-segment, c2f-bench-published):
+// --lambda, --theta and --alpha, and the ranges they accept (the benchmarks' parameter lists
+// are checked against them); --classes, --kmeans, --gmm-seed and --edge-seed.
+
+#include <cstdint>
+#include <limits>
+#include <string>
 
 #include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {
@@ -21,6 +27,42 @@ inline ToolOptions& declare_coop_parameters(ToolOptions& options,
             "breakpoint of the concave costs, fraction of a class's weight")
       .real("alpha", &parameters.alpha, kAlphaRange,
             "slope of the concave costs after the breakpoint");
+}
+
+/// What the data preparation's flags set; `resolved()` is the DataPreparation they name.
+struct PreparationFlags {
+  int classes = 10;
+  std::string kmeans = "reference";
+  std::uint64_t gmm_seed = 27;
+  std::uint64_t edge_seed = 27;
+
+  /// Throws std::invalid_argument naming --kmeans for a variant it does not know.
+  [[nodiscard]] vision::DataPreparation resolved() const {
+    const auto options = [&](std::uint64_t seed) {
+      return with_flag("--kmeans", [&] {
+        if (kmeans == "reference") return vision::reference_kmeans(seed);
+        if (kmeans == "plusplus") return vision::plus_plus_kmeans(seed);
+        throw std::invalid_argument("expected reference or plusplus, got '" + kmeans + "'");
+      });
+    };
+    return {classes, options(gmm_seed), options(edge_seed)};
+  }
+};
+
+/// Declares --classes, --kmeans, --gmm-seed and --edge-seed in `options`; `flags` receives
+/// their values (it must outlive options.parse()) and holds the defaults the help shows.
+inline ToolOptions& declare_data_preparation(ToolOptions& options, PreparationFlags& flags) {
+  constexpr IntegerRange kSeeds{0, std::numeric_limits<long long>::max()};
+  return options.integer("classes", &flags.classes, {1, 256}, "edge classes K (k-means)")
+      .text("kmeans", &flags.kmeans,
+            "how both k-means runs cluster: reference (the released code's MATLAB k-means: K "
+            "random data points to start, batch rounds, then single-point moves) or plusplus "
+            "(k-means++ start, batch rounds only)")
+      .integer("gmm-seed", &flags.gmm_seed, kSeeds,
+               "seed of the k-means that starts each label's colour GMM (the reference's was "
+               "unseeded: its unaries were one random draw)")
+      .integer("edge-seed", &flags.edge_seed, kSeeds,
+               "seed of the k-means that makes the edge classes");
 }
 
 }  // namespace c2f::examples

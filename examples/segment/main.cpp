@@ -28,11 +28,11 @@ TimedProblem build_problem(const SegmentationScene& scene,
                            const examples::SegmentCommand& command) {
   const auto start = Clock::now();
   SegmentationProblem problem =
-      segmentation_problem(scene, command.parameters, command.classes, command.kmeans_seeds);
+      segmentation_problem(scene, command.parameters, command.preparation);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet) {
     std::fprintf(stderr, "c2f-segment: GMM unaries and %zu edges in %d classes in %.2f s\n",
-                 problem.coop.edges().size(), command.classes, seconds);
+                 problem.coop.edges().size(), command.preparation.num_classes, seconds);
   }
   return {std::move(problem), seconds};
 }
@@ -58,6 +58,12 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
   return coarse_to_fine(problem.coop, levels, solver, options, observer);
 }
 
+/// How the k-means ran, e.g. "sample start, batch and online phases".
+std::string kmeans_text(const KMeansOptions& kmeans) {
+  return std::string(to_string(kmeans.start)) + " start" +
+         (kmeans.online_phase ? ", batch and online phases" : ", batch rounds only");
+}
+
 void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
                    const SegmentationScene& scene, const TimedProblem& built,
                    const ScheduleProvider& levels, const Summary& summary,
@@ -74,9 +80,10 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
   }
   report << ", schedule " << levels.schedule().to_string() << "\nlambda "
          << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
-         << command.parameters.alpha << ", " << command.classes << " edge classes, k-means seeds "
-         << command.kmeans_seeds.gmm << " (GMMs) and " << command.kmeans_seeds.edge_classes
-         << " (edge classes)\n"
+         << command.parameters.alpha << ", " << command.preparation.num_classes
+         << " edge classes, k-means " << kmeans_text(command.preparation.gmm_kmeans) << ", seeds "
+         << command.preparation.gmm_kmeans.seed << " (GMMs) and "
+         << command.preparation.edge_kmeans.seed << " (edge classes)\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n";
   write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "
@@ -123,7 +130,7 @@ int main(int argc, char** argv) {
     LevelPartitionRecorder partitions(command.save_partitions);
     const Summary summary =
         solve(command, built.problem, levels,
-              examples::run_options(command, scene.num_labels(), command.classes),
+              examples::run_options(command, scene.num_labels(), command.preparation.num_classes),
               record.observer(
                   scene.truth.empty() ? TraceWriter::ErrorFunction{} : pixel_error_function(scene),
                   interrupts, {std::ref(partitions)}));

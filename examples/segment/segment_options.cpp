@@ -58,14 +58,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
             "flat, superpixels (slic:16 slic:8 flat: with --aux mm the fastest measured, "
             "docs/results.md), paper (the paper's CP(k,2) CP(k,3), k = ceil(L/2): cp:k,1 "
             "cp:k,2), paper-cc, or levels such as \"cp:2,1/cc slic:16 flat\"");
-  declare_coop_parameters(options, command.parameters)
-      .integer("classes", &command.classes, {1, 256}, "edge classes K (k-means)")
-      .integer("gmm-seed", &command.kmeans_seeds.gmm, {0, std::numeric_limits<long long>::max()},
-               "seed of the k-means that starts each label's colour GMM (the reference's was "
-               "unseeded: its unaries were one random draw)")
-      .integer("edge-seed", &command.kmeans_seeds.edge_classes,
-               {0, std::numeric_limits<long long>::max()},
-               "seed of the k-means that makes the edge classes")
+  PreparationFlags preparation;
+  declare_coop_parameters(options, command.parameters);
+  declare_data_preparation(options, preparation)
       .integer("downscale", &command.downscale, {1, 1024},
                "shrink the image, seeds and GT by this integer factor first")
       .real("time-limit", &command.time_limit, kTimeLimitRange,
@@ -104,6 +99,7 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
                                             : vision::SeedConvention::colours;
   if (labels_from_gt && command.files.gt.empty())
     throw std::invalid_argument("--labels-from-gt needs --gt");
+  command.preparation = preparation.resolved();
   command.method = with_flag("--method", [&] { return segment_method_from_string(method); });
   command.coop.strategy = with_flag("--aux", [&] { return aux_strategy_from_string(aux); });
   command.coop.start = with_flag("--start", [&] { return expansion_start_from_string(start); });

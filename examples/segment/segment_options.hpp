@@ -26,8 +26,7 @@ struct SegmentCommand {
   SegmentMethod method = SegmentMethod::coop;
   CoopSolverOptions coop;
   vision::CoopParameters parameters;
-  int classes = 10;
-  vision::KMeansSeeds kmeans_seeds;  ///< of the colour GMMs and the edge classes
+  vision::DataPreparation preparation;  ///< edge classes and both k-means runs
   int downscale = 1;
   std::string schedule = "superpixels";  ///< parsed once the label count is known
   double time_limit = 0.0;

@@ -59,7 +59,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     } else if (tool == 1) {
       if (const auto command = c2f::examples::parse_segment_command(argc, argv.data())) {
-        require(command->classes >= 1 && command->classes <= 256, "classes");
+        const int classes = command->preparation.num_classes;
+        require(classes >= 1 && classes <= 256, "classes");
         require(command->parameters.validate().empty(), "coop parameters");
       }
     } else if (const auto command = c2f::examples::parse_synthetic_command(argc, argv.data())) {

@@ -124,6 +124,13 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-published-fit", "--thetas 0.001,", "--thetas: expected a comma-separated list"},
       {"c2f-bench-published-fit", "--alphas 1", "--alphas: expected a finite number in [0, 1)"},
       {"c2f-bench-published-fit", "--top -1", "--top: expected an integer in [0, 1000]"},
+      {"c2f-bench-crossval", "run --data /nonexistent",
+       "--data: no image of '/nonexistent/coopcuts/runMultilabel' has seeds and a ground truth"},
+      {"c2f-bench-crossval", "run --plateau later", "--plateau: expected auto or sweep"},
+      {"c2f-bench-crossval", "run --method annealing", "--method: unknown auxiliary-variable"},
+      {"c2f-bench-crossval", "run --kmeans fast", "--kmeans: expected reference or plusplus"},
+      {"c2f-bench-crossval", "summarize /nonexistent.tsv", "cannot read '/nonexistent.tsv'"},
+      {"c2f-bench-crossval", "walk", "expected 'run' or 'summarize ROWS.tsv...'"},
       {"c2f-plot", "-o plot.png", "need -o PLOT.png and at least one NAME=TRACE.csv"},
       {"c2f-plot", "-o plot.png =trace.csv", "unexpected argument '=trace.csv'"},
       {"c2f-plot", "-o plot.png --column", "the required argument for option '--column'"},
@@ -140,8 +147,9 @@ TEST_CASE("the benchmark scripts print their usage and refuse a missing data fol
           "[bench][cli][malformed]") {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-scripts";
   std::filesystem::remove_all(out);
-  for (const char* script : {"bench/solvers/run-backends", "bench/stereo/run-middlebury",
-                             "bench/segment/run-coopcuts", "bench/segment/run-kmeans-seeds"}) {
+  for (const char* script :
+       {"bench/solvers/run-backends", "bench/stereo/run-middlebury", "bench/segment/run-coopcuts",
+        "bench/segment/run-kmeans-seeds", "bench/segment/run-crossval"}) {
     const std::string path = std::string(C2F_SOURCE_DIR) + "/" + script;
     const auto help = c2f::test::run_tool(path, "--help");
     INFO(script << "\n" << help.output);
@@ -321,4 +329,58 @@ TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat 
   }
   CHECK(std::filesystem::exists(out / "1_11_s-c2f-slic-mm.csv"));
   std::filesystem::remove_all(out);
+}
+
+TEST_CASE("c2f-bench-crossval chooses every image's model without that image",
+          "[bench][cli][segmentation]") {
+  // Two models, two tuning and one aside image per set. A model's score on some images is the
+  // mean of the two sets' mean errors. On all tuning images (M1, M2, B1, B2): A scores
+  // ((.10 + .02) / 2 + (.01 + .01) / 2) / 2 = .035 and B ((.03 + .05) / 2 + .02) / 2 = .03: B,
+  // so the aside images M3 and B3 get B's 4% and 1%. Without M1: A (.02 + .01) / 2 = .015 beats
+  // B (.05 + .02) / 2 = .035, so M1 gets A's 10%; without M2: B (.025 against .055), 5%;
+  // without B1 or B2: B (.03 against .035), 2% each.
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-crossval";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto rows = dir / "rows.tsv";
+  {
+    std::ofstream file(rows);
+    file << "method\tschedule\tkmeans\tlambda\ttheta\talpha\tset\timage\taside\terror\tenergy\n";
+    const std::vector<std::tuple<const char*, const char*, int, double, double>> images = {
+        {"multilabel", "M1", 0, 0.10, 0.03}, {"multilabel", "M2", 0, 0.02, 0.05},
+        {"multilabel", "M3", 1, 0.05, 0.04}, {"binary", "B1", 0, 0.01, 0.02},
+        {"binary", "B2", 0, 0.01, 0.02},     {"binary", "B3", 1, 0.03, 0.01}};
+    for (const char* model : {"1\t0.001\t0", "2\t0.001\t0"}) {
+      for (const auto& [set, name, aside, a, b] : images) {
+        file << "mm\tflat\treference\t" << model << "\t" << set << "\t" << name << "\t" << aside
+             << "\t" << (model[0] == '1' ? a : b) << "\t100\n";
+      }
+    }
+  }
+  const std::string tool = std::string(C2F_BENCH_DIR) + "/c2f-bench-crossval";
+  const auto r = c2f::test::run_tool(tool, "summarize " + rows.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("Chosen on all tuning images: 2 / 0.001 / 0"));
+  const auto row = [&](const std::string& image) {
+    return markdown_cells(line_starting(r.output, "| " + image + " | "));
+  };
+  CHECK(row("M1")[3] == " 1 / 0.001 / 0 ");
+  CHECK(row("M1")[4] == " 10.00% ");
+  CHECK(row("M2")[3] == " 2 / 0.001 / 0 ");
+  CHECK(row("M2")[4] == " 5.00% ");
+  CHECK(row("B1")[4] == " 2.00% ");
+  CHECK(row("M3")[2] == " yes ");
+  CHECK(row("M3")[4] == " 4.00% ");
+  CHECK(row("B3")[4] == " 1.00% ");
+  CHECK(markdown_cells(line_starting(r.output, "| mean, tuning (leave one out) multilabel"))[3] ==
+        " 7.50% ");
+  CHECK(markdown_cells(line_starting(r.output, "| mean, aside binary"))[3] == " 1.00% ");
+
+  // A model without a row for every image is refused by name.
+  std::ofstream(rows, std::ios::app) << "mm\tflat\treference\t3\t0.001\t0\tbinary\tB1\t0\t0.5\t1\n";
+  const auto partial = c2f::test::run_tool(tool, "summarize " + rows.string());
+  CHECK(partial.exit_code == 2);
+  CHECK_THAT(partial.output, Catch::Contains("model 3 / 0.001 / 0 lacks some images' rows"));
+  std::filesystem::remove_all(dir);
 }

@@ -24,9 +24,10 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-run";
   std::filesystem::remove_all(dir);
   const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 4);
-  for (const char* flags : {"--method potts --schedule flat", "--aux mm --schedule paper",
-                            "--aux greedy --start current --schedule paper-cc --save-partitions",
-                            "--aux ceres --schedule flat --gmm-seed 3 --edge-seed 4"}) {
+  for (const char* flags :
+       {"--method potts --schedule flat", "--aux mm --schedule paper",
+        "--aux greedy --start current --schedule paper-cc --save-partitions",
+        "--aux ceres --schedule flat --gmm-seed 3 --edge-seed 4 --kmeans plusplus"}) {
     const std::string out = (dir / "out").string();
     std::filesystem::remove_all(out);
     const c2f::test::ToolResult r = run(files.image + " " + files.seeds + " --gt " + files.gt +
@@ -39,8 +40,11 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
     const std::string text((std::istreambuf_iterator<char>(summary)), {});
     CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
     const bool reseeded = std::string(flags).find("--gmm-seed 3") != std::string::npos;
-    CHECK_THAT(text, Catch::Contains(reseeded ? "k-means seeds 3 (GMMs) and 4 (edge classes)\n"
-                                              : "k-means seeds 27 (GMMs) and 27 (edge classes)\n"));
+    CHECK_THAT(text,
+               Catch::Contains(reseeded ? "k-means plusplus start, batch rounds only, seeds 3 "
+                                          "(GMMs) and 4 (edge classes)\n"
+                                        : "k-means sample start, batch and online phases, "
+                                          "seeds 27 (GMMs) and 27 (edge classes)\n"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
 }

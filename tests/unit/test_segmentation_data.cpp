@@ -42,23 +42,90 @@ TEST_CASE("k-means finds separated clusters, deterministically", "[segmentation]
   std::mt19937_64 rng(1);
   const std::vector<Eigen::Vector3d> centres{{0, 0, 0}, {1, 0, 0}, {0, 1, 1}};
   const auto points = blobs(rng, centres, 50, 0.02);
-  const KMeansResult a = kmeans(points, 3, 7), b = kmeans(points, 3, 7);
-  CHECK(a.assignment == b.assignment);
+  for (const KMeansOptions& options : {reference_kmeans(7), plus_plus_kmeans(7)}) {
+    INFO(to_string(options.start));
+    const KMeansResult a = kmeans(points, 3, options), b = kmeans(points, 3, options);
+    CHECK(a.assignment == b.assignment);
+    CHECK(a.centres == b.centres);
+    CHECK(kmeans(std::vector<Eigen::Vector3d>{{1, 2, 3}, {1, 2, 3}}, 5, options).centres.size() ==
+          2);
+  }
+  // k-means++ spreads its start over the blobs and finds them; a 'sample' start may put two
+  // centres in one blob and stop in that local minimum, which is why it is not tested here.
+  const KMeansResult found = kmeans(points, 3, plus_plus_kmeans(7));
   for (const Eigen::Vector3d& c : centres) {
     double nearest = 1e9;
-    for (const Eigen::Vector3d& found : a.centres) nearest = std::min(nearest, (found - c).norm());
+    for (const Eigen::Vector3d& f : found.centres) nearest = std::min(nearest, (f - c).norm());
     CHECK(nearest < 0.02);
   }
-  for (std::size_t i = 0; i < points.size(); ++i) CHECK(a.assignment[i] == a.assignment[i % 3]);
-  CHECK(kmeans(std::vector<Eigen::Vector3d>{{1, 2, 3}, {1, 2, 3}}, 5, 1).centres.size() == 2);
-  CHECK_THROWS_WITH(kmeans({}, 2, 1), Catch::Contains("no points"));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    CHECK(found.assignment[i] == found.assignment[i % 3]);
+  CHECK_THROWS_WITH(kmeans({}, 2, {}), Catch::Contains("no points"));
+  KMeansOptions no_rounds;
+  no_rounds.max_iterations = 0;
+  CHECK_THROWS_WITH(kmeans(points, 2, no_rounds), Catch::Contains("max_iterations"));
+  CHECK(kmeans_start_from_string("sample") == KMeansStart::sample);
+  CHECK(kmeans_start_from_string(to_string(KMeansStart::plus_plus)) == KMeansStart::plus_plus);
+  CHECK_THROWS_WITH(kmeans_start_from_string("random"),
+                    Catch::Contains("expected sample or plusplus"));
+}
+
+TEST_CASE("k-means keeps a point in its cluster on a tie", "[segmentation][kmeans]") {
+  // Four equal points, two clusters: the first round puts all four in cluster 0 (the lowest
+  // index wins a tie when a point has no cluster yet), the empty cluster 1 takes point 0 as a
+  // singleton; from then on every point is at distance 0 from both centres and stays.
+  const std::vector<Eigen::Vector3d> same(4, Eigen::Vector3d(0.1, 0.2, 0.3));
+  for (const KMeansOptions& options : {reference_kmeans(3), plus_plus_kmeans(3)}) {
+    INFO(to_string(options.start));
+    CHECK(kmeans(same, 2, options).assignment == std::vector<int>{1, 0, 0, 0});
+  }
+}
+
+TEST_CASE("k-means's online phase ends where no single point's move lowers the total",
+          "[segmentation][kmeans]") {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points(400);
+  for (Eigen::Vector3d& p : points) p = {unit(rng), unit(rng), 0.3 * unit(rng)};
+  const auto total = [&](const KMeansResult& r) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      sum += (points[i] - r.centres[static_cast<std::size_t>(r.assignment[i])]).squaredNorm();
+    return sum;
+  };
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    KMeansOptions batch_only = reference_kmeans(seed);
+    batch_only.online_phase = false;
+    const KMeansResult batch = kmeans(points, 6, batch_only);
+    const KMeansResult online = kmeans(points, 6, reference_kmeans(seed));
+    CHECK(total(online) <= total(batch) + 1e-12);
+    // Batch rounds end with every point at its nearest centre.
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double own = (points[i] - batch.centres[batch.assignment[i]]).squaredNorm();
+      for (const Eigen::Vector3d& c : batch.centres) CHECK(own <= (points[i] - c).squaredNorm());
+    }
+    // The online phase ends with no single move that lowers the total (centres are the means).
+    std::vector<double> count(online.centres.size(), 0.0);
+    for (const int c : online.assignment) count[static_cast<std::size_t>(c)] += 1.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto own = static_cast<std::size_t>(online.assignment[i]);
+      if (count[own] <= 1.0) continue;
+      const double leave =
+          count[own] / (count[own] - 1.0) * (points[i] - online.centres[own]).squaredNorm();
+      for (std::size_t c = 0; c < online.centres.size(); ++c) {
+        if (c == own) continue;
+        CHECK(leave <=
+              count[c] / (count[c] + 1.0) * (points[i] - online.centres[c]).squaredNorm() + 1e-12);
+      }
+    }
+  }
 }
 
 TEST_CASE("colour GMMs recover their components and give non-negative costs",
           "[segmentation][gmm]") {
   std::mt19937_64 rng(2);
   const auto samples = blobs(rng, {{0.2, 0.2, 0.2}, {0.8, 0.6, 0.1}}, 400, 0.03);
-  const ColourGmm gmm = fit_colour_gmm(samples, 2, 3);
+  const ColourGmm gmm = fit_colour_gmm(samples, 2, reference_kmeans(3));
   REQUIRE(gmm.components.size() == 2);
   double weight = 0.0;
   for (const GaussianComponent& c : gmm.components) {
@@ -145,6 +212,64 @@ TEST_CASE("seed conventions load scenes and reject bad input by name", "[segment
   CHECK(seed_convention_from_string("labels-from-gt") == SeedConvention::labels_from_gt);
 }
 
+TEST_CASE("each side of an edge is charged the class of its own colour minus the other's",
+          "[segmentation][energy]") {
+  // A lone vertical edge: top (51, 102, 153) = (0.2, 0.4, 0.6), bottom black; K = 2 puts the
+  // two directed differences in classes of their own, whatever the k-means.
+  cv::Mat column(2, 1, CV_8UC3, cv::Scalar(0, 0, 0));
+  column.at<cv::Vec3b>(0, 0) = cv::Vec3b(153, 102, 51);  // BGR
+  for (const KMeansOptions& options : {reference_kmeans(), plus_plus_kmeans()}) {
+    INFO(to_string(options.start));
+    const SegmentationEdges edge = segmentation_edges(column, 2, options);
+    REQUIRE(edge.pairs == std::vector<std::pair<VariableIndex, VariableIndex>>{{0, 1}});
+    REQUIRE(edge.class_centres.size() == 2);
+    CHECK((edge.class_centres[edge.u_class[0]] - Eigen::Vector3d(0.2, 0.4, 0.6)).norm() < 1e-12);
+    CHECK((edge.class_centres[edge.v_class[0]] + Eigen::Vector3d(0.2, 0.4, 0.6)).norm() < 1e-12);
+  }
+}
+
+TEST_CASE("a tiny image's classes and cooperative-cut energy, by hand", "[segmentation][energy]") {
+  // 2x2 image: top-left white, the other three black. 8-connected: 6 edges; the three at the
+  // white pixel have |dc|^2 = 3, the other three 0, so mean |dc|^2 = 1.5 and
+  // w = 0.05 + 0.95 exp(-3 / 3) at the white pixel, 1 elsewhere. K = 2: the white pixel's sides
+  // (white - black = (1, 1, 1)) form one class P, the black sides of those edges (-1, -1, -1)
+  // the other, N; the three black-black edges are class K (linear).
+  cv::Mat image(2, 2, CV_8UC3, cv::Scalar(0, 0, 0));
+  image.at<cv::Vec3b>(0, 0) = cv::Vec3b(255, 255, 255);
+  const SegmentationEdges edges = segmentation_edges(image, 2, reference_kmeans());
+  REQUIRE(edges.pairs.size() == 6);
+  const double w = 0.05 + 0.95 * std::exp(-1.0);
+  REQUIRE(edges.class_centres.size() == 2);
+  const std::uint32_t P = edges.class_centres[0].x() > 0 ? 0u : 1u;  // the class of (1, 1, 1)
+  CHECK((edges.class_centres[P] - Eigen::Vector3d(1, 1, 1)).norm() < 1e-12);
+  for (std::size_t e = 0; e < 6; ++e) {
+    const auto [u, v] = edges.pairs[e];
+    if (u != 0 && v != 0) {
+      CHECK(edges.weights[e] == 1.0);
+      CHECK(edges.u_class[e] == 2);
+      CHECK(edges.v_class[e] == 2);
+      continue;
+    }
+    CHECK(edges.weights[e] == Approx(w).epsilon(1e-14));
+    CHECK((u == 0 ? edges.u_class[e] : edges.v_class[e]) == P);      // white's side
+    CHECK((u == 0 ? edges.v_class[e] : edges.u_class[e]) == 1 - P);  // black's side
+  }
+  // T_P = T_N = 3w. lambda 1, theta 0.25, alpha 0.2: F(s) = min(s, 0.2 s + 0.8 * 0.25 * 3w).
+  // Unaries: pixel i costs i for label 0 and 0 for label 1 (row-major: TL, TR, BL, BR).
+  const CoopEnergy energy =
+      coop_energy({0, 0, 1, 0, 2, 0, 3, 0}, 2, edges, CoopParameters{1.0, 0.25, 0.2});
+  // x = (0, 1, 1, 1): the white pixel's three edges cut. S_{0,P} = 3w/2 (white side, label 0),
+  // S_{1,N} = 3w/2; F(1.5w) = min(1.5w, 0.3w + 0.6w) = 0.9w each. E = 0 + 1.8w.
+  CHECK(energy.evaluate(Labeling{0, 1, 1, 1}) == Approx(1.8 * w).epsilon(1e-12));
+  // x = (0, 0, 1, 1): cut TL-BL and TL-BR (white side label 0: S_{0,P} = w; S_{1,N} = w;
+  // F(w) = min(w, 0.2w + 0.6w) = 0.8w each) and TR-BL, TR-BR (class K, linear: w = 1 each,
+  // half per side). Unaries 0 + 1. E = 1 + 1.6w + 2.
+  CHECK(energy.evaluate(Labeling{0, 0, 1, 1}) == Approx(3.0 + 1.6 * w).epsilon(1e-12));
+  // x = (1, 0, 0, 0): the white pixel labelled 1 this time: S_{1,P} = 3w/2, S_{0,N} = 3w/2:
+  // 1.8w again, plus unaries 1 + 2 + 3.
+  CHECK(energy.evaluate(Labeling{1, 0, 0, 0}) == Approx(6.0 + 1.8 * w).epsilon(1e-12));
+}
+
 TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-energy";
   const auto files = test::write_synthetic_segmentation(dir, 40, 30, 2);
@@ -179,9 +304,10 @@ TEST_CASE("segmentation edges, unaries and pictures", "[segmentation][energy]") 
     return std::equal(a.begin(), a.end(), b.begin(), b.end());
   };
   CHECK(same(problem.coop.unaries(), unaries));
-  const SegmentationProblem reseeded = segmentation_problem(scene, CoopParameters{}, 10, {5, 6});
-  CHECK(same(reseeded.coop.unaries(), segmentation_unaries(scene, 5)));
-  const SegmentationEdges classes = segmentation_edges(scene.image, 10, 6);
+  const SegmentationProblem reseeded =
+      segmentation_problem(scene, CoopParameters{}, {10, reference_kmeans(5), plus_plus_kmeans(6)});
+  CHECK(same(reseeded.coop.unaries(), segmentation_unaries(scene, reference_kmeans(5))));
+  const SegmentationEdges classes = segmentation_edges(scene.image, 10, plus_plus_kmeans(6));
   REQUIRE(reseeded.coop.edges().size() == classes.pairs.size());
   bool classes_match = true;
   for (std::size_t e = 0; e < classes.pairs.size(); ++e) {

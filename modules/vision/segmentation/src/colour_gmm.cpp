@@ -25,10 +25,10 @@ double log_density(const Eigen::Vector3d& x, const Eigen::Vector3d& mean,
 }  // namespace
 
 ColourGmm fit_colour_gmm(std::span<const Eigen::Vector3d> samples, int components,
-                         std::uint64_t seed) {
+                         const KMeansOptions& kmeans_options) {
   if (samples.empty()) throw std::invalid_argument("fit_colour_gmm: no samples");
   const std::size_t n = samples.size();
-  const KMeansResult clusters = kmeans(samples, components, seed);
+  const KMeansResult clusters = kmeans(samples, components, kmeans_options);
   const std::size_t k = clusters.centres.size();
 
   ColourGmm gmm;

@@ -5,41 +5,52 @@
 #include <random>
 #include <stdexcept>
 
+#include "c2f/core/enum_names.hpp"
+
 namespace c2f::vision {
+
+std::string_view to_string(KMeansStart start) {
+  return start == KMeansStart::sample ? "sample" : "plusplus";
+}
+
+KMeansStart kmeans_start_from_string(std::string_view text) {
+  constexpr KMeansStart kAll[] = {KMeansStart::sample, KMeansStart::plus_plus};
+  return enum_from_string(text, kAll, "k-means start");
+}
+
+KMeansOptions reference_kmeans(std::uint64_t seed) {
+  return {KMeansStart::sample, true, seed, 100};
+}
+
+KMeansOptions plus_plus_kmeans(std::uint64_t seed) {
+  return {KMeansStart::plus_plus, false, seed, 100};
+}
 
 namespace {
 
-/// The nearest centre of p and its squared distance.
-std::pair<int, double> nearest(const Eigen::Vector3d& p,
-                               const std::vector<Eigen::Vector3d>& centres) {
-  int best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t c = 0; c < centres.size(); ++c) {
-    const double distance = (p - centres[c]).squaredNorm();
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = static_cast<int>(c);
-    }
+using Points = std::span<const Eigen::Vector3d>;
+
+/// k distinct points drawn uniformly.
+std::vector<Eigen::Vector3d> sample_start(Points points, std::size_t k, std::mt19937_64& rng) {
+  std::vector<std::size_t> chosen;
+  std::uniform_int_distribution<std::size_t> any(0, points.size() - 1);
+  while (chosen.size() < k) {
+    const std::size_t i = any(rng);
+    if (std::find(chosen.begin(), chosen.end(), i) == chosen.end()) chosen.push_back(i);
   }
-  return {best, best_distance};
+  std::vector<Eigen::Vector3d> centres;
+  for (const std::size_t i : chosen) centres.push_back(points[i]);
+  return centres;
 }
 
-}  // namespace
-
-KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, std::uint64_t seed,
-                    int max_iterations) {
-  if (k < 1) throw std::invalid_argument("kmeans: k must be >= 1");
-  if (points.empty()) throw std::invalid_argument("kmeans: no points");
+/// k-means++: the first centre uniformly, each next one with probability ~ D^2.
+std::vector<Eigen::Vector3d> plus_plus_start(Points points, std::size_t k, std::mt19937_64& rng) {
   const std::size_t n = points.size();
-  const auto clusters = std::min<std::size_t>(static_cast<std::size_t>(k), n);
-  std::mt19937_64 rng(seed);
-
-  // k-means++ seeding: the first centre uniformly, each next one with probability ~ D^2.
-  KMeansResult result;
-  result.centres.push_back(points[std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)]);
+  std::vector<Eigen::Vector3d> centres{
+      points[std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)]};
   std::vector<double> distance(n);
-  for (std::size_t i = 0; i < n; ++i) distance[i] = (points[i] - result.centres[0]).squaredNorm();
-  while (result.centres.size() < clusters) {
+  for (std::size_t i = 0; i < n; ++i) distance[i] = (points[i] - centres[0]).squaredNorm();
+  while (centres.size() < k) {
     double total = 0.0;
     for (const double d : distance) total += d;
     std::size_t chosen = 0;
@@ -49,21 +60,37 @@ KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, std::uint64_
     } else {
       chosen = std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);  // all points equal
     }
-    result.centres.push_back(points[chosen]);
+    centres.push_back(points[chosen]);
     for (std::size_t i = 0; i < n; ++i)
-      distance[i] = std::min(distance[i], (points[i] - result.centres.back()).squaredNorm());
+      distance[i] = std::min(distance[i], (points[i] - centres.back()).squaredNorm());
   }
+  return centres;
+}
 
-  result.assignment.assign(n, -1);
-  std::vector<Eigen::Vector3d> sums(clusters);
-  std::vector<std::size_t> counts(clusters);
-  for (int round = 0; round < max_iterations; ++round) {
+/// Batch rounds until no point moves or `rounds` are spent; returns the rounds made.
+int batch_phase(Points points, KMeansResult& result, int rounds) {
+  const std::size_t n = points.size(), k = result.centres.size();
+  std::vector<double> distance(n);
+  std::vector<Eigen::Vector3d> sums(k);
+  std::vector<std::size_t> counts(k);
+  int made = 0;
+  while (made < rounds) {
+    ++made;
     bool changed = false;
     for (std::size_t i = 0; i < n; ++i) {
-      const auto [c, d] = nearest(points[i], result.centres);
-      distance[i] = d;
-      if (c != result.assignment[i]) {
-        result.assignment[i] = c;
+      int best = result.assignment[i];
+      double best_distance = best >= 0 ? (points[i] - result.centres[best]).squaredNorm()
+                                       : std::numeric_limits<double>::infinity();
+      for (std::size_t c = 0; c < k; ++c) {
+        const double d = (points[i] - result.centres[c]).squaredNorm();
+        if (d < best_distance) {  // strictly nearer: a tie keeps the current cluster
+          best_distance = d;
+          best = static_cast<int>(c);
+        }
+      }
+      distance[i] = best_distance;
+      if (best != result.assignment[i]) {
+        result.assignment[i] = best;
         changed = true;
       }
     }
@@ -75,7 +102,7 @@ KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, std::uint64_
       sums[c] += points[i];
       ++counts[c];
     }
-    for (std::size_t c = 0; c < clusters; ++c) {
+    for (std::size_t c = 0; c < k; ++c) {
       if (counts[c] > 0) {
         result.centres[c] = sums[c] / static_cast<double>(counts[c]);
         continue;
@@ -88,6 +115,65 @@ KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, std::uint64_
       distance[far] = 0.0;
     }
   }
+  return made;
+}
+
+/// Single-point moves in index order, cyclically: a point moves to the cluster whose total
+/// squared distance it lowers most, counting the centre shifts (a point of a cluster of m
+/// costs m/(m-1) |p - c|^2 there and m'/(m'+1) |p - c'|^2 in another of m'), only when that is
+/// strictly lower. Ends after a whole pass without a move or after `passes` passes.
+void online_phase(Points points, KMeansResult& result, int passes) {
+  const std::size_t n = points.size(), k = result.centres.size();
+  std::vector<double> counts(k, 0.0);
+  for (const int c : result.assignment) counts[static_cast<std::size_t>(c)] += 1.0;
+  std::size_t since_move = 0, i = 0;
+  for (int pass = 0; pass < passes && since_move < n;) {
+    const auto own = static_cast<std::size_t>(result.assignment[i]);
+    ++since_move;
+    if (counts[own] > 1.0) {
+      double best =
+          counts[own] / (counts[own] - 1.0) * (points[i] - result.centres[own]).squaredNorm();
+      std::size_t target = own;
+      for (std::size_t c = 0; c < k; ++c) {
+        if (c == own) continue;
+        const double cost =
+            counts[c] / (counts[c] + 1.0) * (points[i] - result.centres[c]).squaredNorm();
+        if (cost < best) {
+          best = cost;
+          target = c;
+        }
+      }
+      if (target != own) {
+        counts[target] += 1.0;
+        counts[own] -= 1.0;
+        result.centres[target] += (points[i] - result.centres[target]) / counts[target];
+        result.centres[own] -= (points[i] - result.centres[own]) / counts[own];
+        result.assignment[i] = static_cast<int>(target);
+        since_move = 0;
+      }
+    }
+    if (++i == n) {
+      i = 0;
+      ++pass;
+    }
+  }
+}
+
+}  // namespace
+
+KMeansResult kmeans(Points points, int k, const KMeansOptions& options) {
+  if (k < 1) throw std::invalid_argument("kmeans: k must be >= 1");
+  if (points.empty()) throw std::invalid_argument("kmeans: no points");
+  if (options.max_iterations < 1)
+    throw std::invalid_argument("kmeans: max_iterations must be >= 1");
+  const auto clusters = std::min<std::size_t>(static_cast<std::size_t>(k), points.size());
+  std::mt19937_64 rng(options.seed);
+  KMeansResult result;
+  result.centres = options.start == KMeansStart::sample ? sample_start(points, clusters, rng)
+                                                        : plus_plus_start(points, clusters, rng);
+  result.assignment.assign(points.size(), -1);
+  const int rounds = batch_phase(points, result, options.max_iterations);
+  if (options.online_phase) online_phase(points, result, options.max_iterations - rounds);
   return result;
 }
 

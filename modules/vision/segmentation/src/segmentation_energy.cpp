@@ -23,7 +23,8 @@ Eigen::Vector3d rgb01(const cv::Mat& image, VariableIndex v) {
 
 }  // namespace
 
-SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes, std::uint64_t seed) {
+SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes,
+                                     const KMeansOptions& kmeans_options) {
   if (image.type() != CV_8UC3) throw std::invalid_argument("segmentation_edges: needs 8-bit BGR");
   if (num_classes < 1) throw std::invalid_argument("segmentation_edges: num_classes must be >= 1");
   SegmentationEdges edges;
@@ -34,7 +35,7 @@ SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes, std:
   std::vector<Eigen::Vector3d> differences(m);
   double mean = 0.0;
   for (std::size_t e = 0; e < m; ++e) {
-    differences[e] = rgb01(image, edges.pairs[e].second) - rgb01(image, edges.pairs[e].first);
+    differences[e] = rgb01(image, edges.pairs[e].first) - rgb01(image, edges.pairs[e].second);
     mean += differences[e].squaredNorm();
   }
   mean /= static_cast<double>(std::max<std::size_t>(m, 1));
@@ -43,7 +44,7 @@ SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes, std:
     edges.weights[e] =
         mean > 0.0 ? 0.05 + 0.95 * std::exp(-differences[e].squaredNorm() / (2.0 * mean)) : 1.0;
   }
-  // Cluster +dc (seen from u) and -dc (seen from v) of every edge that is not near zero.
+  // Cluster c(u) - c(v) (u's side) and c(v) - c(u) (v's side) of every edge not near zero.
   std::vector<Eigen::Vector3d> points;
   points.reserve(2 * m);
   for (std::size_t e = 0; e < m; ++e) {
@@ -55,7 +56,8 @@ SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes, std:
   edges.u_class.assign(m, K);
   edges.v_class.assign(m, K);
   if (points.empty()) return edges;
-  const KMeansResult clusters = kmeans(points, num_classes, seed);
+  const KMeansResult clusters = kmeans(points, num_classes, kmeans_options);
+  edges.class_centres = clusters.centres;
   std::size_t next = 0;
   for (std::size_t e = 0; e < m; ++e) {
     if (differences[e].squaredNorm() < kZeroDifference) continue;
@@ -65,7 +67,8 @@ SegmentationEdges segmentation_edges(const cv::Mat& image, int num_classes, std:
   return edges;
 }
 
-std::vector<double> segmentation_unaries(const SegmentationScene& scene, std::uint64_t seed) {
+std::vector<double> segmentation_unaries(const SegmentationScene& scene,
+                                         const KMeansOptions& kmeans_options) {
   const std::size_t n = scene.image.total();
   const auto L = static_cast<std::size_t>(scene.num_labels());
   std::vector<Eigen::Vector3d> colours(n);
@@ -82,7 +85,7 @@ std::vector<double> segmentation_unaries(const SegmentationScene& scene, std::ui
                                   " has no seed pixels");
     }
     const std::vector<double> costs =
-        nonnegative_gmm_costs(fit_colour_gmm(samples, 5, seed), colours);
+        nonnegative_gmm_costs(fit_colour_gmm(samples, 5, kmeans_options), colours);
     for (std::size_t i = 0; i < n; ++i) unaries[i * L + l] = costs[i];
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -125,15 +128,16 @@ std::optional<std::size_t> segmentation_memory_estimate(std::size_t pixels, int 
 }
 
 SegmentationProblem segmentation_problem(const SegmentationScene& scene,
-                                         const CoopParameters& parameters, int num_classes,
-                                         KMeansSeeds seeds) {
+                                         const CoopParameters& parameters,
+                                         const DataPreparation& preparation) {
   require_memory("segmenting " + std::to_string(scene.image.cols) + "x" +
                      std::to_string(scene.image.rows) + " pixels into " +
                      std::to_string(scene.num_labels()) + " labels",
                  segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
   CoopEnergy coop =
-      coop_energy(segmentation_unaries(scene, seeds.gmm), scene.num_labels(),
-                  segmentation_edges(scene.image, num_classes, seeds.edge_classes), parameters);
+      coop_energy(segmentation_unaries(scene, preparation.gmm_kmeans), scene.num_labels(),
+                  segmentation_edges(scene.image, preparation.num_classes, preparation.edge_kmeans),
+                  parameters);
   PairwiseEnergy potts = potts_energy(coop);
   return {std::move(coop), std::move(potts)};
 }

@@ -8,6 +8,8 @@
 #include <span>
 #include <vector>
 
+#include "c2f/vision/segmentation/kmeans.hpp"
+
 namespace c2f::vision {
 
 struct GaussianComponent {
@@ -21,11 +23,11 @@ struct ColourGmm {
 };
 
 /// EM for a Gaussian mixture with `components` components (fewer when there are fewer
-/// samples), initialised by k-means (seeded by `seed`: deterministic); 1e-5 I is added to every
-/// covariance; stops when |loglik / loglik_old - 1| < 1e-10 or after 500 rounds. Throws
-/// std::invalid_argument without samples.
+/// samples), initialised by k-means with `kmeans_options` (deterministic for its seed); 1e-5 I
+/// is added to every covariance; stops when |loglik / loglik_old - 1| < 1e-10 or after 500
+/// rounds. Throws std::invalid_argument without samples.
 ColourGmm fit_colour_gmm(std::span<const Eigen::Vector3d> samples, int components = 5,
-                         std::uint64_t seed = 27);
+                         const KMeansOptions& kmeans_options = {});
 
 /// The cost of colour x under `gmm` with regulariser s:
 ///   min_i [ -log w_i + 1/2 log det(S_i + s I) + 1/2 (x - m_i)^T (S_i + s I)^-1 (x - m_i) ]

@@ -4,21 +4,51 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace c2f::vision {
 
-struct KMeansResult {
-  std::vector<Eigen::Vector3d> centres;  ///< k centres (fewer when there are fewer points)
-  std::vector<int> assignment;           ///< per point, the index of its nearest centre
+/// How k-means picks its first centres.
+enum class KMeansStart {
+  sample,     ///< k distinct data points drawn uniformly (MATLAB's 'sample')
+  plus_plus,  ///< k-means++: the first uniformly, each next one with probability ~ D^2
 };
 
-/// Lloyd's k-means with k-means++ seeding drawn from `seed`, squared Euclidean distance, at
-/// most max_iterations rounds (stops earlier when no point changes cluster). An empty cluster
-/// takes the point farthest from its centre as a singleton (MATLAB's 'EmptyAction',
-/// 'singleton'). k is reduced to the number of points when there are fewer. Throws
-/// std::invalid_argument for k < 1 or no points.
-KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, std::uint64_t seed,
-                    int max_iterations = 100);
+std::string_view to_string(KMeansStart start);
+/// "sample" or "plusplus"; throws std::invalid_argument naming the choices otherwise.
+KMeansStart kmeans_start_from_string(std::string_view text);
+
+struct KMeansOptions {
+  KMeansStart start = KMeansStart::sample;
+  /// After the batch rounds, move single points, in index order cyclically, to the cluster
+  /// that lowers the total squared distance most (centres updated after every move), until a
+  /// whole pass moves none (MATLAB's online phase).
+  bool online_phase = true;
+  std::uint64_t seed = 27;
+  int max_iterations = 100;  ///< batch rounds plus online passes (MATLAB's MaxIter)
+
+  bool operator==(const KMeansOptions&) const = default;
+};
+
+/// The k-means of the MATLAB the coopCuts code was released with (2012): 'sample' start,
+/// batch then online phase. `--kmeans reference` in c2f-segment.
+KMeansOptions reference_kmeans(std::uint64_t seed = 27);
+/// k-means++ start and batch rounds only. `--kmeans plusplus` in c2f-segment.
+KMeansOptions plus_plus_kmeans(std::uint64_t seed = 27);
+
+struct KMeansResult {
+  std::vector<Eigen::Vector3d> centres;  ///< k centres (fewer when there are fewer points)
+  std::vector<int> assignment;           ///< per point, the index of its centre
+};
+
+/// k-means with squared Euclidean distance. Batch rounds: every point goes to its nearest
+/// centre (on a tie a point stays in its cluster; in the first round the lowest index wins),
+/// then every centre becomes its points' mean; an empty cluster takes the point farthest from
+/// its centre as a singleton (MATLAB's 'EmptyAction','singleton'). They stop when no point
+/// moves. Then the online phase when `options.online_phase`. k is reduced to the number of
+/// points when there are fewer. Throws std::invalid_argument for k < 1, no points or
+/// max_iterations < 1.
+KMeansResult kmeans(std::span<const Eigen::Vector3d> points, int k, const KMeansOptions& options);
 
 }  // namespace c2f::vision
