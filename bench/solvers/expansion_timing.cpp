@@ -56,7 +56,7 @@ constexpr int kMaxSweeps = 40;
 
 template <class Backend>
 BackendRun run_flat(const PairwiseEnergy& energy, std::size_t graph_memory_limit) {
-  MoveOptions options;
+  ExpansionOptions options;
   options.graph_memory_limit = graph_memory_limit;
   ExpansionSolver<Backend> solver(options);
   const Labeling start = initial_labeling(energy, InitialLabeling::unary_argmin);

@@ -8,8 +8,8 @@
 //                    [--c2f-shift-moves] [--near-levels original|all]
 //       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
-//       backend, default dynamic; near moves of radius R, MoveOptions::near_radius, and shift
-//       moves, MoveOptions::shift_moves, in either run on request, on the original problem
+//       backend, default dynamic; near moves of radius R, ExpansionOptions::near_radius, and shift
+//       moves, ExpansionOptions::shift_moves, in either run on request, on the original problem
 //       only or on every level: with `--schedule flat` this compares two flat solvers),
 //       options and run clock (which includes partitions and reductions), and prints one
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
@@ -93,9 +93,9 @@ struct Settings {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;
   int downscale = 1;  ///< shrink the views by this factor (the scaling study)
   int labels = 85;
-  int flat_near_radius = 0;                       ///< MoveOptions::near_radius of the flat run
+  int flat_near_radius = 0;                       ///< ExpansionOptions::near_radius of the flat run
   int c2f_near_radius = 0;                        ///< and of the coarse-to-fine run
-  bool flat_shift_moves = false;                  ///< MoveOptions::shift_moves of the flat run
+  bool flat_shift_moves = false;                  ///< ExpansionOptions::shift_moves of the flat run
   bool c2f_shift_moves = false;                   ///< and of the coarse-to-fine run
   NearLevels near_levels = NearLevels::original;  ///< where near and shift moves are made
 };

@@ -36,7 +36,7 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
     const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
     const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
     ExpansionSolver<TestType> solver(
-        ExpansionOptions{kOrders[trial % 3], static_cast<std::uint64_t>(trial), 0.0});
+        ExpansionOptions{{kOrders[trial % 3], static_cast<std::uint64_t>(trial), 0.0}});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = 0.0;
     descend(solver, energy, solver.steps_per_sweep(energy.num_labels()), 500, previous,
@@ -82,7 +82,7 @@ TEST_CASE("alpha-beta swap never increases the energy and solves two-label Potts
     const auto terms = test_terms(rng, num_labels);
     const PairwiseTerm& term = terms[static_cast<std::size_t>(trial / 3) % terms.size()];
     const PairwiseEnergy energy = tiny_model(rng, trial % 3, num_labels, term);
-    SwapSolver<> solver(SwapOptions{kOrders[trial % 3], 3});
+    SwapSolver<> solver(SwapOptions{{kOrders[trial % 3], 3}});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     const std::size_t pairs = static_cast<std::size_t>(num_labels * (num_labels - 1) / 2);
     const double converged = run_to_convergence(solver, energy, pairs);
@@ -111,7 +111,7 @@ TEST_CASE("swap rejects terms that are not semi-metrics", "[swap][validation]") 
 }
 
 TEST_CASE("expansion validates its options and inputs", "[expansion][validation]") {
-  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{VisitOrder::sequential, 1, -1.0}),
+  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{{VisitOrder::sequential, 1, -1.0}}),
                     Catch::Contains("tolerance"));
   ExpansionSolver<> solver;
   CHECK_THROWS_WITH(solver.step(), Catch::Contains("call bind() first"));
@@ -133,7 +133,7 @@ TEST_CASE("frequency order visits the labels the start labeling uses most first"
   for (VariableIndex i = 0; i + 1 < 9; ++i) chain.push_back(Edge{i, i + 1, 1.0, 0});
   const PairwiseEnergy energy(9, 4, std::vector<double>(36, 0.0), {PairwiseTerm::potts()}, chain);
   const Labeling start{2, 0, 2, 3, 0, 2, 3, 0, 2};
-  ExpansionSolver<> expansion(ExpansionOptions{VisitOrder::frequency});
+  ExpansionSolver<> expansion(ExpansionOptions{{VisitOrder::frequency}});
   expansion.bind(energy, start);
   std::vector<Label> visited;
   for (int step = 0; step < 8; ++step) {
@@ -142,7 +142,7 @@ TEST_CASE("frequency order visits the labels the start labeling uses most first"
   }
   CHECK(visited == std::vector<Label>{2, 0, 3, 1, 2, 0, 3, 1});
 
-  SwapSolver<> swap(SwapOptions{VisitOrder::frequency});
+  SwapSolver<> swap(SwapOptions{{VisitOrder::frequency}});
   swap.bind(energy, start);
   std::vector<std::pair<Label, Label>> pairs;
   for (int step = 0; step < 6; ++step) {
@@ -234,7 +234,7 @@ TEST_CASE("recycled and shared move graphs make exactly the moves of graphs solv
     CHECK(recycled_with_shared == 0);
     if (trial % 3 != 2) {  // swap needs a semi-metric
       std::size_t swap_recycled = 0, swap_repeated = 0;
-      SwapSolver<DynamicMaxFlow> swap_recycling(recycling);
+      SwapSolver<DynamicMaxFlow> swap_recycling;  // the default: every pair has its own graphs
       SwapSolver<BoostMaxFlow> swap_boost;
       const auto swap_run =
           labelings_of_run(swap_recycling, energy, 2 * steps, &swap_recycled, &swap_repeated);

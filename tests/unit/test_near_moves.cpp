@@ -1,4 +1,4 @@
-// Near moves (MoveOptions::near_radius): the restricted move problem is exact, frees the
+// Near moves (ExpansionOptions::near_radius): the restricted move problem is exact, frees the
 // variables it promises, and expansion with near moves converges to labelings no whole
 // expansion move improves.
 

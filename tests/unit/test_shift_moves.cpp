@@ -1,4 +1,4 @@
-// Shift moves (MoveOptions::shift_moves): the fusion problem is exact, a shift move makes what
+// Shift moves (ExpansionOptions::shift_moves): the fusion problem is exact, a shift move makes what
 // no expansion move can, and expansion with shift moves converges where neither kind helps.
 
 #include <catch2/catch.hpp>

@@ -69,10 +69,10 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   SolverChoice near;
   near.near_radius = 3;
   CHECK(steps_per_sweep(near, 7) == 21);  // near moves: three sweeps (ExpansionSolver::sweep_steps)
-  CHECK(near.move_options().near_radius == 3);
-  CHECK(near.coarse_move_options().near_radius == 0);  // near moves on the original only
+  CHECK(near.expansion_options().near_radius == 3);
+  CHECK(near.coarse_expansion_options().near_radius == 0);  // near moves on the original only
   near.near_levels = NearLevels::all;
-  CHECK(near.coarse_move_options().near_radius == 3);
+  CHECK(near.coarse_expansion_options().near_radius == 3);
   for (const NearLevels levels : {NearLevels::original, NearLevels::all})
     CHECK(near_levels_from_string(to_string(levels)) == levels);
   CHECK_THROWS_WITH(
@@ -80,29 +80,33 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
       Catch::Contains("unknown near-move levels 'coarse' (expected original or all)"));
   near.kind = SolverKind::swap;
   CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
-  CHECK(near.move_options().near_radius == 0);
   SolverChoice shift;
   shift.shift_moves = true;
   CHECK(steps_per_sweep(shift, 7) == 9);  // L expansion moves and two shift moves
   shift.near_radius = 3;
   CHECK(steps_per_sweep(shift, 7) == 27);
-  CHECK(shift.move_options().shift_moves);
-  CHECK_FALSE(shift.coarse_move_options().shift_moves);  // on the original problem only
+  CHECK(shift.expansion_options().shift_moves);
+  CHECK_FALSE(shift.coarse_expansion_options().shift_moves);  // on the original problem only
   shift.near_levels = NearLevels::all;
-  CHECK(shift.coarse_move_options().shift_moves);
+  CHECK(shift.coarse_expansion_options().shift_moves);
   shift.near_radius = 0;
   shift.kind = SolverKind::lbp;
   CHECK_THAT(shift.validate(), Catch::Contains("shift moves are made by expansion"));
-  CHECK_FALSE(shift.move_options().shift_moves);
+  // Whole options compare: shift moves alone make coarse levels differ from the original.
+  SolverChoice only_shift;
+  only_shift.shift_moves = true;
+  CHECK(only_shift.coarse_expansion_options() != only_shift.expansion_options());
+  only_shift.near_levels = NearLevels::all;
+  CHECK(only_shift.coarse_expansion_options() == only_shift.expansion_options());
   CHECK_THROWS_WITH(
       solver_kind_from_string("trws"),
       Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));
 }
 
 TEST_CASE("every solver validates its options in one shape", "[solvers][surface][validation]") {
-  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{VisitOrder::sequential, 1, -1.0}),
+  CHECK_THROWS_WITH(ExpansionSolver<>(ExpansionOptions{{VisitOrder::sequential, 1, -1.0}}),
                     Catch::Contains("ExpansionOptions: tolerance must be finite and >= 0"));
-  CHECK_THROWS_WITH(SwapSolver<>(SwapOptions{VisitOrder::sequential, 1, -1.0}),
+  CHECK_THROWS_WITH(SwapSolver<>(SwapOptions{{VisitOrder::sequential, 1, -1.0}}),
                     Catch::Contains("SwapOptions: tolerance must be finite and >= 0"));
   CHECK_THROWS_WITH(IcmSolver(IcmOptions{VisitOrder::sequential, 1, -1.0}),
                     Catch::Contains("IcmOptions: tolerance must be finite and >= 0"));
@@ -136,7 +140,7 @@ TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
   };
   const Summary expansion = by_name({SolverKind::expansion, VisitOrder::random, 5});
   CHECK(expansion.labeling ==
-        by_hand(ExpansionSolver<>(ExpansionOptions{VisitOrder::random, 5})).labeling);
+        by_hand(ExpansionSolver<>(ExpansionOptions{{VisitOrder::random, 5}})).labeling);
   CHECK(by_name({SolverKind::swap}).labeling == by_hand(SwapSolver<>()).labeling);
   CHECK(by_name({SolverKind::lbp}).labeling == by_hand(LbpSolver()).labeling);
   const Summary icm = by_name({SolverKind::icm, VisitOrder::random, 3});
@@ -166,9 +170,10 @@ TEST_CASE("near moves chosen by name are made where near_levels says",
     });
     return seen;
   };
-  auto by_name = [&](NearLevels levels) {
+  auto by_name = [&](NearLevels levels, bool shift_moves = false) {
     SolverChoice choice;
-    choice.near_radius = 1;
+    choice.near_radius = shift_moves ? 0 : 1;
+    choice.shift_moves = shift_moves;
     choice.near_levels = levels;
     return energies([&](PartitionList& provider, const Observer& observer) {
       coarse_to_fine(energy, provider, choice, options, observer);
@@ -185,6 +190,20 @@ TEST_CASE("near moves chosen by name are made where near_levels says",
           coarse_to_fine(energy, provider, solver, options, observer);
         }));
   CHECK(original_only != everywhere);  // the coarse level's moves differ
+  // Shift moves alone follow near_levels too (at 7474d32 the dispatch compared only the near
+  // radius, so shift moves without near moves were made on every level).
+  ExpansionOptions shift;
+  shift.shift_moves = true;
+  const std::vector<double> shift_original = by_name(NearLevels::original, true);
+  CHECK(shift_original == energies([&](PartitionList& provider, const Observer& observer) {
+          ExpansionSolver<> coarse_solver(whole), original_solver(shift);
+          coarse_to_fine(energy, provider, coarse_solver, original_solver, options, observer);
+        }));
+  CHECK(by_name(NearLevels::all, true) ==
+        energies([&](PartitionList& provider, const Observer& observer) {
+          ExpansionSolver<> solver(shift);
+          coarse_to_fine(energy, provider, solver, options, observer);
+        }));
 }
 
 TEST_CASE("a released expansion solver must be bound again, and then runs as a new one",

@@ -70,7 +70,8 @@ std::string SolverChoice::validate() const {
   if (shift_moves && kind != SolverKind::expansion)
     return "shift moves are made by expansion; solver '" + std::string(to_string(kind)) +
            "' has none";
-  if (kind == SolverKind::expansion) return move_options().validate();
+  if (kind == SolverKind::expansion) return expansion_options().validate();
+  if (kind == SolverKind::swap) return swap_options().validate();
   return {};
 }
 
@@ -90,7 +91,7 @@ std::size_t steps_per_sweep(SolverKind kind, int num_labels) {
 
 std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels) {
   if (choice.kind == SolverKind::expansion)
-    return ExpansionSolver<>(choice.move_options()).sweep_steps(num_labels);
+    return ExpansionSolver<>(choice.expansion_options()).sweep_steps(num_labels);
   return steps_per_sweep(choice.kind, num_labels);
 }
 

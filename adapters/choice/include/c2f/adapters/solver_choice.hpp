@@ -89,7 +89,8 @@ std::string_view to_string(NearLevels levels);
 /// Parses the names to_string produces; throws std::invalid_argument naming the text.
 NearLevels near_levels_from_string(std::string_view text);
 
-/// A solver and the options every move-making solver shares (MoveOptions, IcmOptions).
+/// A solver and its options, as command lines give them: what every move-making solver has
+/// (MoveOptions, IcmOptions) and expansion's own kinds of move.
 struct SolverChoice {
   SolverKind kind = SolverKind::expansion;
   VisitOrder order = VisitOrder::sequential;   ///< expansion, swap (labels), icm (variables)
@@ -97,26 +98,36 @@ struct SolverChoice {
   MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
   /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
-  int near_radius = 0;       ///< expansion: MoveOptions::near_radius (0: whole moves only)
-  bool shift_moves = false;  ///< expansion: MoveOptions::shift_moves
+  int near_radius = 0;       ///< expansion: ExpansionOptions::near_radius (0: whole moves only)
+  bool shift_moves = false;  ///< expansion: ExpansionOptions::shift_moves
   /// expansion with near_radius > 0 or shift_moves: the levels that make near and shift moves.
   /// On the original problem only (the default) was the faster coarse-to-fine run in every
   /// measurement (docs/results.md, "Near moves on the original problem only").
   NearLevels near_levels = NearLevels::original;
 
-  /// The MoveOptions of expansion and swap on the original problem.
-  [[nodiscard]] MoveOptions move_options() const {
-    MoveOptions options;
+  /// Swap's options.
+  [[nodiscard]] SwapOptions swap_options() const {
+    SwapOptions options;
     options.order = order;
     options.seed = seed;
     options.graph_memory_limit = graph_memory_limit;
-    options.near_radius = kind == SolverKind::expansion ? near_radius : 0;
-    options.shift_moves = kind == SolverKind::expansion && shift_moves;
     return options;
   }
-  /// The same on coarse levels (without near and shift moves unless near_levels is all).
-  [[nodiscard]] MoveOptions coarse_move_options() const {
-    MoveOptions options = move_options();
+  /// Expansion's options on the original problem.
+  [[nodiscard]] ExpansionOptions expansion_options() const {
+    ExpansionOptions options;
+    options.order = order;
+    options.seed = seed;
+    options.graph_memory_limit = graph_memory_limit;
+    options.near_radius = near_radius;
+    options.shift_moves = shift_moves;
+    return options;
+  }
+  /// Expansion's options on coarse levels: without near and shift moves unless near_levels is
+  /// all. coarse_to_fine gives the coarse levels a solver of their own exactly when these
+  /// differ from expansion_options().
+  [[nodiscard]] ExpansionOptions coarse_expansion_options() const {
+    ExpansionOptions options = expansion_options();
     if (near_levels == NearLevels::original) {
       options.near_radius = 0;
       options.shift_moves = false;
@@ -145,15 +156,15 @@ Summary coarse_to_fine(const PairwiseEnergy& energy, P& levels, const SolverChoi
   switch (choice.kind) {
     case SolverKind::expansion:
       return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
-        ExpansionSolver<Backend> solver(choice.move_options());
-        if (choice.coarse_move_options().near_radius == choice.move_options().near_radius)
+        ExpansionSolver<Backend> solver(choice.expansion_options());
+        if (choice.coarse_expansion_options() == choice.expansion_options())
           return coarse_to_fine(energy, levels, solver, options, observer);
-        ExpansionSolver<Backend> coarse_solver(choice.coarse_move_options());
+        ExpansionSolver<Backend> coarse_solver(choice.coarse_expansion_options());
         return coarse_to_fine(energy, levels, coarse_solver, solver, options, observer);
       });
     case SolverKind::swap:
       return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
-        SwapSolver<Backend> solver(choice.move_options());
+        SwapSolver<Backend> solver(choice.swap_options());
         return coarse_to_fine(energy, levels, solver, options, observer);
       });
     case SolverKind::lbp: {

@@ -3,9 +3,9 @@
 // QPBO for non-submodular moves (as OpenGM's alpha-expansion fusion, which the paper used).
 //
 // One step() = one expansion move for one label alpha: every variable may switch to alpha
-// (with MoveOptions::near_radius, only the variables near alpha, in sweeps that alternate with
+// (with ExpansionOptions::near_radius, only the variables near alpha, in sweeps that alternate with
 // whole sweeps: see there and detail/near_moves.hpp). A sweep is one move per label; with
-// MoveOptions::shift_moves it begins with two shift moves, in which every variable may step
+// ExpansionOptions::shift_moves it begins with two shift moves, in which every variable may step
 // one label up (then down) at once (detail/shift_moves.hpp).
 // Labels are cycled in the configured order, restarting at the first label on every bind()
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
@@ -60,7 +60,7 @@ class ExpansionSolver {
   }
 
   /// Steps without a decrease that mean convergence with these options: one sweep (L moves,
-  /// L + 2 with shift moves); with near moves (MoveOptions::near_radius) three sweeps. Near
+  /// L + 2 with shift moves); with near moves (ExpansionOptions::near_radius) three sweeps. Near
   /// and whole moves come in sweeps aligned with the label cycle's passes, and a near sweep
   /// without decrease is always followed by a whole one; so three sweeps' steps without
   /// decrease hold two complete sweeps, one of them a whole sweep that found nothing.

@@ -11,7 +11,8 @@
 
 namespace c2f {
 
-/// Options of a move-making solver. ICM's IcmOptions has the same fields with the same meaning.
+/// What every graph-cut solver (expansion, swap) is told. ICM's IcmOptions has order and seed
+/// with the same meaning.
 struct MoveOptions {
   VisitOrder order = VisitOrder::sequential;
   std::uint64_t seed = 1;  ///< for VisitOrder::random
@@ -26,28 +27,39 @@ struct MoveOptions {
   /// (detail/expansion_problems.hpp). 0 turns both off. With exact arithmetic results do not
   /// depend on it; with rounding, ties between minimum cuts may break differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
-  /// Expansion only. 0: every move may change every variable. r > 0: a move to alpha frees
-  /// only the variables within r edges of a variable labelled alpha or of one whose cheapest
-  /// unary label is alpha (the others keep their labels: an exact move on a smaller graph of
-  /// its own). When a sweep of such moves lowers the energy by at most near_sweep_gain of it,
-  /// one sweep of whole moves follows, then near moves again. Convergence therefore takes three
-  /// sweeps without decrease (ExpansionSolver::sweep_steps).
+
+  /// Empty when usable, else a message naming the field.
+  [[nodiscard]] std::string validate() const;
+  bool operator==(const MoveOptions&) const = default;
+};
+
+/// Alpha-beta swap's options: those every graph-cut solver has.
+struct SwapOptions : MoveOptions {
+  bool operator==(const SwapOptions&) const = default;
+};
+
+/// Alpha-expansion's options: those every graph-cut solver has, and its own kinds of move.
+struct ExpansionOptions : MoveOptions {
+  /// 0: every move may change every variable. r > 0: a move to alpha frees only the variables
+  /// within r edges of a variable labelled alpha or of one whose cheapest unary label is alpha
+  /// (the others keep their labels: an exact move on a smaller graph of its own). When a sweep
+  /// of such moves lowers the energy by at most near_sweep_gain of it, one sweep of whole moves
+  /// follows, then near moves again. Convergence therefore takes three sweeps without decrease
+  /// (ExpansionSolver::sweep_steps).
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;
-  /// Expansion only. Every sweep begins with two shift moves (detail/shift_moves.hpp): every
-  /// variable may step one label up, in one move; then one label down. For labels with an
-  /// order (disparities), they move a region that is off by one label all at once, which no
-  /// expansion move can; the solver then converges where neither kind of move helps. A sweep
-  /// then has L + 2 steps (ExpansionSolver::sweep_steps).
+  /// Every sweep begins with two shift moves (detail/shift_moves.hpp): every variable may step
+  /// one label up, in one move; then one label down. For labels with an order (disparities),
+  /// they move a region that is off by one label all at once, which no expansion move can; the
+  /// solver then converges where neither kind of move helps. A sweep then has L + 2 steps
+  /// (ExpansionSolver::sweep_steps).
   bool shift_moves = false;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
+  bool operator==(const ExpansionOptions&) const = default;
 };
-
-using ExpansionOptions = MoveOptions;
-using SwapOptions = MoveOptions;
 
 /// What the last step of a graph-cut solver did.
 struct MoveStep : StepOutcome {
@@ -56,8 +68,8 @@ struct MoveStep : StepOutcome {
   std::size_t unlabeled = 0;  ///< variables QPBO left open (they kept their label)
   bool used_qpbo = false;     ///< the move was not submodular and went to QPBO
   bool recycled = false;      ///< solved on the move's own graph, resumed from its last flow
-  bool near = false;  ///< expansion: a near move (MoveOptions::near_radius), on its own graph
-  /// expansion: +1 or -1 for a shift move (MoveOptions::shift_moves; alpha and beta are then
+  bool near = false;  ///< expansion: a near move (ExpansionOptions::near_radius), on its own graph
+  /// expansion: +1 or -1 for a shift move (ExpansionOptions::shift_moves; alpha and beta are then
   /// 0), 0 for an expansion move
   int shift = 0;
   double flow_seconds = 0.0;  ///< time inside the max-flow backend

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to ExpansionSolver: the binary problem of an expansion move restricted to the
-// variables near its label (MoveOptions::near_radius). Every other variable keeps its label, so
+// variables near its label (ExpansionOptions::near_radius). Every other variable keeps its label, so
 // its edges to free variables become unary terms of those variables, and the restricted
 // problem's minimum is the minimum of the whole move's problem over the labelings that keep the
 // held variables: an exact move on a smaller graph.

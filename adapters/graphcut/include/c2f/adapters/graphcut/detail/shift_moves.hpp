@@ -1,5 +1,5 @@
 #pragma once
-// Internal to ExpansionSolver: the binary problem of a shift move (MoveOptions::shift_moves),
+// Internal to ExpansionSolver: the binary problem of a shift move (ExpansionOptions::shift_moves),
 // the fusion (Lempitsky et al., "Fusion moves for Markov random field optimization", 2010) of
 // the labeling x with x shifted by a fixed number of labels. Every variable may move from its
 // label to that label plus the shift, all in one move: a region whose labels should all step
