@@ -87,18 +87,15 @@ Outcome segment(const RunCommand& command, const ImageData& image,
   if (command.method == "potts") {
     const PairwiseEnergy potts = potts_energy(coop);
     options.plateau_steps = {L};
-    options.plateau_steps_at_original = L;
     ExpansionSolver<> solver;
     summary = coarse_to_fine(potts, levels, solver, options);
   } else {
     CoopSolverOptions solver_options;
     solver_options.strategy = aux_strategy_from_string(command.method);
     solver_options.start = expansion_start_from_string(command.start);
-    const auto sweep = static_cast<int>(
-        CoopSolver::steps_per_sweep(solver_options.strategy, L, coop.num_classes()));
-    options.plateau_steps = {command.plateau == "sweep" ? sweep : std::min(sweep, L)};
-    options.plateau_steps_at_original = sweep;
     CoopSolver solver(solver_options);
+    const auto sweep = static_cast<int>(solver.quiet_steps_to_converge(coop));
+    options.plateau_steps = {command.plateau == "sweep" ? sweep : std::min(sweep, L)};
     summary = coarse_to_fine(coop, levels, solver, options);
   }
   return {pixel_error(summary.labeling, image.scene.truth), summary.energy};

@@ -75,10 +75,7 @@ Labeling greedy_labeling(const CoopEnergy& energy) {
   solver_options.start = ExpansionStart::current;
   CoopSolver solver(solver_options);
   PartitionList flat;
-  Options options;
-  options.plateau_steps_at_original = static_cast<int>(
-      CoopSolver::steps_per_sweep(AuxStrategy::greedy, energy.num_labels(), energy.num_classes()));
-  return coarse_to_fine(energy, flat, solver, options).labeling;
+  return coarse_to_fine(energy, flat, solver, Options{}).labeling;
 }
 
 std::string model_cells(const CoopParameters& p) {

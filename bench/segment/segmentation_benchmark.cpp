@@ -92,17 +92,18 @@ const std::vector<Config>& configs() {
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
           double time_limit, const std::string& trace_path) {
   const int L = scene.num_labels();
-  const int K = problem.coop.num_classes();
   ScheduleProvider levels(parse_segmentation_schedule(config.schedule, L), scene.shape(),
                           slic_source(scene.image));
-  const std::size_t sweep = config.potts ? static_cast<std::size_t>(L)
-                                         : CoopSolver::steps_per_sweep(config.strategy, L, K);
-  Options options;
-  options.plateau_steps = {config.sweep_plateau
-                               ? static_cast<int>(sweep)
-                               : static_cast<int>(std::min<std::size_t>(sweep, L))};
-  options.plateau_steps_at_original = static_cast<int>(sweep);
-  options.time_limit_seconds = time_limit;
+  // Coarse levels end after L steps without decrease (a whole sweep when the configuration
+  // says so, or when a sweep is shorter); the original problem where the solver has converged.
+  const auto options_for = [&](std::size_t sweep) {
+    Options options;
+    options.plateau_steps = {config.sweep_plateau
+                                 ? static_cast<int>(sweep)
+                                 : static_cast<int>(std::min<std::size_t>(sweep, L))};
+    options.time_limit_seconds = time_limit;
+    return options;
+  };
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   const auto error = pixel_error_function(scene);
@@ -115,13 +116,17 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   };
   if (config.potts) {
     ExpansionSolver<> solver;
-    run.summary = coarse_to_fine(problem.potts, levels, solver, options, observer);
+    run.summary =
+        coarse_to_fine(problem.potts, levels, solver,
+                       options_for(solver.quiet_steps_to_converge(problem.potts)), observer);
   } else {
     CoopSolverOptions solver_options;
     solver_options.strategy = config.strategy;
     solver_options.start = config.start;
     CoopSolver solver(solver_options);
-    run.summary = coarse_to_fine(problem.coop, levels, solver, options, observer);
+    run.summary =
+        coarse_to_fine(problem.coop, levels, solver,
+                       options_for(solver.quiet_steps_to_converge(problem.coop)), observer);
   }
   close_checked(file, trace_path);
   run.error = error(run.summary.labeling);

@@ -64,7 +64,7 @@ BackendRun run_flat(const PairwiseEnergy& energy, std::size_t graph_memory_limit
   solver.bind(energy, start);
   BackendRun result;
   long moves = 0, qpbo = 0, recycled = 0;
-  const std::size_t sweep = solver.steps_per_sweep(energy.num_labels());
+  const std::size_t sweep = solver.quiet_steps_to_converge(energy);
   for (int s = 0; s < kMaxSweeps; ++s) {
     bool improved = false;
     for (std::size_t m = 0; m < sweep; ++m) {

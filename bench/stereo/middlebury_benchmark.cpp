@@ -114,9 +114,7 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   expansion.near_levels = settings.near_levels;
   Options options;
   options.plateau_steps = {4};
-  options.plateau_tolerance = settings.coarse_tolerance;
-  options.plateau_steps_at_original =  // a sweep without decrease (near moves: three)
-      static_cast<int>(steps_per_sweep(expansion, energy.num_labels()));
+  options.plateau_tolerance = settings.coarse_tolerance;  // the original: expansion converged
   options.time_limit_seconds = settings.time_limit;
   Run run;
   std::ofstream file = open_trace_file(trace_path);

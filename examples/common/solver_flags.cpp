@@ -83,12 +83,11 @@ void RunRuleFlags::declare(ToolOptions& options) {
                "pairs for swap, 4 iterations for lbp, 1 for icm)");
 }
 
-Options RunRuleFlags::options(const SolverChoice& choice, int num_labels) const {
+Options RunRuleFlags::options() const {
   Options options;
   options.plateau_steps = {plateau};
   options.plateau_tolerance = plateau_tolerance;
-  options.plateau_steps_at_original =
-      final_plateau > 0 ? final_plateau : static_cast<int>(steps_per_sweep(choice, num_labels));
+  options.plateau_steps_at_original = final_plateau;
   options.time_limit_seconds = time_limit;
   options.max_total_steps = max_steps;
   return options;

@@ -37,14 +37,14 @@ struct RunRuleFlags {
   int plateau = 4;          ///< steps without decrease that end a coarse level
   double plateau_tolerance =
       0.0;                ///< coarse levels only: decreases below this fraction count as none
-  int final_plateau = 0;  ///< on the original problem; 0: one sweep of the solver
+  int final_plateau = 0;  ///< on the original problem; 0: the solver's own convergence
 
   /// Declares the five options in `options` (this object receives their values).
   void declare(ToolOptions& options);
 
-  /// The driver's options: these rules, with one sweep of `choice` on num_labels labels ending
-  /// the original problem when --final-plateau is 0.
-  [[nodiscard]] Options options(const SolverChoice& choice, int num_labels) const;
+  /// The driver's options: these rules (with --final-plateau 0 the original problem ends where
+  /// its solver has converged: one sweep of its moves).
+  [[nodiscard]] Options options() const;
 };
 
 }  // namespace c2f::examples

@@ -49,12 +49,17 @@ Schedule schedule_for(const examples::SegmentCommand& command, int num_labels) {
 }
 
 Summary solve(const examples::SegmentCommand& command, const SegmentationProblem& problem,
-              ScheduleProvider& levels, const Options& options, const Observer& observer) {
+              ScheduleProvider& levels, const Observer& observer) {
+  const int num_labels = problem.coop.num_labels();
   if (command.method == examples::SegmentMethod::potts) {
     ExpansionSolver<> solver;
+    const Options options =
+        examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));
     return coarse_to_fine(problem.potts, levels, solver, options, observer);
   }
   CoopSolver solver(command.coop);
+  const Options options =
+      examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.coop));
   return coarse_to_fine(problem.coop, levels, solver, options, observer);
 }
 
@@ -128,12 +133,10 @@ int main(int argc, char** argv) {
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary =
-        solve(command, built.problem, levels,
-              examples::run_options(command, scene.num_labels(), command.preparation.num_classes),
-              record.observer(
-                  scene.truth.empty() ? TraceWriter::ErrorFunction{} : pixel_error_function(scene),
-                  interrupts, {std::ref(partitions)}));
+    const Summary summary = solve(command, built.problem, levels,
+                                  record.observer(scene.truth.empty() ? TraceWriter::ErrorFunction{}
+                                                                      : pixel_error_function(scene),
+                                                  interrupts, {std::ref(partitions)}));
 
     const auto error =
         write_segmentation_outputs(record.staging().string(), summary.labeling, scene);

@@ -118,12 +118,8 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   return command;
 }
 
-Options run_options(const SegmentCommand& command, int num_labels, int num_classes) {
+Options run_options(const SegmentCommand& command, int num_labels, std::size_t sweep) {
   Options options;
-  const std::size_t sweep =
-      command.method == SegmentMethod::potts
-          ? static_cast<std::size_t>(num_labels)
-          : CoopSolver::steps_per_sweep(command.coop.strategy, num_labels, num_classes);
   // Coarse levels: the reference's window of L trials, or one sweep when that is shorter (a
   // majorise-minimise step without decrease is already a fixed point).
   options.plateau_steps = {
@@ -131,8 +127,7 @@ Options run_options(const SegmentCommand& command, int num_labels, int num_class
       : command.plateau < 0
           ? static_cast<int>(sweep)
           : static_cast<int>(std::min<std::size_t>(sweep, static_cast<std::size_t>(num_labels)))};
-  options.plateau_steps_at_original =
-      command.final_plateau > 0 ? command.final_plateau : static_cast<int>(sweep);
+  options.plateau_steps_at_original = command.final_plateau;  // 0: the solver's own
   options.time_limit_seconds = command.time_limit;
   options.max_total_steps = command.max_steps;
   return options;

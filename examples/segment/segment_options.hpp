@@ -45,7 +45,9 @@ struct SegmentCommand {
 /// message naming the flag for anything invalid (missing files included).
 std::optional<SegmentCommand> parse_segment_command(int argc, char** argv);
 
-/// The driver options for a problem with num_labels labels and num_classes edge classes.
-Options run_options(const SegmentCommand& command, int num_labels, int num_classes);
+/// The driver options for a problem with num_labels labels, solved by a solver whose sweep
+/// (quiet_steps_to_converge) is `sweep` steps: coarse levels end after --plateau steps without
+/// decrease, the original problem where the solver has converged (or after --final-plateau).
+Options run_options(const SegmentCommand& command, int num_labels, std::size_t sweep);
 
 }  // namespace c2f::examples

@@ -92,7 +92,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
 }
 
 Options run_options(const StereoCommand& command) {
-  Options options = command.rules.options(command.solver, command.tsgo.labels);
+  Options options = command.rules.options();
   options.level_transfer =
       command.allow_non_refining ? LevelTransfer::majority : LevelTransfer::exact;
   return options;

@@ -22,8 +22,7 @@ int main() {
   c2f::ScheduleProvider levels(c2f::Schedule::parse("cp:1,1 cp:2,1 flat"), spec.shape);
   c2f::ExpansionSolver<> solver;
   c2f::Options options;
-  options.plateau_steps = {4};
-  options.plateau_steps_at_original = static_cast<int>(c2f::ExpansionSolver<>::steps_per_sweep(8));
+  options.plateau_steps = {4};  // the original problem: until expansion has converged
   long steps = 0;
   const c2f::Summary summary =
       c2f::coarse_to_fine(problem.energy, levels, solver, options, [&](const c2f::StepEvent&) {

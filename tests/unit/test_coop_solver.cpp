@@ -135,7 +135,14 @@ TEST_CASE("the auxiliary variables carry over when the solver moves to another l
                     Catch::Contains("expansion_cycles must be >= 1"));
   CHECK(aux_strategy_from_string("ceres") == AuxStrategy::ceres);
   CHECK_THROWS_WITH(aux_strategy_from_string("annealing"), Catch::Contains("'annealing'"));
-  CHECK(CoopSolver::steps_per_sweep(AuxStrategy::greedy, 3, 10) == 31);
+  // A sweep: every (label, class) flip and the trial of h unchanged; mm: one step; ceres: two.
+  CHECK(energy.num_labels() * energy.num_classes() == 9);
+  CHECK(CoopSolver(options_for(AuxStrategy::greedy, ExpansionStart::zero))
+            .quiet_steps_to_converge(energy) == 10);
+  CHECK(CoopSolver(options_for(AuxStrategy::mm, ExpansionStart::zero))
+            .quiet_steps_to_converge(energy) == 1);
+  CHECK(CoopSolver(options_for(AuxStrategy::ceres, ExpansionStart::zero))
+            .quiet_steps_to_converge(energy) == 2);
 }
 
 TEST_CASE("cooperative cuts run coarse to fine on colour-passing levels",

@@ -104,7 +104,9 @@ TEST_CASE("a flat run is a coarse-to-fine run without partitions", "[driver]") {
   const Summary summary = coarse_to_fine(energy, flat, solver, Options{});
   REQUIRE(summary.levels.size() == 1);
   CHECK(summary.levels[0].num_variables == 120);
-  CHECK(summary.levels[0].steps >= 4);  // plateau of 4 steps without decrease
+  // ICM's step is a sweep: one step without decrease is a fixed point, and the run ends there.
+  CHECK(summary.reason == TerminationReason::converged);
+  CHECK(summary.levels[0].steps >= 1);
   CHECK(summary.energy <= summary.levels[0].start_energy);
 }
 

@@ -39,7 +39,7 @@ TEMPLATE_TEST_CASE("alpha-expansion never increases the energy and stays near th
         ExpansionOptions{{kOrders[trial % 3], static_cast<std::uint64_t>(trial), 0.0}});
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = 0.0;
-    descend(solver, energy, solver.steps_per_sweep(energy.num_labels()), 500, previous,
+    descend(solver, energy, solver.quiet_steps_to_converge(energy), 500, previous,
             [&](const auto& s) { qpbo_moves += s.last_step().used_qpbo; });
     const double optimum = brute_force_minimum(energy).energy;
     INFO("trial " << trial << ", term " << to_string(term.kind()));
@@ -69,7 +69,7 @@ TEST_CASE("alpha-expansion on Potts is within the factor-2 bound of the optimum"
     ExpansionSolver<> solver;
     solver.bind(energy, Labeling(energy.num_variables(), 0));
     const double converged =
-        run_to_convergence(solver, energy, solver.steps_per_sweep(energy.num_labels()));
+        run_to_convergence(solver, energy, solver.quiet_steps_to_converge(energy));
     CHECK(converged <= 2.0 * brute_force_minimum(energy).energy + 1e-9);
   }
 }

@@ -94,14 +94,14 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
     options.order = trial % 4 == 1 ? VisitOrder::random : VisitOrder::sequential;
     options.seed = static_cast<std::uint64_t>(trial);
     ExpansionSolver<TestType> solver(options);
-    REQUIRE(solver.sweep_steps(num_labels) == 3 * static_cast<std::size_t>(num_labels));
+    REQUIRE(solver.quiet_steps_to_converge(energy) == 3 * static_cast<std::size_t>(num_labels));
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = 0.0;
     std::size_t near_steps = 0;
     const std::size_t quiet =
-        descend(solver, energy, solver.sweep_steps(num_labels), 3000, previous,
+        descend(solver, energy, solver.quiet_steps_to_converge(energy), 3000, previous,
                 [&](const auto& s) { near_steps += s.last_step().near; });
-    REQUIRE(quiet == solver.sweep_steps(num_labels));
+    REQUIRE(quiet == solver.quiet_steps_to_converge(energy));
     CHECK(near_steps >= static_cast<std::size_t>(num_labels));
     // Converged: one sweep of whole moves from the result finds nothing lower.
     ExpansionSolver<TestType> whole;
@@ -118,5 +118,6 @@ TEST_CASE("near moves are validated and belong to expansion", "[expansion][near]
   options.near_radius = 2;
   options.near_sweep_gain = -1.0;
   CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("near_sweep_gain"));
-  CHECK(ExpansionSolver<>().sweep_steps(7) == 7);
+  Rng rng(3);
+  CHECK(ExpansionSolver<>().quiet_steps_to_converge(random_grid_energy(rng, 3, 2, 7)) == 7);
 }

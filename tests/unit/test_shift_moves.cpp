@@ -111,7 +111,7 @@ TEMPLATE_TEST_CASE("a shift move moves a ramp that no expansion move can", "[exp
   // Expansion alone stays on the lower ramp: no single move improves it.
   ExpansionSolver<TestType> expansion;
   expansion.bind(energy, lower);
-  CHECK(run_to_convergence(expansion, energy, expansion.sweep_steps(num_labels)) ==
+  CHECK(run_to_convergence(expansion, energy, expansion.quiet_steps_to_converge(energy)) ==
         energy.evaluate(lower));
   // With shift moves the first step of the first sweep shifts everything up.
   ExpansionOptions options;
@@ -155,14 +155,14 @@ TEMPLATE_TEST_CASE("expansion with shift moves descends to labelings neither kin
     options.seed = static_cast<std::uint64_t>(trial);
     ExpansionSolver<TestType> solver(options);
     const std::size_t sweep = static_cast<std::size_t>(num_labels) + 2;
-    REQUIRE(solver.sweep_steps(num_labels) == (options.near_radius > 0 ? 3 : 1) * sweep);
+    REQUIRE(solver.quiet_steps_to_converge(energy) == (options.near_radius > 0 ? 3 : 1) * sweep);
     solver.bind(energy, random_labeling(rng, energy.num_variables(), num_labels));
     double previous = 0.0;
     std::size_t shifts = 0;
     const std::size_t quiet =
-        descend(solver, energy, solver.sweep_steps(num_labels), 3000, previous,
+        descend(solver, energy, solver.quiet_steps_to_converge(energy), 3000, previous,
                 [&](const auto& s) { shifts += s.last_step().shift != 0; });
-    REQUIRE(quiet == solver.sweep_steps(num_labels));
+    REQUIRE(quiet == solver.quiet_steps_to_converge(energy));
     CHECK(shifts >= 2);
     const Labeling result(solver.labeling().begin(), solver.labeling().end());
     // Converged: no whole expansion move lowers the energy ...

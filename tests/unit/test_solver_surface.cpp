@@ -1,10 +1,12 @@
 // Every shipped solver has one surface: options with validate(), last_step() reporting what the
-// step changed, steps_per_sweep(); and a solver chosen by name runs the same as one built by
-// hand.
+// step changed, quiet_steps_to_converge(); a run with default options converges; and a solver
+// chosen by name runs the same as one built by hand.
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "c2f/c2f.hpp"
@@ -52,23 +54,25 @@ TEMPLATE_TEST_CASE("last_step() reports exactly the labels a step changed and wh
   CHECK(improving > 0);  // the property was exercised on improving steps too
 }
 
-TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[solvers][surface]") {
-  CHECK(ExpansionSolver<>::steps_per_sweep(7) == 7);
-  CHECK(SwapSolver<>::steps_per_sweep(7) == 21);
-  CHECK(SwapSolver<>::steps_per_sweep(1) == 1);
-  CHECK(LbpSolver::steps_per_sweep(7) == 4);
-  CHECK(IcmSolver::steps_per_sweep(7) == 1);
+TEST_CASE("solvers tell when they have converged, and the solver choice agrees",
+          "[solvers][surface]") {
+  Rng rng(7);
+  const PairwiseEnergy seven = potts_grid(rng, 4, 3, 7), one = potts_grid(rng, 4, 3, 1);
+  CHECK(ExpansionSolver<>().quiet_steps_to_converge(seven) == 7);
+  CHECK(SwapSolver<>().quiet_steps_to_converge(seven) == 21);
+  CHECK(SwapSolver<>().quiet_steps_to_converge(one) == 1);
+  CHECK(LbpSolver().quiet_steps_to_converge(seven) == 4);
+  CHECK(IcmSolver().quiet_steps_to_converge(seven) == 1);
   for (const SolverKind kind :
        {SolverKind::expansion, SolverKind::swap, SolverKind::lbp, SolverKind::icm}) {
     CHECK(solver_kind_from_string(to_string(kind)) == kind);
   }
-  CHECK(steps_per_sweep(SolverKind::expansion, 7) == 7);
-  CHECK(steps_per_sweep(SolverKind::swap, 7) == 21);
-  CHECK(steps_per_sweep(SolverKind::lbp, 7) == 4);
-  CHECK(steps_per_sweep(SolverKind::icm, 7) == 1);
+  const auto expansion_steps = [&](const ExpansionOptions& options) {
+    return ExpansionSolver<>(options).quiet_steps_to_converge(seven);
+  };
   SolverChoice near;
   near.near_radius = 3;
-  CHECK(steps_per_sweep(near, 7) == 21);  // near moves: three sweeps (ExpansionSolver::sweep_steps)
+  CHECK(expansion_steps(near.expansion_options()) == 21);  // near moves: three sweeps
   CHECK(near.expansion_options().near_radius == 3);
   CHECK(near.coarse_expansion_options().near_radius == 0);  // near moves on the original only
   near.near_levels = NearLevels::all;
@@ -82,9 +86,9 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
   SolverChoice shift;
   shift.shift_moves = true;
-  CHECK(steps_per_sweep(shift, 7) == 9);  // L expansion moves and two shift moves
+  CHECK(expansion_steps(shift.expansion_options()) == 9);  // L expansion and two shift moves
   shift.near_radius = 3;
-  CHECK(steps_per_sweep(shift, 7) == 27);
+  CHECK(expansion_steps(shift.expansion_options()) == 27);
   CHECK(shift.expansion_options().shift_moves);
   CHECK_FALSE(shift.coarse_expansion_options().shift_moves);  // on the original problem only
   shift.near_levels = NearLevels::all;
@@ -101,6 +105,29 @@ TEST_CASE("solvers tell their sweep length, and the solver choice agrees", "[sol
   CHECK_THROWS_WITH(
       solver_kind_from_string("trws"),
       Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));
+}
+
+TEMPLATE_TEST_CASE("a run with default options ends where the solver has converged",
+                   "[solvers][surface][driver]", ExpansionSolver<>, SwapSolver<>, LbpSolver,
+                   IcmSolver) {
+  // Before the solvers said when they converge, default options ended the original problem
+  // after 4 steps without decrease: with 8 labels, in the middle of a sweep.
+  Rng rng(91);
+  for (int trial = 0; trial < 12; ++trial) {
+    const PairwiseEnergy energy = potts_grid(rng, 9, 7, 8);
+    TestType solver;
+    PartitionList flat;
+    const Summary summary = coarse_to_fine(energy, flat, solver, Options{});
+    CHECK(summary.reason == TerminationReason::converged);
+    // Converged: a move-making solver's quiet steps from the result find nothing lower (BP's
+    // state is its messages, not the labeling, so a restart from it proves nothing).
+    if constexpr (!std::is_same_v<TestType, LbpSolver>) {
+      TestType again;
+      again.bind(energy, summary.labeling);
+      for (std::size_t step = 0; step < again.quiet_steps_to_converge(energy); ++step)
+        CHECK(again.step() >= summary.energy - 1e-9 * std::abs(summary.energy));
+    }
+  }
 }
 
 TEST_CASE("every solver validates its options in one shape", "[solvers][surface][validation]") {

@@ -25,7 +25,7 @@ TEST_CASE("TSGO recovers a synthetic disparity map, flat and coarse to fine",
   const GridShape shape{96, 64};
   Options options;
   options.plateau_steps = {4};
-  options.plateau_steps_at_original = tsgo.labels;  // converged: a whole sweep without decrease
+  // The original problem ends where expansion has converged: a whole sweep without decrease.
 
   PartitionList flat;
   ExpansionSolver<> flat_solver;
@@ -68,7 +68,6 @@ TEST_CASE("tsgo_problem is both TSGO steps plus the image that superpixel levels
   ExpansionSolver<> solver;
   Options options;
   options.plateau_steps = {4};
-  options.plateau_steps_at_original = tsgo.labels;
   const Summary summary = coarse_to_fine(problem.energy, slic, solver, options);
   REQUIRE(summary.levels.size() == 2);
   CHECK(summary.levels.front().num_variables < problem.energy.num_variables());

@@ -75,24 +75,4 @@ std::string SolverChoice::validate() const {
   return {};
 }
 
-std::size_t steps_per_sweep(SolverKind kind, int num_labels) {
-  switch (kind) {
-    case SolverKind::expansion:
-      return ExpansionSolver<>::steps_per_sweep(num_labels);
-    case SolverKind::swap:
-      return SwapSolver<>::steps_per_sweep(num_labels);
-    case SolverKind::lbp:
-      return LbpSolver::steps_per_sweep(num_labels);
-    case SolverKind::icm:
-      return IcmSolver::steps_per_sweep(num_labels);
-  }
-  return 1;
-}
-
-std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels) {
-  if (choice.kind == SolverKind::expansion)
-    return ExpansionSolver<>(choice.expansion_options()).sweep_steps(num_labels);
-  return steps_per_sweep(choice.kind, num_labels);
-}
-
 }  // namespace c2f

@@ -198,11 +198,10 @@ CoopSolver::~CoopSolver() = default;
 CoopSolver::CoopSolver(CoopSolver&&) noexcept = default;
 CoopSolver& CoopSolver::operator=(CoopSolver&&) noexcept = default;
 
-std::size_t CoopSolver::steps_per_sweep(AuxStrategy strategy, int num_labels,
-                                        int num_classes) noexcept {
-  switch (strategy) {
+std::size_t CoopSolver::quiet_steps_to_converge(const CoopEnergy& energy) const noexcept {
+  switch (options_.strategy) {
     case AuxStrategy::greedy:
-      return static_cast<std::size_t>(num_labels * num_classes) + 1;
+      return static_cast<std::size_t>(energy.num_labels() * energy.num_classes()) + 1;
     case AuxStrategy::mm:
       return 1;
     case AuxStrategy::ceres:
@@ -254,7 +253,7 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
   const PairwiseEnergy pairwise = vision::pairwise_energy(*energy_, h);
   ExpansionSolver<> expansion;
   expansion.bind(pairwise, start);
-  const auto moves = ExpansionSolver<>::steps_per_sweep(pairwise.num_labels());
+  const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);
   for (int cycle = 0; cycle < options_.expansion_cycles; ++cycle) {
     bool improved = false;
     for (std::size_t m = 0; m < moves; ++m) {

@@ -1,8 +1,9 @@
 #pragma once
 // Choosing a shipped solver at run time (command lines, benchmarks): one enum in the
-// to_string/from_string vocabulary, each solver's sweep length, and coarse_to_fine with the
-// chosen solver. Graph-cut solvers run on the chosen max-flow backend (ours, DynamicMaxFlow,
-// by default; Boost's; Kolmogorov's when the build has it).
+// to_string/from_string vocabulary, and coarse_to_fine with the chosen solver (which ends the
+// original problem where that solver has converged unless the options say otherwise).
+// Graph-cut solvers run on the chosen max-flow backend (ours, DynamicMaxFlow, by default;
+// Boost's; Kolmogorov's when the build has it).
 
 #include <cstddef>
 #include <cstdint>
@@ -138,13 +139,6 @@ struct SolverChoice {
   /// Empty when usable, else a message naming the field (an order the solver cannot take).
   [[nodiscard]] std::string validate() const;
 };
-
-/// Steps without a decrease that mean convergence with this solver on an energy with
-/// num_labels labels: one sweep of its moves (the solver's steps_per_sweep).
-std::size_t steps_per_sweep(SolverKind kind, int num_labels);
-/// The same for the chosen solver with its options (expansion with near moves: three sweeps;
-/// with shift moves, sweeps of L + 2 steps).
-std::size_t steps_per_sweep(const SolverChoice& choice, int num_labels);
 
 /// coarse_to_fine (see c2f/driver/coarse_to_fine.hpp) with the chosen solver, built fresh for
 /// this run. Throws std::invalid_argument when choice.validate() reports a problem.

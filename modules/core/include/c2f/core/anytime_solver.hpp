@@ -35,4 +35,13 @@ concept AnytimeSolver = Energy<E> &&
   { cs.labeling() } -> std::convertible_to<std::span<const Label>>;
 };
 
+/// An AnytimeSolver that says when it has converged: after quiet_steps_to_converge(e)
+/// consecutive steps without a decrease on energy e, no step of its kind lowers the energy
+/// (one sweep of its moves; a fixed point). The driver ends the original problem there unless
+/// told otherwise (Options::plateau_steps_at_original), so default options converge.
+template <class S, class E>
+concept ConvergingSolver = AnytimeSolver<S, E> && requires(const S& cs, const E& e) {
+  { cs.quiet_steps_to_converge(e) } -> std::convertible_to<std::size_t>;
+};
+
 }  // namespace c2f

@@ -206,12 +206,28 @@ Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules
   return coarse_to_fine(energy, levels, solver, solver, rules, observer, init, transfer);
 }
 
-/// As above with the rules and initial labeling of `options`; throws std::invalid_argument
-/// when options.validate() reports a problem.
+/// `options` with plateau_steps_at_original = 0 replaced by what the original problem's solver
+/// says convergence is on `energy` (ConvergingSolver); unchanged for a solver that does not say
+/// and when plateau_steps is empty (no plateau rule on any level).
+template <class E, class S>
+Options with_solver_convergence(Options options, const S& original_solver, const E& energy) {
+  if constexpr (ConvergingSolver<S, E>) {
+    if (options.plateau_steps_at_original == 0 && !options.plateau_steps.empty()) {
+      options.plateau_steps_at_original =
+          static_cast<int>(original_solver.quiet_steps_to_converge(energy));
+    }
+  }
+  return options;
+}
+
+/// As above with the rules and initial labeling of `options` (the original problem ends where
+/// the solver says it has converged unless plateau_steps_at_original says otherwise); throws
+/// std::invalid_argument when options.validate() reports a problem.
 template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
 Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Options& options,
                        const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, solver, solver, options.rules(), observer,
+  return coarse_to_fine(energy, levels, solver, solver,
+                        with_solver_convergence(options, solver, energy).rules(), observer,
                         options.initial_labeling, options.level_transfer);
 }
 
@@ -221,7 +237,8 @@ template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> CoarseSolv
 Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
                        OriginalSolver& original_solver, const Options& options,
                        const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, coarse_solver, original_solver, options.rules(), observer,
+  return coarse_to_fine(energy, levels, coarse_solver, original_solver,
+                        with_solver_convergence(options, original_solver, energy).rules(), observer,
                         options.initial_labeling, options.level_transfer);
 }
 

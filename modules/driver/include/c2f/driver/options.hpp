@@ -30,8 +30,10 @@ struct Options {
   /// Refine (on the original problem: finish) when the energy has not decreased over the last
   /// k steps; k = plateau_steps[level], the last entry serving deeper levels. Empty: no such rule.
   std::vector<int> plateau_steps{4};
-  /// On the original problem (the last level) use this k instead (0: plateau_steps applies).
-  /// With single-label moves, one sweep (k = number of labels) is the usual convergence test.
+  /// On the original problem (the last level) use this k instead. 0: the original problem's
+  /// solver says (quiet_steps_to_converge of a ConvergingSolver: one sweep of its moves), so a
+  /// run with default options converges; for a solver that does not say, plateau_steps
+  /// applies. (With plateau_steps empty and this 0, no level has a plateau rule.)
   int plateau_steps_at_original = 0;
   /// On coarse levels a decrease over those k steps counts only when larger than
   /// plateau_tolerance * max(1, |E|): with a tolerance > 0 a level whose energy merely creeps

@@ -85,11 +85,11 @@ class CoopSolver {
   CoopSolver(CoopSolver&&) noexcept;
   CoopSolver& operator=(CoopSolver&&) noexcept;
 
-  /// Steps without a decrease that mean convergence: a whole sweep of flips for greedy
-  /// (num_labels * num_classes + 1), one step for mm (a fixed point), two for ceres (the
+  /// Steps without a decrease that mean convergence on `energy`: a whole sweep of flips for
+  /// greedy (num_labels * num_classes + 1), one step for mm (a fixed point), two for ceres (the
   /// warm-started relaxation may still move once).
-  [[nodiscard]] static std::size_t steps_per_sweep(AuxStrategy strategy, int num_labels,
-                                                   int num_classes) noexcept;
+  [[nodiscard]] std::size_t quiet_steps_to_converge(
+      const vision::CoopEnergy& energy) const noexcept;
 
   /// Starts from `start` (validated). h is kept from the previous binding when it has this
   /// energy's shape (labels, classes), else it starts all 1.

@@ -53,19 +53,13 @@ class ExpansionSolver {
     }
   }
 
-  /// Steps in one sweep (one move per label): that many steps without a decrease mean no
-  /// single expansion move lowers the energy.
-  [[nodiscard]] static std::size_t steps_per_sweep(int num_labels) noexcept {
-    return static_cast<std::size_t>(num_labels);
-  }
-
-  /// Steps without a decrease that mean convergence with these options: one sweep (L moves,
-  /// L + 2 with shift moves); with near moves (ExpansionOptions::near_radius) three sweeps. Near
-  /// and whole moves come in sweeps aligned with the label cycle's passes, and a near sweep
-  /// without decrease is always followed by a whole one; so three sweeps' steps without
-  /// decrease hold two complete sweeps, one of them a whole sweep that found nothing.
-  [[nodiscard]] std::size_t sweep_steps(int num_labels) const noexcept {
-    return (options_.near_radius > 0 ? 3 : 1) * (shift_steps() + steps_per_sweep(num_labels));
+  /// Steps without a decrease that mean convergence on `energy` with these options: one sweep
+  /// (L moves, L + 2 with shift moves); with near moves (ExpansionOptions::near_radius) three
+  /// sweeps. Near and whole moves come in sweeps aligned with the label cycle's passes, and a
+  /// near sweep without decrease is always followed by a whole one; so three sweeps' steps
+  /// without decrease hold two complete sweeps, one of them a whole sweep that found nothing.
+  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const noexcept {
+    return (options_.near_radius > 0 ? 3 : 1) * steps_per_sweep(energy.num_labels());
   }
 
   /// Starts from `start` (validated); fixes the move graphs' topology. Of
@@ -106,7 +100,7 @@ class ExpansionSolver {
     } else {
       near_move(cycle_.next());
     }
-    if (++sweep_steps_done_ == shift_steps() + steps_per_sweep(state_.energy->num_labels())) {
+    if (++sweep_steps_done_ == steps_per_sweep(state_.energy->num_labels())) {
       sweep_steps_done_ = 0;
       end_sweep();
     }
@@ -122,6 +116,10 @@ class ExpansionSolver {
  private:
   /// Steps of a sweep spent on shift moves: up, then down.
   [[nodiscard]] std::size_t shift_steps() const noexcept { return options_.shift_moves ? 2 : 0; }
+  /// Steps in one sweep: the shift moves, then one expansion move per label.
+  [[nodiscard]] std::size_t steps_per_sweep(int num_labels) const noexcept {
+    return shift_steps() + static_cast<std::size_t>(num_labels);
+  }
 
   /// Chooses the next sweep's moves. With near moves: a near sweep that lowered the energy by
   /// at most near_sweep_gain of it hands over to one sweep of whole moves, then near again.

@@ -38,10 +38,10 @@ class SwapSolver {
     }
   }
 
-  /// Steps in one sweep (one move per label pair): that many steps without a decrease mean no
-  /// single swap move lowers the energy.
-  [[nodiscard]] static std::size_t steps_per_sweep(int num_labels) noexcept {
-    const auto l = static_cast<std::size_t>(num_labels);
+  /// One sweep (one move per label pair): that many steps without a decrease on `energy` mean
+  /// no single swap move lowers it.
+  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const noexcept {
+    const auto l = static_cast<std::size_t>(energy.num_labels());
     return l > 1 ? l * (l - 1) / 2 : 1;
   }
 

@@ -34,7 +34,10 @@ class IcmSolver {
   explicit IcmSolver(IcmOptions options = {});
 
   /// One step is a sweep over all variables, so one step without a decrease is a fixed point.
-  [[nodiscard]] static std::size_t steps_per_sweep(int /*num_labels*/) noexcept { return 1; }
+  [[nodiscard]] std::size_t quiet_steps_to_converge(
+      const PairwiseEnergy& /*energy*/) const noexcept {
+    return 1;
+  }
 
   /// Starts from `start` (validated). Builds the adjacency of `energy` (O(N + E)).
   void bind(const PairwiseEnergy& energy, std::span<const Label> start);

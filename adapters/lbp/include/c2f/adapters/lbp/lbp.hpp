@@ -50,8 +50,11 @@ class LbpSolver {
 
   /// BP has no sweep of moves: its best labeling can stall for a few iterations and then
   /// improve again. Four iterations without a decrease (the paper's plateau) is the window
-  /// the tools take as convergence.
-  [[nodiscard]] static std::size_t steps_per_sweep(int /*num_labels*/) noexcept { return 4; }
+  /// the driver takes as convergence.
+  [[nodiscard]] std::size_t quiet_steps_to_converge(
+      const PairwiseEnergy& /*energy*/) const noexcept {
+    return 4;
+  }
 
   /// Messages start at 0; the best labeling starts as `start` (validated).
   void bind(const PairwiseEnergy& energy, std::span<const Label> start);
