@@ -3,7 +3,8 @@
 //
 //   c2f-bench-crossval run [--data DIR] [--method potts|mm|greedy|ceres] [--start zero|current]
 //                          [--schedule TEXT] [--plateau auto|sweep] [--lambdas LIST]
-//                          [--thetas LIST] [--alphas LIST] [--aside LIST] [--kmeans V]
+//                          [--thetas LIST] [--alphas LIST] [--models L/T/A,...]
+//                          [--aside LIST] [--kmeans V]
 //                          [--threads N]
 //       Segments every labelled image of both coopCuts sets (the multi-label images with seeds,
 //       the binary images) under every model of the grid (lambda x theta x alpha; Potts uses
@@ -54,6 +55,7 @@ struct RunCommand {
   std::string lambdas = "0.5,1,1.5,2";
   std::string thetas = "0.0007,0.002,0.005,0.01";
   std::string alphas = "0,0.2";
+  std::string models;  ///< explicit "lambda/theta/alpha,..." instead of the product grid
   std::string aside;
   examples::PreparationFlags preparation;
   int threads = 0;
@@ -119,9 +121,10 @@ int run(const RunCommand& command) {
   const DataPreparation preparation = command.preparation.resolved();
   const auto lambdas = bench::number_list("--lambdas", command.lambdas, examples::kLambdaRange);
   const bool potts = command.method == "potts";
-  const auto thetas = potts ? std::vector<double>{CoopParameters{}.theta}
+  // Potts reads lambda only; its rows carry the example's theta and alpha.
+  const auto thetas = potts ? std::vector<double>{coopcuts_example_parameters().theta}
                             : bench::number_list("--thetas", command.thetas, examples::kThetaRange);
-  const auto alphas = potts ? std::vector<double>{CoopParameters{}.alpha}
+  const auto alphas = potts ? std::vector<double>{coopcuts_example_parameters().alpha}
                             : bench::number_list("--alphas", command.alphas, examples::kAlphaRange);
   const std::vector<std::string> aside = split(command.aside, ',');
 
@@ -154,6 +157,17 @@ int run(const RunCommand& command) {
   for (double lambda : lambdas) {
     for (double theta : thetas) {
       for (double alpha : alphas) models.push_back({lambda, theta, alpha});
+    }
+  }
+  if (!command.models.empty()) {
+    models.clear();
+    for (const std::string& model : split(command.models, ',')) {
+      const std::vector<std::string> parts = split(model, '/');
+      if (parts.size() != 3)
+        throw std::invalid_argument("--models: expected lambda/theta/alpha, got '" + model + "'");
+      models.push_back({examples::parse_real_option("--models", parts[0], examples::kLambdaRange),
+                        examples::parse_real_option("--models", parts[1], examples::kThetaRange),
+                        examples::parse_real_option("--models", parts[2], examples::kAlphaRange)});
     }
   }
   std::vector<Outcome> outcomes(models.size() * images.size());
@@ -397,6 +411,9 @@ int main(int argc, char** argv) {
         .text("lambdas", &command.lambdas, "weights of the pairwise part, comma-separated")
         .text("thetas", &command.thetas, "breakpoints of F, comma-separated (not for potts)")
         .text("alphas", &command.alphas, "slopes of F after the breakpoint (not for potts)")
+        .text("models", &command.models,
+              "an explicit list of models, lambda/theta/alpha comma-separated, instead of the "
+              "product of the three lists")
         .text("aside", &command.aside, "images kept aside, comma-separated names")
         .integer("threads", &command.threads, {0, 1024}, "threads (0: all cores)");
     examples::declare_data_preparation(options, command.preparation);

@@ -156,7 +156,8 @@ int main(int argc, char** argv) {
     }
 
     if (command.top == 0) return 0;
-    std::vector<std::pair<std::string, CoopParameters>> segmented{{"example", CoopParameters{}}};
+    std::vector<std::pair<std::string, CoopParameters>> segmented{
+        {"example", coopcuts_example_parameters()}};
     for (int rank = 0; rank < std::min<int>(command.top, static_cast<int>(models.size())); ++rank)
       segmented.emplace_back("fit " + std::to_string(rank + 1), models[rank].parameters);
     std::printf("\nOur greedy's pixel errors (published CoGC:");

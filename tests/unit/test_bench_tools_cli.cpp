@@ -215,8 +215,9 @@ TEST_CASE("c2f-bench-published-fit ranks models by the descent c2f-bench-publish
   const std::filesystem::path data = C2F_SHARED_DATA_DIR;
   if (!shared_data_has(data / "coopcuts/runMultilabel/results", "coopCuts")) return;
   const std::string bench = C2F_BENCH_DIR;
-  const auto scores = c2f::test::run_tool(bench + "/c2f-bench-published",
-                                          "--data " + data.string() + " --theta 0.001");
+  const auto scores =
+      c2f::test::run_tool(bench + "/c2f-bench-published",
+                          "--data " + data.string() + " --lambda 1.5 --theta 0.001 --alpha 0");
   const auto fit = c2f::test::run_tool(
       bench + "/c2f-bench-published-fit",
       "--data " + data.string() + " --lambdas 1.5 --thetas 0.005,0.001 --alphas 0 --top 0");

@@ -192,6 +192,7 @@ using c2f::vision::CoopAuxiliary;
 using c2f::vision::CoopEdge;
 using c2f::vision::CoopEnergy;
 using c2f::vision::CoopParameters;
+using c2f::vision::coopcuts_example_parameters;
 using c2f::vision::CostVolume;
 using c2f::vision::cross_bilateral_filter;
 using c2f::vision::downscale;

@@ -4,8 +4,8 @@
 //
 //   E(x) = sum_i phi_i(x_i) + lambda [ sum_{l, g < K} F_g(S_lg(x)) + linear(x) ]
 //   S_lg(x) = sum over cut edges (x_u != x_v) of w/2 for each entry (g, w) on the side whose
-//             label is l (an edge's u side holds the classes of the colour difference seen
-//             from u, its v side those seen from v)
+//             label is l (an edge's u side holds the classes of c(u) - c(v), its v side those
+//             of c(v) - c(u): each side its own colour minus the other's)
 //   F_g(s)  = min(s, alpha s + (1 - alpha) theta T_g), T_g = the ground energy's total weight
 //             of class g over both sides of every edge (full weights)
 //   linear  = sum over cut edges of w/2 for each entry of class K (near-zero differences)
@@ -26,14 +26,24 @@
 
 namespace c2f::vision {
 
+/// The defaults are the model chosen by cross-validation over the labelled coopCuts images for
+/// majorise-minimise on superpixel levels (c2f-segment's default method; docs/results.md,
+/// "Parameters chosen on other images"); coopcuts_example_parameters() are the released
+/// example's.
 struct CoopParameters {
-  double lambda = 1.5;   ///< weight of the pairwise part
+  double lambda = 0.5;   ///< weight of the pairwise part
   double theta = 0.005;  ///< breakpoint of F_g as a fraction of the class's total weight T_g
-  double alpha = 0.0;    ///< slope of F_g after the breakpoint, in [0, 1)
+  double alpha = 0.2;    ///< slope of F_g after the breakpoint, in [0, 1)
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
+  bool operator==(const CoopParameters&) const = default;
 };
+
+/// The coopCuts example's parameters (exampleMultilabel.m: lambda 1.5, theta 0.005, alpha 0).
+constexpr CoopParameters coopcuts_example_parameters() {
+  return {1.5, 0.005, 0.0};
+}
 
 /// One class entry of one side of an edge.
 struct ClassWeight {
