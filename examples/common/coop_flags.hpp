@@ -32,7 +32,7 @@ inline ToolOptions& declare_coop_parameters(ToolOptions& options,
 /// What the data preparation's flags set; `resolved()` is the DataPreparation they name.
 struct PreparationFlags {
   int classes = 10;
-  std::string kmeans = "reference";
+  std::string kmeans = "plusplus";
   std::uint64_t gmm_seed = 27;
   std::uint64_t edge_seed = 27;
 
@@ -55,9 +55,9 @@ inline ToolOptions& declare_data_preparation(ToolOptions& options, PreparationFl
   constexpr IntegerRange kSeeds{0, std::numeric_limits<long long>::max()};
   return options.integer("classes", &flags.classes, {1, 256}, "edge classes K (k-means)")
       .text("kmeans", &flags.kmeans,
-            "how both k-means runs cluster: reference (the released code's MATLAB k-means: K "
-            "random data points to start, batch rounds, then single-point moves) or plusplus "
-            "(k-means++ start, batch rounds only)")
+            "how both k-means runs cluster: plusplus (k-means++ start, batch rounds only: lower "
+            "errors out of sample, docs/results.md) or reference (the released code's MATLAB "
+            "k-means: K random data points to start, batch rounds, then single-point moves)")
       .integer("gmm-seed", &flags.gmm_seed, kSeeds,
                "seed of the k-means that starts each label's colour GMM (the reference's was "
                "unseeded: its unaries were one random draw)")

@@ -27,7 +27,7 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
   for (const char* flags :
        {"--method potts --schedule flat", "--aux mm --schedule paper",
         "--aux greedy --start current --schedule paper-cc --save-partitions",
-        "--aux ceres --schedule flat --gmm-seed 3 --edge-seed 4 --kmeans plusplus"}) {
+        "--aux ceres --schedule flat --gmm-seed 3 --edge-seed 4 --kmeans reference"}) {
     const std::string out = (dir / "out").string();
     std::filesystem::remove_all(out);
     const c2f::test::ToolResult r = run(files.image + " " + files.seeds + " --gt " + files.gt +
@@ -41,10 +41,10 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
     CHECK_THAT(text, Catch::Contains("pixel error: ") && Catch::Contains("cooperative-cut energy"));
     const bool reseeded = std::string(flags).find("--gmm-seed 3") != std::string::npos;
     CHECK_THAT(text,
-               Catch::Contains(reseeded ? "k-means plusplus start, batch rounds only, seeds 3 "
-                                          "(GMMs) and 4 (edge classes)\n"
-                                        : "k-means sample start, batch and online phases, "
-                                          "seeds 27 (GMMs) and 27 (edge classes)\n"));
+               Catch::Contains(reseeded ? "k-means sample start, batch and online phases, seeds "
+                                          "3 (GMMs) and 4 (edge classes)\n"
+                                        : "k-means plusplus start, batch rounds only, seeds 27 "
+                                          "(GMMs) and 27 (edge classes)\n"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
 }
