@@ -27,13 +27,13 @@
 namespace c2f::vision {
 
 /// The defaults are the model chosen by cross-validation over the labelled coopCuts images for
-/// majorise-minimise on superpixel levels (c2f-segment's default method; docs/results.md,
-/// "Parameters chosen on other images"); coopcuts_example_parameters() are the released
-/// example's.
+/// majorise-minimise on superpixel levels with the default data preparation (c2f-segment's
+/// default method; docs/results.md, "Parameters chosen on other images");
+/// coopcuts_example_parameters() are the released example's.
 struct CoopParameters {
-  double lambda = 0.5;   ///< weight of the pairwise part
-  double theta = 0.005;  ///< breakpoint of F_g as a fraction of the class's total weight T_g
-  double alpha = 0.2;    ///< slope of F_g after the breakpoint, in [0, 1)
+  double lambda = 0.5;    ///< weight of the pairwise part
+  double theta = 0.0007;  ///< breakpoint of F_g as a fraction of the class's total weight T_g
+  double alpha = 0.2;     ///< slope of F_g after the breakpoint, in [0, 1)
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
