@@ -37,6 +37,7 @@
 #include "c2f/c2f.hpp"
 #include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
+#include "support/model_grid.hpp"
 #include "support/number_list.hpp"
 #include "support/parallel_for.hpp"
 #include "tool_options.hpp"
@@ -88,16 +89,17 @@ Outcome segment(const RunCommand& command, const ImageData& image,
   Summary summary;
   if (command.method == "potts") {
     const PairwiseEnergy potts = potts_energy(coop);
-    options.plateau_steps = {L};
     ExpansionSolver<> solver;
+    options.plateau_steps = {
+        examples::coarse_plateau_steps(solver.quiet_steps_to_converge(potts), L, false)};
     summary = coarse_to_fine(potts, levels, solver, options);
   } else {
     CoopSolverOptions solver_options;
     solver_options.strategy = aux_strategy_from_string(command.method);
     solver_options.start = expansion_start_from_string(command.start);
     CoopSolver solver(solver_options);
-    const auto sweep = static_cast<int>(solver.quiet_steps_to_converge(coop));
-    options.plateau_steps = {command.plateau == "sweep" ? sweep : std::min(sweep, L)};
+    options.plateau_steps = {examples::coarse_plateau_steps(solver.quiet_steps_to_converge(coop), L,
+                                                            command.plateau == "sweep")};
     summary = coarse_to_fine(coop, levels, solver, options);
   }
   return {pixel_error(summary.labeling, image.scene.truth), summary.energy};
@@ -153,12 +155,7 @@ int run(const RunCommand& command) {
       },
       static_cast<unsigned>(command.threads));
 
-  std::vector<CoopParameters> models;
-  for (double lambda : lambdas) {
-    for (double theta : thetas) {
-      for (double alpha : alphas) models.push_back({lambda, theta, alpha});
-    }
-  }
+  std::vector<CoopParameters> models = bench::model_grid(lambdas, thetas, alphas);
   if (!command.models.empty()) {
     models.clear();
     for (const std::string& model : split(command.models, ',')) {

@@ -30,6 +30,7 @@
 #include "c2f/c2f.hpp"
 #include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
+#include "support/model_grid.hpp"
 #include "support/number_list.hpp"
 #include "support/parallel_for.hpp"
 #include "support/published_labelings.hpp"
@@ -121,12 +122,8 @@ int main(int argc, char** argv) {
     }
 
     std::vector<Model> models;
-    for (double lambda : lambdas) {
-      for (double theta : thetas) {
-        for (double alpha : alphas)
-          models.push_back({CoopParameters{lambda, theta, alpha}, {}, 0.0});
-      }
-    }
+    for (const CoopParameters& parameters : bench::model_grid(lambdas, thetas, alphas))
+      models.push_back({parameters, {}, 0.0});
     std::atomic<std::size_t> done{0};
     bench::parallel_for(models.size(), [&](std::size_t m) {
       Model& model = models[m];

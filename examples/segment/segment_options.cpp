@@ -120,13 +120,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
 
 Options run_options(const SegmentCommand& command, int num_labels, std::size_t sweep) {
   Options options;
-  // Coarse levels: the reference's window of L trials, or one sweep when that is shorter (a
-  // majorise-minimise step without decrease is already a fixed point).
-  options.plateau_steps = {
-      command.plateau > 0 ? command.plateau
-      : command.plateau < 0
-          ? static_cast<int>(sweep)
-          : static_cast<int>(std::min<std::size_t>(sweep, static_cast<std::size_t>(num_labels)))};
+  options.plateau_steps = {command.plateau > 0
+                               ? command.plateau
+                               : coarse_plateau_steps(sweep, num_labels, command.plateau < 0)};
   options.plateau_steps_at_original = command.final_plateau;  // 0: the solver's own
   options.time_limit_seconds = command.time_limit;
   options.max_total_steps = command.max_steps;
