@@ -44,6 +44,7 @@ def public_names(source):
                 r"(?:inline\s+)?(?:constexpr\s+)?using\s+(\w+)\s*=",
                 r"(?:inline\s+)?constexpr\s+[\w:<>, ]+\s+(\w+)\s*[{=\[]",
                 r"(?:\[\[nodiscard\]\]\s*)?(?:inline\s+|constexpr\s+|static\s+)*[\w:<>,\s\*&]+?[\s\*&](\w+)\s*\(",
+                r"(?:\[\[nodiscard\]\]\s*)?(?:inline\s+|constexpr\s+)*decltype\(auto\)\s+(\w+)\s*\(",
             ]
             for pattern in patterns:
                 found = re.match(pattern, line)

@@ -49,6 +49,7 @@
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/superpixels.hpp"
+#include "solver_flags.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "tool_options.hpp"
@@ -120,11 +121,12 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
-  run.summary = coarse_to_fine(energy, provider, expansion, options, [&](const StepEvent& event) {
-    writer(event);
-    run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
-    return ObserverDecision::continue_run;
-  });
+  run.summary = examples::run_chosen_solver(
+      energy, provider, expansion, options, [&](const StepEvent& event) {
+        writer(event);
+        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+        return ObserverDecision::continue_run;
+      });
   close_checked(file, trace_path);
   run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
                               scene.nonoccluded);

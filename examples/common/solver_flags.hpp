@@ -2,11 +2,15 @@
 // The options that choose a solver and end its run, shared by the tools that offer every
 // solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --near-radius,
 // --shift-moves, --near-levels, --label-order, and
-// --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
+// --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau; and the run with
+// the solver they choose.
 
 #include <string>
 
 #include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/observer.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/driver/options.hpp"
 #include "tool_options.hpp"
 
@@ -46,5 +50,16 @@ struct RunRuleFlags {
   /// its solver has converged: one sweep of its moves).
   [[nodiscard]] Options options() const;
 };
+
+/// The tools' run step: coarse_to_fine with the solver(s) `choice` builds for this run
+/// (with_chosen_solvers). Throws std::invalid_argument when the choice or the options are not
+/// usable.
+template <PartitionProvider<PairwiseEnergy> P>
+Summary run_chosen_solver(const PairwiseEnergy& energy, P& levels, const SolverChoice& choice,
+                          const Options& options, const Observer& observer = {}) {
+  return with_chosen_solvers(choice, [&](auto&& solvers) {
+    return coarse_to_fine(energy, levels, solvers, options, observer);
+  });
+}
 
 }  // namespace c2f::examples

@@ -70,8 +70,8 @@ int main(int argc, char** argv) {
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
     const Summary summary =
-        coarse_to_fine(model.energy, levels, command.solver, command.rules.options(),
-                       record.observer(TraceWriter::ErrorFunction{}, interrupts));
+        examples::run_chosen_solver(model.energy, levels, command.solver, command.rules.options(),
+                                    record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
     write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());
     write_summary(record.staging(), command, model, schedule, levels, summary, interrupts);

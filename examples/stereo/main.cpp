@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary = coarse_to_fine(
+    const Summary summary = examples::run_chosen_solver(
         problem.tsgo.energy, levels, command.solver, examples::run_options(command),
         record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
                         interrupts, {std::ref(partitions)}));

@@ -117,7 +117,7 @@ TEST_CASE("coarse levels and the original problem can have solvers of their own"
   options.plateau_steps = {3};
   CountingSolver coarse, original;
   BlockHierarchy levels(GridShape{16, 16}, {8, 4});
-  const Summary summary = coarse_to_fine(energy, levels, coarse, original, options);
+  const Summary summary = coarse_to_fine(energy, levels, LevelSolvers(coarse, original), options);
   REQUIRE(summary.levels.size() == 3);
   // The coarse solver solves both coarse levels (2x2 and 4x4 blocks), the original solver the
   // original problem; the coarse solver is released once, when the original problem begins.
@@ -132,7 +132,7 @@ TEST_CASE("coarse levels and the original problem can have solvers of their own"
   // Two solvers configured alike give the run of one; one object passed twice is not released.
   BlockHierarchy same_levels(GridShape{16, 16}, {8, 4});
   CountingSolver both;
-  const Summary one = coarse_to_fine(energy, same_levels, both, both, options);
+  const Summary one = coarse_to_fine(energy, same_levels, LevelSolvers(both, both), options);
   CHECK(one.labeling == summary.labeling);
   CHECK(one.total_steps == summary.total_steps);
   CHECK(both.bound_sizes == std::vector<std::size_t>{4, 16, 256});
@@ -178,9 +178,9 @@ TEST_CASE("stopping rules end the run with their reason", "[driver][rules]") {
   SECTION("time limit") {
     BlockHierarchy levels(GridShape{16, 16}, {8, 4});
     IcmSolver solver;
-    Rules rules;
-    rules.add(time_limit(1e-9)).add(no_decrease({4}));
-    const Summary summary = coarse_to_fine(energy, levels, solver, rules);
+    Options options;
+    options.time_limit_seconds = 1e-9;
+    const Summary summary = coarse_to_fine(energy, levels, solver, options);
     CHECK(summary.reason == TerminationReason::time_limit);
   }
   SECTION("observer") {
@@ -312,7 +312,14 @@ TEST_CASE("options and rules validate their fields", "[driver][options][validati
   const PairwiseEnergy energy = random_grid_energy(rng, 4, 4, 2);
   PartitionList flat;
   IcmSolver solver;
-  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, Rules{}), Catch::Contains("no rules"));
+  Options endless;
+  endless.plateau_steps.clear();
+  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, endless),
+                    Catch::Contains("no rule ends a level"));
+  Options empty_rule;
+  empty_rule.extra_rules = {time_limit(1.0), Rule{}};
+  CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, empty_rule),
+                    Catch::Contains("extra_rules[1] is empty"));
   CHECK_THROWS_WITH(coarse_to_fine(energy, flat, solver, options),
                     Catch::Contains("target_energy"));
   options = Options{};
@@ -343,11 +350,27 @@ TEST_CASE("the driver starts from the chosen initial labeling", "[driver]") {
                               {Edge{0, 1, 1.0, 0}});
   PartitionList flat;
   IcmSolver solver;
-  Rules rules;
-  rules.add(target_energy(1e9));
-  CHECK(coarse_to_fine(energy, flat, solver, rules, {}, InitialLabeling::zero).labeling ==
-        Labeling{0, 0});
+  Options options;
+  options.target_energy = 1e9;
+  options.initial_labeling = InitialLabeling::zero;
+  CHECK(coarse_to_fine(energy, flat, solver, options).labeling == Labeling{0, 0});
   PartitionList flat_again;
-  CHECK(coarse_to_fine(energy, flat_again, solver, rules, {}, InitialLabeling::unary_argmin)
-            .labeling == Labeling{2, 2});
+  options.initial_labeling = InitialLabeling::unary_argmin;
+  CHECK(coarse_to_fine(energy, flat_again, solver, options).labeling == Labeling{2, 2});
+}
+
+TEST_CASE("rules of one's own are consulted with the options' rules", "[driver][rules]") {
+  Rng rng(8);
+  const PairwiseEnergy energy = random_grid_energy(rng, 8, 8, 3);
+  PartitionList flat;
+  IcmSolver solver;
+  Options options;
+  // A rule of one's own: stop once the run has made two steps.
+  options.extra_rules = {[](const StepEvent& event) {
+    return event.total_steps >= 2 ? Verdict{Decision::stop, TerminationReason::step_limit}
+                                  : Verdict{};
+  }};
+  const Summary summary = coarse_to_fine(energy, flat, solver, options);
+  CHECK(summary.reason == TerminationReason::step_limit);
+  CHECK(summary.total_steps == 2);
 }

@@ -163,7 +163,8 @@ TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
   };
   auto by_name = [&](SolverChoice choice) {
     PartitionList provider({levels[0], intersect(levels[0], levels[1])});
-    return coarse_to_fine(energy, provider, choice, options);
+    return with_chosen_solvers(
+        choice, [&](auto&& solvers) { return coarse_to_fine(energy, provider, solvers, options); });
   };
   const Summary expansion = by_name({SolverKind::expansion, VisitOrder::random, 5});
   CHECK(expansion.labeling ==
@@ -203,14 +204,17 @@ TEST_CASE("near moves chosen by name are made where near_levels says",
     choice.shift_moves = shift_moves;
     choice.near_levels = levels;
     return energies([&](PartitionList& provider, const Observer& observer) {
-      coarse_to_fine(energy, provider, choice, options, observer);
+      with_chosen_solvers(choice, [&](auto&& solvers) {
+        return coarse_to_fine(energy, provider, solvers, options, observer);
+      });
     });
   };
   const std::vector<double> original_only = by_name(NearLevels::original);
   const std::vector<double> everywhere = by_name(NearLevels::all);
   CHECK(original_only == energies([&](PartitionList& provider, const Observer& observer) {
           ExpansionSolver<> coarse_solver(whole), original_solver(near);
-          coarse_to_fine(energy, provider, coarse_solver, original_solver, options, observer);
+          coarse_to_fine(energy, provider, LevelSolvers(coarse_solver, original_solver), options,
+                         observer);
         }));
   CHECK(everywhere == energies([&](PartitionList& provider, const Observer& observer) {
           ExpansionSolver<> solver(near);
@@ -224,7 +228,8 @@ TEST_CASE("near moves chosen by name are made where near_levels says",
   const std::vector<double> shift_original = by_name(NearLevels::original, true);
   CHECK(shift_original == energies([&](PartitionList& provider, const Observer& observer) {
           ExpansionSolver<> coarse_solver(whole), original_solver(shift);
-          coarse_to_fine(energy, provider, coarse_solver, original_solver, options, observer);
+          coarse_to_fine(energy, provider, LevelSolvers(coarse_solver, original_solver), options,
+                         observer);
         }));
   CHECK(by_name(NearLevels::all, true) ==
         energies([&](PartitionList& provider, const Observer& observer) {

@@ -42,6 +42,9 @@ std::string Options::validate() const {
     return "time_limit_seconds must be finite and >= 0 (0: no limit)";
   }
   if (target_energy && !std::isfinite(*target_energy)) return "target_energy must be finite";
+  for (std::size_t i = 0; i < extra_rules.size(); ++i) {
+    if (!extra_rules[i]) return "extra_rules[" + std::to_string(i) + "] is empty";
+  }
   if (plateau_steps.empty() && max_steps_per_level == 0) {
     return "no rule ends a level: set plateau_steps or max_steps_per_level";
   }
@@ -64,6 +67,7 @@ Rules Options::rules() const {
   if (max_total_steps > 0) rules.add(total_step_limit(max_total_steps));
   if (time_limit_seconds > 0.0) rules.add(time_limit(time_limit_seconds));
   if (target_energy) rules.add(c2f::target_energy(*target_energy));
+  for (const Rule& rule : extra_rules) rules.add(rule);
   return rules;
 }
 

@@ -16,8 +16,9 @@ int main() {
       shape, c2f::Connectivity::four, 4, std::move(unaries), c2f::PairwiseTerm::tsgo_step(),
       [](c2f::VariableIndex, c2f::VariableIndex) { return 0.3125; });
   c2f::ScheduleProvider levels(c2f::vision::parse_stereo_schedule("paper"), shape);
-  const c2f::Summary summary = c2f::coarse_to_fine(
-      energy, levels, c2f::SolverChoice{c2f::SolverKind::expansion}, c2f::Options{});
+  const c2f::Summary summary = c2f::with_chosen_solvers(
+      c2f::SolverChoice{c2f::SolverKind::expansion},
+      [&](auto&& solvers) { return c2f::coarse_to_fine(energy, levels, solvers, c2f::Options{}); });
   const double start =
       energy.evaluate(c2f::initial_labeling(energy, c2f::InitialLabeling::unary_argmin));
   std::cout << "coarse-to-fine " << summary.energy << " from " << start << " in "

@@ -1,12 +1,13 @@
 #pragma once
 // Choosing a shipped solver at run time (command lines, benchmarks): one enum in the
-// to_string/from_string vocabulary, and coarse_to_fine with the chosen solver (which ends the
-// original problem where that solver has converged unless the options say otherwise).
+// to_string/from_string vocabulary, and the chosen solver built for a caller (which hands it to
+// coarse_to_fine; solvers do not drive levels).
 // Graph-cut solvers run on the chosen max-flow backend (ours, DynamicMaxFlow, by default;
 // Boost's; Kolmogorov's when the build has it).
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -19,9 +20,9 @@
 #ifdef C2F_HAVE_KOLMOGOROV_MAXFLOW
 #include "c2f/adapters/maxflow/kolmogorov_maxflow.hpp"
 #endif
+#include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/visit_order.hpp"
-#include "c2f/driver/coarse_to_fine.hpp"
 
 namespace c2f {
 
@@ -140,37 +141,38 @@ struct SolverChoice {
   [[nodiscard]] std::string validate() const;
 };
 
-/// coarse_to_fine (see c2f/driver/coarse_to_fine.hpp) with the chosen solver, built fresh for
-/// this run. Throws std::invalid_argument when choice.validate() reports a problem.
-template <PartitionProvider<PairwiseEnergy> P>
-Summary coarse_to_fine(const PairwiseEnergy& energy, P& levels, const SolverChoice& choice,
-                       const Options& options, const Observer& observer = {}) {
+/// Builds the chosen solver fresh and returns f(solvers): the solver itself, or
+/// LevelSolvers{coarse, original} when the coarse levels need a solver of their own (expansion
+/// whose coarse_expansion_options() differ from expansion_options()). What f does with them is
+/// the caller's: coarse_to_fine(energy, levels, solvers, options) runs them. Throws
+/// std::invalid_argument when choice.validate() reports a problem.
+template <class F>
+decltype(auto) with_chosen_solvers(const SolverChoice& choice, F&& f) {
   if (const std::string problem = choice.validate(); !problem.empty())
     throw std::invalid_argument("solver choice: " + problem);
   switch (choice.kind) {
     case SolverKind::expansion:
-      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
+      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) -> decltype(auto) {
         ExpansionSolver<Backend> solver(choice.expansion_options());
-        if (choice.coarse_expansion_options() == choice.expansion_options())
-          return coarse_to_fine(energy, levels, solver, options, observer);
+        if (choice.coarse_expansion_options() == choice.expansion_options()) return f(solver);
         ExpansionSolver<Backend> coarse_solver(choice.coarse_expansion_options());
-        return coarse_to_fine(energy, levels, coarse_solver, solver, options, observer);
+        return f(LevelSolvers(coarse_solver, solver));
       });
     case SolverKind::swap:
-      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) {
+      return with_maxflow_backend(choice.maxflow, [&]<class Backend>(Backend) -> decltype(auto) {
         SwapSolver<Backend> solver(choice.swap_options());
-        return coarse_to_fine(energy, levels, solver, options, observer);
+        return f(solver);
       });
     case SolverKind::lbp: {
       LbpSolver solver;
-      return coarse_to_fine(energy, levels, solver, options, observer);
+      return f(solver);
     }
     case SolverKind::icm: {
       IcmSolver solver(IcmOptions{choice.order, choice.seed});
-      return coarse_to_fine(energy, levels, solver, options, observer);
+      return f(solver);
     }
   }
-  throw std::logic_error("coarse_to_fine: unknown solver kind");
+  throw std::logic_error("with_chosen_solvers: unknown solver kind");
 }
 
 }  // namespace c2f

@@ -4,6 +4,7 @@
 #include <concepts>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "c2f/core/energy.hpp"
 #include "c2f/core/labeling.hpp"
@@ -43,5 +44,32 @@ template <class S, class E>
 concept ConvergingSolver = AnytimeSolver<S, E> && requires(const S& cs, const E& e) {
   { cs.quiet_steps_to_converge(e) } -> std::convertible_to<std::size_t>;
 };
+
+/// Two solvers for one coarse-to-fine run: `coarse` on every reduced level, `original` on the
+/// original problem (e.g. whole expansion moves on the coarse levels and near moves on the
+/// original one). Holds references: both must outlive the run. They may be one object.
+template <class CoarseSolver, class OriginalSolver>
+struct LevelSolvers {
+  LevelSolvers(CoarseSolver& coarse_solver, OriginalSolver& original_solver)
+      : coarse(coarse_solver), original(original_solver) {}
+  CoarseSolver& coarse;
+  OriginalSolver& original;
+};
+
+namespace detail {
+template <class S>
+inline constexpr bool is_level_solvers = false;
+template <class C, class O>
+inline constexpr bool is_level_solvers<LevelSolvers<C, O>> = true;
+}  // namespace detail
+
+/// What coarse_to_fine accepts as its solvers for energies of type E (references and const
+/// aside): one AnytimeSolver for every level, or LevelSolvers of two.
+template <class S, class E>
+concept SolversFor = AnytimeSolver<std::remove_cvref_t<S>, E> ||
+    (detail::is_level_solvers<std::remove_cvref_t<S>>&& requires(std::remove_cvref_t<S>& s) {
+      requires AnytimeSolver<std::remove_cvref_t<decltype(s.coarse)>, E>;
+      requires AnytimeSolver<std::remove_cvref_t<decltype(s.original)>, E>;
+    });
 
 }  // namespace c2f

@@ -6,6 +6,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -70,39 +71,32 @@ class LevelSolver {
   bool at_original_ = false;
 };
 
-}  // namespace detail
+/// The solver of the coarse levels and of the original problem in `solvers` (one object for
+/// a single solver).
+template <class S>
+auto& coarse_of(S& solvers) {
+  if constexpr (is_level_solvers<std::remove_cvref_t<S>>) {
+    return solvers.coarse;
+  } else {
+    return solvers;
+  }
+}
+template <class S>
+auto& original_of(S& solvers) {
+  if constexpr (is_level_solvers<std::remove_cvref_t<S>>) {
+    return solvers.original;
+  } else {
+    return solvers;
+  }
+}
 
-/// Minimises `energy` coarse to fine. For each partition that `levels` provides (coarsest
-/// first), the energy is reduced by it, the current labeling is transferred to it (same
-/// energy), `coarse_solver` is bound to the reduced energy and stepped until `rules` say
-/// refine; then `original_solver` solves the original energy the same way, until the rules say
-/// refine (finished) or stop. The two may be one object (the overload below) or differ, e.g.
-/// whole expansion moves on the coarse levels and near moves on the original problem. A
-/// provider that yields no partition gives the flat run, with the same code and clock.
-///
-/// The run clock starts before the first partition is built; partitions, reductions, transfers
-/// and binding are on it; time inside `observer` is not. The observer sees every step,
-/// including step 0 of every level, with the energy of the current labeling (equal to the
-/// energy of the ground labeling it stands for, by Theorem 1).
-///
-/// With LevelTransfer::exact (the default) every level must refine the previous one and the
-/// energy is handed down unchanged; LevelTransfer::majority accepts any level sequence and
-/// hands labels down by majority vote, which can change the energy at a level switch.
-///
-/// Levels may come as any Partition type (converted with to_dense_partition, on the clock).
-/// Throws std::invalid_argument when a provided partition does not cover the energy's variables
-/// or, with LevelTransfer::exact, does not refine the previous level.
-template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> CoarseSolver,
-          AnytimeSolver<E> OriginalSolver>
-Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
-                       OriginalSolver& original_solver, const Rules& rules,
-                       const Observer& observer = {},
-                       InitialLabeling init = InitialLabeling::unary_argmin,
-                       LevelTransfer transfer = LevelTransfer::exact) {
-  if (rules.empty())
-    throw std::invalid_argument("coarse_to_fine: no rules; the run would never end");
-  detail::LevelSolver<E, CoarseSolver, OriginalSolver> solver(coarse_solver, original_solver);
-  detail::RunClock clock;
+/// Algorithm 1 with the rules, start and transfer already worked out from the options.
+template <class E, class P, class CoarseSolver, class OriginalSolver>
+Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
+                   OriginalSolver& original_solver, const Rules& rules, const Observer& observer,
+                   InitialLabeling init, LevelTransfer transfer) {
+  LevelSolver<E, CoarseSolver, OriginalSolver> solver(coarse_solver, original_solver);
+  RunClock clock;
   Summary summary;
   std::optional<DensePartition> previous;  // partition of the last finished level
   Labeling labeling;                       // labeling on the last finished level
@@ -197,15 +191,6 @@ Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
   return summary;
 }
 
-/// As above with one solver for every level.
-template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
-Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Rules& rules,
-                       const Observer& observer = {},
-                       InitialLabeling init = InitialLabeling::unary_argmin,
-                       LevelTransfer transfer = LevelTransfer::exact) {
-  return coarse_to_fine(energy, levels, solver, solver, rules, observer, init, transfer);
-}
-
 /// `options` with plateau_steps_at_original = 0 replaced by what the original problem's solver
 /// says convergence is on `energy` (ConvergingSolver); unchanged for a solver that does not say
 /// and when plateau_steps is empty (no plateau rule on any level).
@@ -220,26 +205,42 @@ Options with_solver_convergence(Options options, const S& original_solver, const
   return options;
 }
 
-/// As above with the rules and initial labeling of `options` (the original problem ends where
-/// the solver says it has converged unless plateau_steps_at_original says otherwise); throws
-/// std::invalid_argument when options.validate() reports a problem.
-template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> S>
-Summary coarse_to_fine(const E& energy, P& levels, S& solver, const Options& options,
-                       const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, solver, solver,
-                        with_solver_convergence(options, solver, energy).rules(), observer,
-                        options.initial_labeling, options.level_transfer);
-}
+}  // namespace detail
 
-/// The same with one solver for the coarse levels and another for the original problem.
-template <ReducibleEnergy E, PartitionProvider<E> P, AnytimeSolver<E> CoarseSolver,
-          AnytimeSolver<E> OriginalSolver>
-Summary coarse_to_fine(const E& energy, P& levels, CoarseSolver& coarse_solver,
-                       OriginalSolver& original_solver, const Options& options,
+/// Minimises `energy` coarse to fine: the one entry point of the driver. For each partition
+/// that `levels` provides (coarsest first), the energy is reduced by it, the current labeling
+/// is transferred to it (same energy), the coarse solver is bound to the reduced energy and
+/// stepped until the rules of `options` say refine; then the original problem's solver solves
+/// the original energy the same way, until the rules say refine (finished) or stop. `solvers`
+/// is one AnytimeSolver for every level, or LevelSolvers{coarse, original} (e.g. whole
+/// expansion moves on the coarse levels and near moves on the original problem). A provider
+/// that yields no partition gives the flat run, with the same code and clock.
+///
+/// The original problem ends where its solver says it has converged (a ConvergingSolver's
+/// quiet_steps_to_converge) unless options.plateau_steps_at_original says otherwise, so
+/// default options converge for every shipped solver. Throws std::invalid_argument when
+/// options.validate() reports a problem.
+///
+/// The run clock starts before the first partition is built; partitions, reductions, transfers
+/// and binding are on it; time inside `observer` is not. The observer sees every step,
+/// including step 0 of every level, with the energy of the current labeling (equal to the
+/// energy of the ground labeling it stands for, by Theorem 1).
+///
+/// With LevelTransfer::exact (the default) every level must refine the previous one and the
+/// energy is handed down unchanged; LevelTransfer::majority accepts any level sequence and
+/// hands labels down by majority vote, which can change the energy at a level switch.
+///
+/// Levels may come as any Partition type (converted with to_dense_partition, on the clock).
+/// Throws std::invalid_argument when a provided partition does not cover the energy's variables
+/// or, with LevelTransfer::exact, does not refine the previous level.
+template <ReducibleEnergy E, PartitionProvider<E> P, SolversFor<E> Solvers>
+Summary coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Options& options,
                        const Observer& observer = {}) {
-  return coarse_to_fine(energy, levels, coarse_solver, original_solver,
-                        with_solver_convergence(options, original_solver, energy).rules(), observer,
-                        options.initial_labeling, options.level_transfer);
+  auto& coarse = detail::coarse_of(solvers);
+  auto& original = detail::original_of(solvers);
+  return detail::run_levels(energy, levels, coarse, original,
+                            detail::with_solver_convergence(options, original, energy).rules(),
+                            observer, options.initial_labeling, options.level_transfer);
 }
 
 }  // namespace c2f

@@ -53,6 +53,9 @@ struct Options {
   /// exact unless the partition provider was explicitly allowed to produce levels that do not
   /// refine each other.
   LevelTransfer level_transfer = LevelTransfer::exact;
+  /// Rules of your own (c2f/driver/rules.hpp), consulted after the ones the fields above
+  /// describe; the strongest verdict wins. They do not replace the rule that ends every level.
+  std::vector<Rule> extra_rules;
 
   /// Empty when the options are usable, else a message naming the offending field. Options
   /// must contain a rule that ends every level (plateau_steps or max_steps_per_level).
