@@ -37,6 +37,7 @@
 
 #include "c2f/c2f.hpp"
 #include "coop_flags.hpp"
+#include "output_folder.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "support/coopcuts_files.hpp"
@@ -160,7 +161,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
         std::find(selected.begin(), selected.end(), config.name) != selected.end())
       traces.push_back(name + "-" + config.name + ".csv");
   }
-  OutputFolder output(out, traces);
+  examples::OutputFolder output(out, traces);
   if (header) {
     for (std::size_t i = 0; i < std::size(kColumns); ++i)
       std::printf("%s%s", i ? "\t" : "", kColumns[i]);

@@ -49,6 +49,7 @@
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/superpixels.hpp"
+#include "output_folder.hpp"
 #include "solver_flags.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
@@ -142,7 +143,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
-  OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
+  examples::OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
   auto solve_with = [&](const std::string& schedule, int near_radius, bool shift_moves,
                         const std::string& trace) {
     return solve(problem, scene, schedule, near_radius, shift_moves, settings,

@@ -9,6 +9,9 @@
 #include <optional>
 
 #include "c2f/c2f.hpp"
+#include "interrupt_watch.hpp"
+#include "run_record.hpp"
+#include "run_report.hpp"
 #include "segment_options.hpp"
 #include "tool_options.hpp"
 
@@ -72,7 +75,7 @@ std::string kmeans_text(const KMeansOptions& kmeans) {
 void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
                    const SegmentationScene& scene, const TimedProblem& built,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const std::optional<double>& error, const InterruptWatch& interrupts) {
+                   const std::optional<double>& error, const examples::InterruptWatch& interrupts) {
   std::ofstream report((out / "summary.txt").string());
   if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
   report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
@@ -90,7 +93,7 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << command.preparation.gmm_kmeans.seed << " (GMMs) and "
          << command.preparation.edge_kmeans.seed << " (edge classes)\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n";
-  write_run_report(report, levels.reports(), summary, interrupts);
+  examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "
          << built.problem.coop.evaluate(summary.labeling)
          << "\nPotts energy of the result: " << built.problem.potts.evaluate(summary.labeling)
@@ -101,17 +104,17 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
 
 /// The run's last lines on stderr: the pixel error (with GT), then the common end.
 void report_end(const examples::SegmentCommand& command, const Summary& summary,
-                const std::optional<double>& error, const InterruptWatch& interrupts) {
+                const std::optional<double>& error, const examples::InterruptWatch& interrupts) {
   if (error && !command.quiet)
     std::fprintf(stderr, "c2f-segment: pixel error %.2f%%\n", 100.0 * *error);
-  print_run_end("c2f-segment", summary, interrupts, command.out_dir, command.quiet);
+  examples::print_run_end("c2f-segment", summary, interrupts, command.out_dir, command.quiet);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-  const InterruptWatch interrupts;
+  const examples::InterruptWatch interrupts;
   return examples::run_tool("c2f-segment", [&] {
     const auto parsed = examples::parse_segment_command(argc, argv);
     if (!parsed) return 0;
@@ -122,7 +125,7 @@ int main(int argc, char** argv) {
     const Schedule schedule = schedule_for(command, scene.num_labels());
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    RunRecord record(
+    examples::RunRecord record(
         command.out_dir,
         {"labels.png", "overlay.png", "trace.csv", "summary.txt", "partition-level*.png"},
         command.trace, "c2f-segment", command.quiet);

@@ -9,6 +9,9 @@
 #include <fstream>
 
 #include "c2f/c2f.hpp"
+#include "interrupt_watch.hpp"
+#include "run_record.hpp"
+#include "run_report.hpp"
 #include "solve_options.hpp"
 #include "tool_options.hpp"
 
@@ -37,7 +40,7 @@ TimedModel read_model(const examples::SolveCommand& command) {
 void write_summary(const std::filesystem::path& folder, const examples::SolveCommand& command,
                    const TimedModel& model, const Schedule& schedule,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const InterruptWatch& interrupts) {
+                   const examples::InterruptWatch& interrupts) {
   std::ofstream report(folder / "summary.txt");
   report << "model " << command.model << ": " << model.energy.num_variables() << " variables, "
          << model.energy.num_labels() << " labels, " << model.energy.edges().size()
@@ -45,7 +48,7 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
          << "schedule " << schedule.to_string() << ", solver " << to_string(command.solver.kind)
          << "\n"
          << "reading the model: " << model.seconds << " s (not on the run clock)\n";
-  write_run_report(report, levels.reports(), summary, interrupts);
+  examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "energy = sum of -ln(potential) over the factors; log10 of the unnormalised "
          << "probability: " << -summary.energy / std::log(10.0) << "\n";
   close_checked(report, "summary.txt");
@@ -55,7 +58,7 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
 
 int main(int argc, char** argv) {
   // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-  const InterruptWatch interrupts;
+  const examples::InterruptWatch interrupts;
   return examples::run_tool("c2f-solve", [&] {
     const auto parsed = examples::parse_solve_command(argc, argv);
     if (!parsed) return 0;
@@ -65,8 +68,8 @@ int main(int argc, char** argv) {
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
     // Outputs are staged and moved into place together at the end.
-    RunRecord record(command.out_dir, {"labeling.mpe", "trace.csv", "summary.txt"}, command.trace,
-                     "c2f-solve", command.quiet);
+    examples::RunRecord record(command.out_dir, {"labeling.mpe", "trace.csv", "summary.txt"},
+                               command.trace, "c2f-solve", command.quiet);
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
     const Summary summary =
@@ -76,7 +79,7 @@ int main(int argc, char** argv) {
     write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());
     write_summary(record.staging(), command, model, schedule, levels, summary, interrupts);
     record.commit();
-    print_run_end("c2f-solve", summary, interrupts, command.out_dir, command.quiet);
+    examples::print_run_end("c2f-solve", summary, interrupts, command.out_dir, command.quiet);
     return interrupts.exit_code();
   });
 }

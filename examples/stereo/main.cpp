@@ -10,6 +10,9 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "interrupt_watch.hpp"
+#include "run_record.hpp"
+#include "run_report.hpp"
 #include "stereo_options.hpp"
 #include "tool_options.hpp"
 
@@ -59,7 +62,8 @@ std::string near_and_shift_moves_text(const SolverChoice& solver) {
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
+                   const std::optional<BadPixelRates>& rates,
+                   const examples::InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
   std::ofstream report((out / "summary.txt").string());
   if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
@@ -69,7 +73,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << to_string(command.solver.maxflow) << near_and_shift_moves_text(command.solver) << "\n"
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
-  write_run_report(report, levels.reports(), summary, interrupts);
+  examples::write_run_report(report, levels.reports(), summary, interrupts);
   if (rates) {
     report << rates->brief() << "\nnon-occluded pixels from: " << scene.nonoccluded_source
            << "\nreference variant (bad>1 over all pixels): " << 100 * rates->reference_variant
@@ -88,16 +92,17 @@ void announce(const examples::StereoCommand& command, const StereoScene& scene) 
 
 /// The run's last lines on stderr: the bad-pixel rates (with GT), then the common end.
 void report_end(const examples::StereoCommand& command, const Summary& summary,
-                const std::optional<BadPixelRates>& rates, const InterruptWatch& interrupts) {
+                const std::optional<BadPixelRates>& rates,
+                const examples::InterruptWatch& interrupts) {
   if (rates && !command.quiet) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
-  print_run_end("c2f-stereo", summary, interrupts, command.out_dir, command.quiet);
+  examples::print_run_end("c2f-stereo", summary, interrupts, command.out_dir, command.quiet);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   // Ctrl-C or SIGTERM: the run stops at its next step and the best labeling is written.
-  const InterruptWatch interrupts;
+  const examples::InterruptWatch interrupts;
   return examples::run_tool("c2f-stereo", [&] {
     const auto parsed = examples::parse_stereo_command(argc, argv);
     if (!parsed) return 0;
@@ -106,10 +111,10 @@ int main(int argc, char** argv) {
     const StereoScene scene = load_input(command);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    RunRecord record(command.out_dir,
-                     {"disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
-                      "trace.csv", "summary.txt", "partition-level*.png"},
-                     command.trace, "c2f-stereo", command.quiet);
+    examples::RunRecord record(command.out_dir,
+                               {"disparity.pfm", "disparity.png", "disparity-colour.png",
+                                "error.png", "trace.csv", "summary.txt", "partition-level*.png"},
+                               command.trace, "c2f-stereo", command.quiet);
     announce(command, scene);
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
     // The model as UAI, staged with the other outputs (it lands only if the run does).

@@ -11,6 +11,8 @@
 #include <string>
 
 #include "c2f/c2f.hpp"
+#include "interrupt_watch.hpp"
+#include "output_folder.hpp"
 #include "synthetic_options.hpp"
 #include "tool_options.hpp"
 
@@ -23,7 +25,7 @@ namespace {
 /// writes the trace to `trace_path` unless that is empty.
 template <class Provider>
 Summary solve(const char* name, const SyntheticProblem& problem, Provider& levels,
-              const Options& options, const InterruptWatch& interrupts,
+              const Options& options, const examples::InterruptWatch& interrupts,
               const std::filesystem::path& trace_path) {
   std::ostringstream trace;
   TraceWriter writer(
@@ -49,20 +51,22 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
 
 /// With -o, the run's files are staged and land together at the end (an earlier run's files
 /// stay as they were when this run fails); without it, nothing is written.
-std::optional<OutputFolder> open_outputs(const std::string& out_dir) {
+std::optional<examples::OutputFolder> open_outputs(const std::string& out_dir) {
   if (out_dir.empty()) return std::nullopt;
-  return std::optional<OutputFolder>(std::in_place, out_dir,
-                                     std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv",
-                                                              "truth.pgm", "flat.pgm", "c2f.pgm"});
+  return std::optional<examples::OutputFolder>(
+      std::in_place, out_dir,
+      std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv", "truth.pgm", "flat.pgm",
+                               "c2f.pgm"});
 }
 
 /// Where a file of the run goes: staged with -o, nowhere (empty) without.
-std::filesystem::path staged(const std::optional<OutputFolder>& output, const char* name) {
+std::filesystem::path staged(const std::optional<examples::OutputFolder>& output,
+                             const char* name) {
   return output ? output->staging() / name : std::filesystem::path();
 }
 
 /// The truth and both results as pictures, then every file into place.
-void write_outputs(std::optional<OutputFolder>& output, const std::string& out_dir,
+void write_outputs(std::optional<examples::OutputFolder>& output, const std::string& out_dir,
                    const SyntheticProblem& problem, const vision::SyntheticSpec& spec,
                    const Summary& flat, const Summary& c2f) {
   if (!output) return;
@@ -79,7 +83,7 @@ void write_outputs(std::optional<OutputFolder>& output, const std::string& out_d
 int main(int argc, char** argv) {
   // Ctrl-C or SIGTERM: the running solve stops at its next step, and what was found is still
   // reported and written.
-  const InterruptWatch interrupts;
+  const examples::InterruptWatch interrupts;
   return examples::run_tool("c2f-synthetic", [&] {
     const auto parsed = examples::parse_synthetic_command(argc, argv);
     if (!parsed) return 0;
@@ -89,7 +93,7 @@ int main(int argc, char** argv) {
       return BlockHierarchy(command.spec.shape, command.block_sizes);
     });
     const SyntheticProblem problem = make_synthetic_problem(command.spec);
-    std::optional<OutputFolder> output = open_outputs(command.out_dir);
+    std::optional<examples::OutputFolder> output = open_outputs(command.out_dir);
     std::cerr << "c2f-synthetic: " << command.spec.shape.width << "x" << command.spec.shape.height
               << " pixels, " << command.spec.num_labels << " labels, "
               << problem.energy.edges().size() << " edges\n";

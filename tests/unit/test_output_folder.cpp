@@ -8,7 +8,8 @@
 #include <iterator>
 #include <string>
 
-#include "c2f/core/output_folder.hpp"
+#include "c2f/core/output_file.hpp"
+#include "output_folder.hpp"
 
 namespace {
 
@@ -34,7 +35,7 @@ TEST_CASE("OutputFolder commits staged files and removes only stale owned ones",
   write_text(dir / "partition-level0.png", "old picture");
   write_text(dir / "notes.txt", "the user's own file");
   {
-    c2f::OutputFolder output(dir, {"summary.txt", "trace.csv", "partition-level*.png"});
+    c2f::examples::OutputFolder output(dir, {"summary.txt", "trace.csv", "partition-level*.png"});
     CHECK(output.owns("partition-level12.png"));
     CHECK_FALSE(output.owns("notes.txt"));
     write_text(output.stage(dir / "summary.txt"), "new summary");
@@ -59,7 +60,7 @@ TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]
   const fs::path elsewhere = fs::temp_directory_path() / "c2f-test-output-elsewhere.csv";
   write_text(elsewhere, "earlier trace");
   try {
-    c2f::OutputFolder output(dir, {"summary.txt"});
+    c2f::examples::OutputFolder output(dir, {"summary.txt"});
     write_text(output.stage(dir / "summary.txt"), "half of a new summ");
     const fs::path partial = output.stage(elsewhere);
     CHECK(partial != elsewhere);
@@ -74,7 +75,7 @@ TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
   CHECK(entries == 1);
   {
-    c2f::OutputFolder output(dir, {});
+    c2f::examples::OutputFolder output(dir, {});
     CHECK(output.stage("/dev/null") == fs::path("/dev/null"));  // devices are written directly
   }
   std::ofstream full("/dev/full");
@@ -88,7 +89,7 @@ TEST_CASE("OutputFolder removes staging folders that killed runs left behind", "
   fs::remove_all(dir);
   fs::create_directories(dir / ".c2f-staging-999999999");  // no such process
   write_text(dir / ".c2f-staging-999999999" / "summary.txt", "from a killed run");
-  { c2f::OutputFolder output(dir, {"summary.txt"}); }
+  { c2f::examples::OutputFolder output(dir, {"summary.txt"}); }
   CHECK_FALSE(fs::exists(dir / ".c2f-staging-999999999"));
 }
 
@@ -97,14 +98,14 @@ TEST_CASE("OutputFolder without a commit removes the folder it created", "[outpu
   fs::remove_all(root);
   fs::create_directories(root / "existing");
   {
-    c2f::OutputFolder fresh(root / "fresh", {"a.txt"});
+    c2f::examples::OutputFolder fresh(root / "fresh", {"a.txt"});
     write_text(fresh.staging() / "a.txt", "never committed");
-    c2f::OutputFolder existing(root / "existing", {"a.txt"});
+    c2f::examples::OutputFolder existing(root / "existing", {"a.txt"});
   }
   CHECK_FALSE(fs::exists(root / "fresh"));     // created by the run, which failed
   CHECK(fs::is_directory(root / "existing"));  // the user's folder stays, even empty
   {
-    c2f::OutputFolder fresh(root / "fresh", {"a.txt"});
+    c2f::examples::OutputFolder fresh(root / "fresh", {"a.txt"});
     write_text(fresh.staging() / "a.txt", "committed");
     fresh.commit();
   }

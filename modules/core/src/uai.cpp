@@ -1,7 +1,7 @@
 #include "c2f/core/uai.hpp"
 
 #include "c2f/core/number_text.hpp"
-#include "c2f/core/output_folder.hpp"
+#include "c2f/core/output_file.hpp"
 
 #include <algorithm>
 #include <cmath>

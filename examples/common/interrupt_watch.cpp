@@ -1,10 +1,10 @@
-#include "c2f/core/interrupt.hpp"
+#include "interrupt_watch.hpp"
 
 #include <atomic>
 #include <csignal>
 #include <stdexcept>
 
-namespace c2f {
+namespace c2f::examples {
 
 namespace {
 
@@ -67,4 +67,4 @@ Observer InterruptWatch::observer() const {
   };
 }
 
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -6,7 +6,7 @@
 
 #include "c2f/core/observer.hpp"
 
-namespace c2f {
+namespace c2f::examples {
 
 /// An observer that prints "<tool>: level L (lifted|original, N variables) step S energy E at
 /// T s" to stderr at every level start and then at most every `interval_seconds`; prints
@@ -23,4 +23,4 @@ class ProgressPrinter {
   std::chrono::steady_clock::time_point last_;
 };
 
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -1,4 +1,4 @@
-#include "c2f/core/output_folder.hpp"
+#include "output_folder.hpp"
 
 #include "c2f/core/number_text.hpp"
 
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace c2f {
+namespace c2f::examples {
 
 namespace {
 
@@ -125,11 +125,4 @@ std::vector<std::string> OutputFolder::commit() {
   return written;
 }
 
-void close_checked(std::ofstream& stream, const std::string& what) {
-  stream.flush();
-  const bool flushed = stream.good();
-  stream.close();
-  if (!flushed || stream.fail()) throw std::runtime_error("writing " + what + " failed");
-}
-
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace c2f {
+namespace c2f::examples {
 
 /// The output folder of one run. Writers write into staging() (a fresh hidden folder inside
 /// the output folder, so that moving files out of it is a rename on the same file system);
@@ -54,8 +54,4 @@ class OutputFolder {
   bool created_ = false;  ///< the folder did not exist before this run
 };
 
-/// Flushes and closes a written file stream; throws std::runtime_error naming `what` when any
-/// write failed (a full disk, /dev/full) so that a failed write is never a silent success.
-void close_checked(std::ofstream& stream, const std::string& what);
-
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -6,11 +6,11 @@
 #include <span>
 #include <string>
 
-#include "c2f/core/interrupt.hpp"
 #include "c2f/driver/summary.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "interrupt_watch.hpp"
 
-namespace c2f {
+namespace c2f::examples {
 
 /// Writes one line per level's partition, summary.report(), the observer's time off the run
 /// clock and, after an interrupt, which signal ended the run and that the labeling is the best
@@ -23,4 +23,4 @@ void write_run_report(std::ostream& out, std::span<const LevelReport> levels,
 void print_run_end(const std::string& tool, const Summary& summary,
                    const InterruptWatch& interrupts, const std::string& out_dir, bool quiet);
 
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "c2f/core/interrupt.hpp"
 #include "c2f/core/observer.hpp"
-#include "c2f/core/output_folder.hpp"
 #include "c2f/core/trace.hpp"
+#include "interrupt_watch.hpp"
+#include "output_folder.hpp"
 
-namespace c2f {
+namespace c2f::examples {
 
 class RunRecord {
  public:
@@ -47,4 +47,4 @@ class RunRecord {
   bool quiet_;
 };
 
-}  // namespace c2f
+}  // namespace c2f::examples

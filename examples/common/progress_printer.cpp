@@ -1,8 +1,8 @@
-#include "c2f/core/progress.hpp"
+#include "progress_printer.hpp"
 
 #include <cstdio>
 
-namespace c2f {
+namespace c2f::examples {
 
 ProgressPrinter::ProgressPrinter(std::string tool, bool quiet, double interval_seconds)
     : tool_(std::move(tool)),
@@ -23,4 +23,4 @@ ObserverDecision ProgressPrinter::operator()(const StepEvent& event) {
   return ObserverDecision::continue_run;
 }
 
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -1,12 +1,13 @@
-#include "c2f/core/run_record.hpp"
+#include "run_record.hpp"
 
 #include <functional>
 #include <stdexcept>
 #include <utility>
 
-#include "c2f/core/progress.hpp"
+#include "c2f/core/output_file.hpp"
+#include "progress_printer.hpp"
 
-namespace c2f {
+namespace c2f::examples {
 
 RunRecord::RunRecord(const std::filesystem::path& folder, std::vector<std::string> owned,
                      const std::string& trace_path, std::string tool, bool quiet)
@@ -31,4 +32,4 @@ void RunRecord::commit() {
   output_.commit();
 }
 
-}  // namespace c2f
+}  // namespace c2f::examples

@@ -6,7 +6,7 @@
 
 #include "c2f/core/observer.hpp"
 
-namespace c2f {
+namespace c2f::examples {
 
 /// While alive, catches SIGINT and SIGTERM: the first one is recorded (signal(), observer()
 /// then stops the run at its next step), a second one ends the process the usual way. The
@@ -31,4 +31,4 @@ class InterruptWatch {
   [[nodiscard]] Observer observer() const;
 };
 
-}  // namespace c2f
+}  // namespace c2f::examples

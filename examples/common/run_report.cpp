@@ -1,8 +1,8 @@
-#include "c2f/driver/run_report.hpp"
+#include "run_report.hpp"
 
 #include <cstdio>
 
-namespace c2f {
+namespace c2f::examples {
 
 void write_run_report(std::ostream& out, std::span<const LevelReport> levels,
                       const Summary& summary, const InterruptWatch& interrupts) {
@@ -30,4 +30,4 @@ void print_run_end(const std::string& tool, const Summary& summary,
                std::string(to_string(summary.reason)).c_str(), out_dir.c_str());
 }
 
-}  // namespace c2f
+}  // namespace c2f::examples
