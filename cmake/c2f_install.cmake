@@ -1,11 +1,12 @@
 # Installation (when C2F_INSTALL is on: by default only for the top-level project, as fmt's
 # FMT_INSTALL). The library is one package, c2f, in components that each bring only their own
 # third-party dependencies:
-#   core        c2f::core, c2f::lift, c2f::driver, c2f::lbp, c2f::icm      (none)
+#   core        c2f::core, c2f::lift, c2f::driver, c2f::cooperative,
+#               c2f::lbp, c2f::icm                                          (none)
 #   graphcut    c2f::maxflow, c2f::graphcut, c2f::solvers                  (Boost headers)
 #   kolmogorov  c2f::kolmogorov_maxflow, when built                        (libmaxflow, GPL-3)
 #   vision      c2f::vision, c2f::stereo, c2f::segmentation                (OpenCV, Eigen)
-#   coop        c2f::coop, the cooperative-cut solvers                     (Ceres)
+#   coop        c2f::coop, the cooperative-cut solvers (no images)        (Ceres)
 #   all         c2f::c2f, everything but kolmogorov
 #   module      c2f::module, `import c2f;`, when the toolchain builds modules (CMake >= 3.28)
 # Each component has its own export file; c2fConfig.cmake loads the requested ones (all when

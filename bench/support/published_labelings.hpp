@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/labeling.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 
 namespace c2f::bench {
 
@@ -49,7 +49,7 @@ inline std::vector<std::string> images_with_results(const std::filesystem::path&
 /// Majorise-minimise descent from `start` until a step no longer lowers the energy. Under the
 /// model that produced a labeling, this barely moves it: our greedy's converged labelings do
 /// not move at all.
-inline Labeling descend_from(const vision::CoopEnergy& energy, const Labeling& start) {
+inline Labeling descend_from(const CoopEnergy& energy, const Labeling& start) {
   CoopSolverOptions options;
   options.strategy = AuxStrategy::mm;
   CoopSolver solver(options);

@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "tool_options.hpp"
 
@@ -22,8 +22,7 @@ inline constexpr RealRange kAlphaRange{0.0, 1.0, false, true};
 
 /// Declares --lambda, --theta and --alpha in `options`; `parameters` receives their values (it
 /// must outlive options.parse()) and holds the defaults the help shows.
-inline ToolOptions& declare_coop_parameters(ToolOptions& options,
-                                            vision::CoopParameters& parameters) {
+inline ToolOptions& declare_coop_parameters(ToolOptions& options, CoopParameters& parameters) {
   return options.real("lambda", &parameters.lambda, kLambdaRange, "weight of the pairwise part")
       .real("theta", &parameters.theta, kThetaRange,
             "breakpoint of the concave costs, fraction of a class's weight")

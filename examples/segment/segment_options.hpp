@@ -6,8 +6,8 @@
 #include <string_view>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/driver/options.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
 
@@ -25,7 +25,7 @@ struct SegmentCommand {
   std::string out_dir;
   SegmentMethod method = SegmentMethod::coop;
   CoopSolverOptions coop;
-  vision::CoopParameters parameters;
+  CoopParameters parameters;
   vision::DataPreparation preparation;  ///< edge classes and both k-means runs
   int downscale = 1;
   std::string schedule = "superpixels";  ///< parsed once the label count is known

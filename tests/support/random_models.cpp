@@ -120,15 +120,15 @@ bool close_relative(double a, double b, double relative) {
   return std::abs(a - b) <= relative * std::max({1.0, std::abs(a), std::abs(b)});
 }
 
-vision::CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, int num_labels,
-                                      int num_classes, vision::CoopParameters parameters) {
+CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, int num_labels,
+                              int num_classes, CoopParameters parameters) {
   std::uniform_real_distribution<double> unary(0.0, 2.0), weight(0.05, 1.0);
   std::uniform_int_distribution<int> edge_class(0, num_classes);
   const std::size_t n = w * h;
   std::vector<double> unaries(n * static_cast<std::size_t>(num_labels));
   for (double& u : unaries) u = unary(rng);
-  std::vector<vision::CoopEdge> edges;
-  std::vector<vision::ClassWeight> entries;
+  std::vector<CoopEdge> edges;
+  std::vector<ClassWeight> entries;
   std::vector<double> totals(static_cast<std::size_t>(num_classes), 0.0);
   for (const auto& [u, v] : grid_neighbour_pairs({w, h}, Connectivity::eight)) {
     const auto first = static_cast<std::uint32_t>(entries.size());
@@ -140,8 +140,8 @@ vision::CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, in
     }
     edges.push_back({u, v, first, first + 1, first + 2});
   }
-  return vision::CoopEnergy(n, num_labels, std::move(unaries), num_classes, std::move(totals),
-                            parameters, std::move(edges), std::move(entries));
+  return CoopEnergy(n, num_labels, std::move(unaries), num_classes, std::move(totals), parameters,
+                    std::move(edges), std::move(entries));
 }
 
 }  // namespace c2f::test

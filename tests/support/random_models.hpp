@@ -5,10 +5,10 @@
 #include <random>
 #include <vector>
 
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/dense_partition.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 
 namespace c2f::test {
 
@@ -35,9 +35,8 @@ Labeling random_labeling(Rng& rng, std::size_t num_variables, int num_labels);
 
 /// A random ground cooperative-cut energy on a w x h 8-connected grid: unaries in [0, 2),
 /// edge weights in [0.05, 1), each side's class drawn from 0..num_classes (K, linear, included).
-vision::CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, int num_labels,
-                                      int num_classes,
-                                      vision::CoopParameters parameters = {1.5, 0.05, 0.0});
+CoopEnergy random_coop_energy(Rng& rng, std::size_t w, std::size_t h, int num_labels,
+                              int num_classes, CoopParameters parameters = {1.5, 0.05, 0.0});
 
 struct BruteForceResult {
   double energy;

@@ -8,13 +8,12 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/lift/transfer.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
-using namespace c2f::vision;
 using namespace c2f::test;
 
 TEST_CASE("the cooperative-cut energy of a tiny graph, by hand", "[segmentation][coop]") {

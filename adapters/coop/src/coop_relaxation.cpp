@@ -12,10 +12,6 @@ namespace c2f::detail {
 
 namespace {
 
-using vision::ClassWeight;
-using vision::CoopEdge;
-using vision::CoopEnergy;
-
 /// The smooth concave surrogate of F_g(s) = min(s, alpha s + (1 - alpha) b): the soft minimum
 /// -t log(exp(-s / t) + exp(-(alpha s + (1 - alpha) b) / t)), never above F_g; the exact
 /// minimum when t = 0 (a class without weight). Any scalar type (double, ceres::Jet).

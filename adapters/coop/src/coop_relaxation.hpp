@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 
 namespace c2f::detail {
 
@@ -18,7 +18,7 @@ namespace c2f::detail {
 /// options.max_iterations iterations). Returns the relaxed cut sizes of the cooperative
 /// classes at the solution, S~_lg for g < K, row-major l * K + g (what
 /// CoopAuxiliary::optimal_for reads). Ceres' glog warnings are silenced (errors still show).
-std::vector<double> relaxed_cooperative_cut_sizes(const vision::CoopEnergy& energy,
+std::vector<double> relaxed_cooperative_cut_sizes(const CoopEnergy& energy,
                                                   const RelaxationOptions& options,
                                                   std::vector<double>& logits);
 

@@ -11,9 +11,6 @@
 
 namespace c2f {
 
-using vision::CoopAuxiliary;
-using vision::CoopEnergy;
-
 std::string_view to_string(AuxStrategy strategy) {
   switch (strategy) {
     case AuxStrategy::greedy:
@@ -117,7 +114,7 @@ double CoopSolver::step() {
 }
 
 Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> start) {
-  const PairwiseEnergy pairwise = vision::pairwise_energy(*energy_, h);
+  const PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
   ExpansionSolver<> expansion;
   expansion.bind(pairwise, start);
   const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);

@@ -27,9 +27,9 @@
 #include <string_view>
 #include <vector>
 
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/labeling.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 
 namespace c2f {
 
@@ -88,12 +88,11 @@ class CoopSolver {
   /// Steps without a decrease that mean convergence on `energy`: a whole sweep of flips for
   /// greedy (num_labels * num_classes + 1), one step for mm (a fixed point), two for ceres (the
   /// warm-started relaxation may still move once).
-  [[nodiscard]] std::size_t quiet_steps_to_converge(
-      const vision::CoopEnergy& energy) const noexcept;
+  [[nodiscard]] std::size_t quiet_steps_to_converge(const CoopEnergy& energy) const noexcept;
 
   /// Starts from `start` (validated). h is kept from the previous binding when it has this
   /// energy's shape (labels, classes), else it starts all 1.
-  void bind(const vision::CoopEnergy& energy, std::span<const Label> start);
+  void bind(const CoopEnergy& energy, std::span<const Label> start);
   /// One step of the strategy; returns the true energy of the labeling kept.
   double step();
 
@@ -101,23 +100,23 @@ class CoopSolver {
   [[nodiscard]] std::span<const Label> labeling() const noexcept { return labeling_; }
   [[nodiscard]] const CoopStep& last_step() const noexcept { return last_; }
   /// The current auxiliary variables.
-  [[nodiscard]] const vision::CoopAuxiliary& aux() const noexcept { return h_; }
+  [[nodiscard]] const CoopAuxiliary& aux() const noexcept { return h_; }
 
  private:
   struct Relaxation;
   /// Alpha-expansion of E_h from `start`; the labeling it ends with.
-  Labeling expand_for(const vision::CoopAuxiliary& h, std::span<const Label> start);
+  Labeling expand_for(const CoopAuxiliary& h, std::span<const Label> start);
   /// Keeps `candidate` (and h) when its true energy is lower; fills last_.
-  void keep_if_lower(Labeling candidate, const vision::CoopAuxiliary& h);
+  void keep_if_lower(Labeling candidate, const CoopAuxiliary& h);
   void greedy_step();
   void mm_step();
   void ceres_step();
 
   CoopSolverOptions options_;
-  const vision::CoopEnergy* energy_ = nullptr;
+  const CoopEnergy* energy_ = nullptr;
   Labeling labeling_;
   double value_ = 0.0;
-  vision::CoopAuxiliary h_;
+  CoopAuxiliary h_;
   CoopStep last_;
   bool tried_unchanged_ = false;  ///< greedy: the binding's first trial (h unchanged) is done
   std::size_t next_flip_ = 0;     ///< greedy: index l * K + g of the next entry to flip
@@ -125,6 +124,6 @@ class CoopSolver {
   std::unique_ptr<Relaxation> relaxation_;
 };
 
-static_assert(AnytimeSolver<CoopSolver, vision::CoopEnergy>);
+static_assert(AnytimeSolver<CoopSolver, CoopEnergy>);
 
 }  // namespace c2f

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
-#include "c2f/vision/segmentation/coop_energy.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
 

@@ -1,4 +1,4 @@
-#include "c2f/vision/segmentation/coop_energy.hpp"
+#include "c2f/cooperative/coop_energy.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <tuple>
 #include <unordered_map>
 
-namespace c2f::vision {
+namespace c2f {
 
 namespace {
 
@@ -317,4 +317,4 @@ PairwiseEnergy potts_energy(const CoopEnergy& energy) {
                         {PairwiseTerm::potts()}, std::move(edges));
 }
 
-}  // namespace c2f::vision
+}  // namespace c2f

@@ -24,7 +24,7 @@
 #include "c2f/lift/dense_partition.hpp"
 #include "c2f/lift/lifting_view.hpp"
 
-namespace c2f::vision {
+namespace c2f {
 
 /// The defaults are the model chosen by cross-validation over the labelled coopCuts images for
 /// majorise-minimise on superpixel levels with the default data preparation (c2f-segment's
@@ -171,4 +171,4 @@ double aux_constant(const CoopEnergy& energy, const CoopAuxiliary& h);
 /// total weight). Equal to E_h for h all 1.
 PairwiseEnergy potts_energy(const CoopEnergy& energy);
 
-}  // namespace c2f::vision
+}  // namespace c2f
