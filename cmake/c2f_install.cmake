@@ -8,7 +8,7 @@
 #   vision      c2f::vision, c2f::stereo, c2f::segmentation                (OpenCV, Eigen)
 #   coop        c2f::coop, the cooperative-cut solvers (no images)        (Ceres)
 #   all         c2f::c2f, everything but kolmogorov
-#   module      c2f::module, `import c2f;`, when the toolchain builds modules (CMake >= 3.28)
+#   import      c2f::import, `import c2f;`, when the toolchain builds modules (CMake >= 3.28)
 # Each component has its own export file; c2fConfig.cmake loads the requested ones (all when
 # none are named) after finding their dependencies. A build-tree export() lets consumers use
 # the build directory directly as well. The command-line tools install separately
@@ -16,7 +16,7 @@
 include(CMakePackageConfigHelpers)
 
 set(c2f_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/c2f)
-set(c2f_components core graphcut kolmogorov vision coop all module)
+set(c2f_components core graphcut kolmogorov vision coop all import)
 set(c2f_built_components)
 foreach(component IN LISTS c2f_components)
   get_property(targets GLOBAL PROPERTY C2F_COMPONENT_TARGETS_${component})
@@ -27,8 +27,8 @@ foreach(component IN LISTS c2f_components)
   # The module's interface unit installs with it; consumers build its BMI themselves.
   set(module_files)
   set(module_exports)
-  if(component STREQUAL "module")
-    set(module_files FILE_SET CXX_MODULES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/c2f/module)
+  if(component STREQUAL "import")
+    set(module_files FILE_SET CXX_MODULES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/c2f/import)
     set(module_exports CXX_MODULES_DIRECTORY cxx-modules)
   endif()
   install(TARGETS ${targets}

@@ -35,7 +35,6 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -51,6 +50,7 @@
 #include "c2f/vision/superpixels.hpp"
 #include "output_folder.hpp"
 #include "solver_flags.hpp"
+#include "support/anytime_comparison.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "tool_options.hpp"
@@ -154,23 +154,9 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, settings.c2f_shift_moves,
                              name + "-c2f.csv");
 
-  const double flat_final = flat.summary.energy;
-  double reach = std::nan("");
-  for (const bench::TracePoint& p : c2f.trace) {
-    if (p.energy <= flat_final) {
-      reach = p.time;
-      break;
-    }
-  }
-  std::mt19937_64 rng(20261121);
-  std::uniform_real_distribution<double> deadline(
-      0.0, std::max(flat.summary.seconds, c2f.summary.seconds));
-  double sum_flat = 0, sum_c2f = 0;
-  for (int i = 0; i < 20; ++i) {
-    const double t = deadline(rng);
-    sum_flat += bench::error_at(flat.trace, t);
-    sum_c2f += bench::error_at(c2f.trace, t);
-  }
+  const bench::AnytimeComparison anytime =
+      bench::compare_anytime({flat.trace, flat.summary.energy, flat.summary.seconds},
+                             {c2f.trace, c2f.summary.energy, c2f.summary.seconds});
 
   // OpenCV StereoSGBM on the same views. SGBM leaves its leftmost numDisparities columns
   // undefined, so both views are padded on the left by replication and the result cropped (the
@@ -204,10 +190,11 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   std::printf(
       "%s\t%zu\t%.6f\t%.6f\t%.5f\t%.5f\t%.5f\t%.5f\t%.3f\t%.3f\t%.3f\t%.4f\t%.5f\t%.5f\t%.4f\t%."
       "5f\t%.5f\t%.3f\t%s\t%s\n",
-      name.c_str(), shape.size(), flat_final, c2f.summary.energy, flat.rates.nonoccluded[1],
-      c2f.rates.nonoccluded[1], flat.rates.all[1], c2f.rates.all[1], flat.summary.seconds,
-      c2f.summary.seconds, reach, reach / flat.summary.seconds, sum_flat / 20, sum_c2f / 20,
-      1.0 - sum_c2f / sum_flat, sgbm_rates.nonoccluded[1], sgbm_rates.all[1], sgbm_seconds,
+      name.c_str(), shape.size(), flat.summary.energy, c2f.summary.energy,
+      flat.rates.nonoccluded[1], c2f.rates.nonoccluded[1], flat.rates.all[1], c2f.rates.all[1],
+      flat.summary.seconds, c2f.summary.seconds, anytime.reach_seconds, anytime.reach_ratio,
+      anytime.flat_error, anytime.run_error, 1.0 - anytime.run_error / anytime.flat_error,
+      sgbm_rates.nonoccluded[1], sgbm_rates.all[1], sgbm_seconds,
       std::string(to_string(flat.summary.reason)).c_str(),
       std::string(to_string(c2f.summary.reason)).c_str());
   output.commit();

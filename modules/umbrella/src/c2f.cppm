@@ -4,8 +4,8 @@
 //
 // The headers stay the source of truth: they are included in the global module fragment and
 // their public names re-exported with using-declarations (docs/design-notes.md says why). A
-// name added to a public header is added here too: the test module.exports_every_public_name
-// (cmake/module_exports.py --check) fails until it is; the script prints the list.
+// name added to a public header is added here too: the test import.exports_every_public_name
+// (cmake/import_exports.py --check) fails until it is; the script prints the list.
 
 module;
 

@@ -9,7 +9,8 @@ int main() {
   const c2f::GridShape shape{6, 4};
   std::vector<double> unaries(shape.size() * 3);
   for (std::size_t v = 0; v < shape.size(); ++v)
-    for (int l = 0; l < 3; ++l) unaries[v * 3 + l] = (v % 3 == static_cast<std::size_t>(l)) ? 0.0 : 1.0;
+    for (int l = 0; l < 3; ++l)
+      unaries[v * 3 + l] = (v % 3 == static_cast<std::size_t>(l)) ? 0.0 : 1.0;
   const c2f::PairwiseEnergy energy = c2f::make_grid_energy(
       shape, c2f::Connectivity::four, 3, std::move(unaries), c2f::PairwiseTerm::potts(),
       [](c2f::VariableIndex, c2f::VariableIndex) { return 0.3; });

@@ -1,6 +1,7 @@
-// Every shipped solver has one surface: options with validate(), last_step() reporting what the
-// step changed, quiet_steps_to_converge(); a run with default options converges; and a solver
-// chosen by name runs the same as one built by hand.
+// Every shipped solver (the cooperative-cut solver too) has one surface: options with
+// validate(), last_step() reporting what the step changed, quiet_steps_to_converge(); a run
+// with default options converges; and a solver chosen by name runs the same as one built by
+// hand.
 
 #include <catch2/catch.hpp>
 
@@ -9,7 +10,15 @@
 #include <type_traits>
 #include <vector>
 
-#include "c2f/c2f.hpp"
+#include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/adapters/graphcut/swap.hpp"
+#include "c2f/adapters/icm/icm.hpp"
+#include "c2f/adapters/lbp/lbp.hpp"
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/grid.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/partition_list.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -27,14 +36,30 @@ PairwiseEnergy potts_grid(Rng& rng, std::size_t w, std::size_t h, int num_labels
                           [&](VariableIndex, VariableIndex) { return weight(rng); });
 }
 
+/// The energy each solver of the templated tests is tried on: a random Potts grid, and for the
+/// cooperative-cut solver a random cooperative-cut grid (3 edge classes) of the same size.
+template <class Solver>
+struct SurfaceEnergy {
+  static PairwiseEnergy make(Rng& rng, std::size_t w, std::size_t h, int num_labels) {
+    return potts_grid(rng, w, h, num_labels);
+  }
+};
+template <>
+struct SurfaceEnergy<CoopSolver> {
+  static CoopEnergy make(Rng& rng, std::size_t w, std::size_t h, int num_labels) {
+    return random_coop_energy(rng, w, h, num_labels, 3);
+  }
+};
+
 }  // namespace
 
 TEMPLATE_TEST_CASE("last_step() reports exactly the labels a step changed and whether it improved",
-                   "[solvers][surface]", ExpansionSolver<>, SwapSolver<>, LbpSolver, IcmSolver) {
+                   "[solvers][surface]", ExpansionSolver<>, SwapSolver<>, LbpSolver, IcmSolver,
+                   CoopSolver) {
   Rng rng(808);
   std::size_t improving = 0;
   for (int trial = 0; trial < 20; ++trial) {
-    const PairwiseEnergy energy = potts_grid(rng, 7, 5, 2 + trial % 4);
+    const auto energy = SurfaceEnergy<TestType>::make(rng, 7, 5, 2 + trial % 4);
     TestType solver;
     solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
     CHECK(solver.last_step().changed == 0);
@@ -109,12 +134,12 @@ TEST_CASE("solvers tell when they have converged, and the solver choice agrees",
 
 TEMPLATE_TEST_CASE("a run with default options ends where the solver has converged",
                    "[solvers][surface][driver]", ExpansionSolver<>, SwapSolver<>, LbpSolver,
-                   IcmSolver) {
+                   IcmSolver, CoopSolver) {
   // Before the solvers said when they converge, default options ended the original problem
   // after 4 steps without decrease: with 8 labels, in the middle of a sweep.
   Rng rng(91);
   for (int trial = 0; trial < 12; ++trial) {
-    const PairwiseEnergy energy = potts_grid(rng, 9, 7, 8);
+    const auto energy = SurfaceEnergy<TestType>::make(rng, 9, 7, 8);
     TestType solver;
     PartitionList flat;
     const Summary summary = coarse_to_fine(energy, flat, solver, Options{});

@@ -11,11 +11,9 @@
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/schedule_provider.hpp"
-#include "c2f/vision/segmentation/segmentation_schedules.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
-using namespace c2f::vision;
 using namespace c2f::test;
 
 namespace {
@@ -150,7 +148,7 @@ TEST_CASE("cooperative cuts run coarse to fine on colour-passing levels",
   Rng rng(44);
   const CoopEnergy energy = region_coop(rng, 12, 10, 3, 4, true);
   for (const AuxStrategy strategy : {AuxStrategy::greedy, AuxStrategy::mm}) {
-    ScheduleProvider levels(parse_segmentation_schedule("paper", 3), {12, 10});
+    ScheduleProvider levels(Schedule::parse("cp:2,1 cp:2,2 flat"), {12, 10});
     CoopSolver solver(options_for(strategy, ExpansionStart::current));
     Options options;
     options.plateau_steps = {3};

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The public names c2f/c2f.hpp declares, as the using-declarations of modules/umbrella/src/c2f.cppm.
 
-Usage: cmake/module_exports.py SOURCE_DIR            prints the names, one per line (ns::name)
-       cmake/module_exports.py SOURCE_DIR --check    exits 1 naming every public name the module
+Usage: cmake/import_exports.py SOURCE_DIR            prints the names, one per line (ns::name)
+       cmake/import_exports.py SOURCE_DIR --check    exits 1 naming every public name the module
                                                      does not export, or exports but no header has
 
 A name is public when a header included by c2f/c2f.hpp declares it at namespace scope in c2f or

@@ -1,11 +1,11 @@
-# c2f_add_module(NAME <name> [COMPONENT <component>] [SOURCES ...] [DEPENDS ...]
+# c2f_add_library(NAME <name> [COMPONENT <component>] [SOURCES ...] [DEPENDS ...]
 #                [INCLUDE_DIR <dir>])
 #
-# Declares one library module: target c2f_<name>, alias c2f::<name>, exported as
+# Declares one library (a folder of modules/ or adapters/): target c2f_<name>, alias c2f::<name>, exported as
 # c2f::<name> in the package component <component> (default core; see c2f_install.cmake),
 # public headers under <dir> (default: include/ next to the CMakeLists). Modules without
 # sources become INTERFACE (header-only) targets.
-function(c2f_add_module)
+function(c2f_add_library)
   cmake_parse_arguments(ARG "" "NAME;INCLUDE_DIR;COMPONENT" "SOURCES;DEPENDS" ${ARGN})
   if(NOT ARG_COMPONENT)
     set(ARG_COMPONENT core)

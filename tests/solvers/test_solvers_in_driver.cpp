@@ -3,7 +3,15 @@
 
 #include <catch2/catch.hpp>
 
-#include "c2f/c2f.hpp"
+#include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/adapters/graphcut/swap.hpp"
+#include "c2f/adapters/icm/icm.hpp"
+#include "c2f/adapters/lbp/lbp.hpp"
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/grid.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/partition_list.hpp"
 #include "support/tiny_models.hpp"
 
 using namespace c2f;

@@ -1,7 +1,7 @@
 // A coarse-to-fine solve of the synthetic problem with expansion and a schedule, built twice
 // from this one file: with `import c2f;` only (C2F_IMPORT_MODULE; no c2f header), and with
 // `#include "c2f/c2f.hpp"`. Prints the final energy and a checksum of the labeling, which the
-// test module.same_result_as_headers compares between the two builds.
+// test import.same_result_as_headers compares between the two builds.
 
 #include <cstdint>
 #include <cstdio>
