@@ -1,7 +1,13 @@
 #include "tool_options.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <stdexcept>
 
@@ -64,9 +70,38 @@ std::string option_message(const std::string& option, const std::string& message
   return option + ": " + (message.rfind(name, 0) == 0 ? message.substr(name.size()) : message);
 }
 
+void guard_process() {
+  // A closed standard descriptor would be handed to the next file opened (a trace would then
+  // receive the progress lines meant for stderr): open it to /dev/null first.
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+      const int opened = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+      if (opened != fd && opened >= 0) {
+        dup2(opened, fd);
+        close(opened);
+      }
+    }
+  }
+  // Past a file-size limit (ulimit -f) a write fails with EFBIG, which the checked writes
+  // report naming the file, instead of SIGXFSZ ending the process without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
 int run_tool(const char* tool, const std::function<int()>& body) {
+  guard_process();
   try {
-    return body();
+    const int code = body();
+    // What a tool prints on stdout is an output too: a failed write is an error.
+    errno = 0;
+    std::cout.flush();
+    const bool written = std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+    if (!written) {
+      std::cerr << tool << ": error: writing standard output failed"
+                << (errno != 0 ? std::string(" (") + std::strerror(errno) + ")" : std::string())
+                << "\n";
+      return 1;
+    }
+    return code;
   } catch (const std::invalid_argument& error) {
     std::cerr << tool << ": error: " << error.what() << "\n";
     return 2;

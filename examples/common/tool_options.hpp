@@ -103,9 +103,15 @@ auto with_flag(const char* option, Parse parse) {
   }
 }
 
-/// Runs a tool's main body and returns its exit code: the body's own (0, or 128 + a signal's
-/// number after an interrupt), 2 for std::invalid_argument (bad input or arguments) and 1 for
-/// any other exception, each printed as "TOOL: error: MESSAGE" on stderr.
+/// Makes the process safe to write from: standard descriptors that are closed are opened to
+/// /dev/null (so no file the tool opens becomes stdout or stderr), and SIGXFSZ is ignored (a
+/// write past a file-size limit fails and is reported naming the file).
+void guard_process();
+
+/// Runs a tool's main body after guard_process() and returns its exit code: the body's own (0,
+/// or 128 + a signal's number after an interrupt), 2 for std::invalid_argument (bad input or
+/// arguments), 1 for any other exception and for a failed write to stdout (a full disk), each
+/// printed as "TOOL: error: MESSAGE" on stderr.
 int run_tool(const char* tool, const std::function<int()>& body);
 
 /// Strict parsing of one option value, for tools and formats that read values themselves.
