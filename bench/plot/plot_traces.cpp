@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -19,6 +20,8 @@
 #include <vector>
 
 #include "c2f/core/number_text.hpp"
+#include "c2f/core/output_file.hpp"
+#include "output_folder.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -94,10 +97,25 @@ std::string format(double v) {
 
 }  // namespace
 
+/// Writes `plot` as the PNG `out`, staged beside it and moved into place only once written
+/// (a failed write leaves an earlier plot as it was).
+void write_plot(const cv::Mat& plot, const std::filesystem::path& out) {
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", plot, png)) throw std::runtime_error("cannot encode the plot as PNG");
+  const std::filesystem::path folder = out.has_parent_path() ? out.parent_path() : ".";
+  c2f::examples::OutputFolder output(folder, {out.filename().string()});
+  const std::filesystem::path staged = output.stage(out);
+  std::ofstream file(staged, std::ios::binary);
+  if (!file) throw std::runtime_error("cannot write '" + out.string() + "'");
+  file.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  c2f::close_checked(file, "'" + out.string() + "'");
+  output.commit();
+}
+
 int main(int argc, char** argv) {
   std::string out, title = "energy against time", column = "energy", gap_to;
   std::vector<std::pair<std::string, std::string>> inputs;
-  try {
+  return c2f::examples::run_tool("c2f-plot", [&] {
     c2f::examples::ToolOptions options(
         "c2f-plot: line plots of traces (a column against time) as PNG.\n\n"
         "Usage: c2f-plot -o PLOT.png [options] NAME=TRACE.csv ...\n\nOptions");
@@ -119,6 +137,8 @@ int main(int argc, char** argv) {
     }
     if (out.empty() || inputs.empty())
       throw std::invalid_argument("need -o PLOT.png and at least one NAME=TRACE.csv");
+    if (std::filesystem::path(out).extension() != ".png")
+      throw std::invalid_argument("-o '" + out + "': expected a file name ending in .png");
     std::optional<double> reference;
     if (!gap_to.empty()) {
       reference = c2f::parse_real(gap_to);
@@ -176,10 +196,7 @@ int main(int argc, char** argv) {
       cv::putText(plot, series[s].name, {width - right - 160, top + 25 + 22 * static_cast<int>(s)},
                   cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
     }
-    if (!cv::imwrite(out, plot)) throw std::runtime_error("cannot write '" + out + "'");
-  } catch (const std::exception& error) {
-    std::cerr << "c2f-plot: error: " << error.what() << "\n";
-    return 2;
-  }
-  return 0;
+    write_plot(plot, out);
+    return 0;
+  });
 }

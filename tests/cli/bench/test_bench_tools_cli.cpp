@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -71,6 +72,31 @@ TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plo
       c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + good);
   CHECK(ok.exit_code == 0);
   CHECK(std::filesystem::exists(dir / "plot.png"));
+  // A failed plot leaves the earlier one as it was (the PNG is staged, then moved into place);
+  // a name that is not a PNG is refused by name.
+  const auto read_file = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  const std::string earlier = read_file(dir / "plot.png");
+  const auto failed =
+      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() +
+                                               " a=" + trace("nan.csv", "0.1,0,0,nan,4\n"));
+  CHECK(failed.exit_code != 0);
+  CHECK(read_file(dir / "plot.png") == earlier);
+  // A write that fails part way (a file-size limit of 512 bytes) is an error, and the earlier
+  // plot survives it too (c2f-plot wrote in place before, so such a failure truncated it).
+  const auto cut =
+      c2f::test::run_tool("sh", "-c 'ulimit -f 1; exec " + std::string(C2F_PLOT_BINARY) + " -o " +
+                                    (dir / "plot.png").string() + " a=" + good + "'");
+  INFO(cut.output);
+  CHECK(cut.exit_code == 1);
+  CHECK_THAT(cut.output, Catch::Contains("c2f-plot: error:") && Catch::Contains("plot.png"));
+  CHECK(read_file(dir / "plot.png") == earlier);
+  const auto not_png =
+      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.txt").string() + " a=" + good);
+  CHECK(not_png.exit_code == 2);
+  CHECK_THAT(not_png.output, Catch::Contains("plot.txt': expected a file name ending in .png"));
   // The gap view: a finite reference is drawn (values below it sit on the floor), any other
   // text is refused by name.
   const auto gap = c2f::test::run_tool(
