@@ -81,6 +81,10 @@ struct Inputs {
     cv::Mat one = white.clone();
     cv::line(one, {5, 5}, {20, 5}, cv::Scalar(0, 0, 255), 2);
     cv::imwrite((dir / "seeds-one.png").string(), one);
+    cv::imwrite((dir / "gt-unknown.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(0)));
+    cv::imwrite((dir / "mask-none.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(0)));
+    cv::imwrite((dir / "mask-grey.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(128)));
+    cv::imwrite((dir / "mask-red.png").string(), cv::Mat(32, 48, CV_8UC3, cv::Scalar(0, 0, 255)));
     cv::Mat grey_gt(30, 40, CV_8U, cv::Scalar(255));
     grey_gt.at<std::uint8_t>(3, 4) = 77;
     cv::imwrite((dir / "gt-grey77.png").string(), grey_gt);
@@ -193,6 +197,22 @@ std::vector<Case> stereo_cases() {
        2,
        {"left.png' has 3 channels", "expected one channel of 8 or 16 bits"}},
       {"stereo", pair + "--mask {left}", 2, {"a right-view GT or a mask needs the left-view GT"}},
+      {"stereo",
+       pair + "--gt {dir}/gt-unknown.png --gt-divisor 4",
+       2,
+       {"GT '", "gt-unknown.png' has no known pixel"}},
+      {"stereo",
+       pair + "--gt {dir}/gt.png --gt-divisor 4 --mask {dir}/mask-none.png",
+       2,
+       {"mask '", "mask-none.png' marks no pixel for evaluation"}},
+      {"stereo",
+       pair + "--gt {dir}/gt.png --gt-divisor 4 --mask {dir}/mask-grey.png",
+       2,
+       {"mask-grey.png' has the grey value 128 at (0, 0)", "expected only 255 (evaluate)"}},
+      {"stereo",
+       pair + "--gt {dir}/gt.png --gt-divisor 4 --mask {dir}/mask-red.png",
+       2,
+       {"mask-red.png' has the grey value 76 at (0, 0)"}},
       {"stereo", pair + "--schedule cp:1", 2, {"--schedule: level 'cp:1': expected cp:N_L,N_iter"}},
       {"stereo",
        pair + "--schedule auto:",

@@ -103,12 +103,19 @@ cv::Mat load_gt_disparity(const std::string& path, double divisor) {
                                 std::to_string(divisor));
   const cv::Mat raw = load_single_channel_image(path);  // 8 or 16 bits, never cut
   cv::Mat gt(raw.size(), CV_32F);
+  std::size_t known = 0;
   for (int y = 0; y < raw.rows; ++y) {
     for (int x = 0; x < raw.cols; ++x) {
       const int v = raw.depth() == CV_16U ? raw.at<std::uint16_t>(y, x) : raw.at<uchar>(y, x);
       gt.at<float>(y, x) =
           v == 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v / divisor);
+      known += v != 0;
     }
+  }
+  if (known == 0) {
+    throw std::invalid_argument("GT '" + path +
+                                "' has no known pixel (every value is 0, which means unknown): "
+                                "nothing could be evaluated against it");
   }
   return gt;
 }
@@ -132,7 +139,24 @@ cv::Mat left_right_nonoccluded(const cv::Mat& gt_left, const cv::Mat& gt_right) 
 }
 
 cv::Mat load_mask(const std::string& path) {
-  cv::Mat mask = load_grey_image(path);
+  const cv::Mat mask = load_grey_image(path);
+  std::size_t evaluated = 0;
+  for (int y = 0; y < mask.rows; ++y) {
+    for (int x = 0; x < mask.cols; ++x) {
+      const int v = mask.at<uchar>(y, x);
+      if (v != 0 && v != 255) {
+        throw std::invalid_argument("mask '" + path + "' has the grey value " + std::to_string(v) +
+                                    " at (" + std::to_string(x) + ", " + std::to_string(y) +
+                                    "): expected only 255 (evaluate) and 0 (occluded)");
+      }
+      evaluated += v == 255;
+    }
+  }
+  if (evaluated == 0) {
+    throw std::invalid_argument("mask '" + path +
+                                "' marks no pixel for evaluation (no value 255): nothing could "
+                                "be evaluated");
+  }
   return mask == 255;
 }
 

@@ -33,7 +33,8 @@ std::vector<SceneRow> parse_scene_table(std::string_view text, const std::string
 
 /// A GT disparity PNG divided by `divisor`, as CV_32F; unknown pixels (stored 0) are NaN.
 /// Palette PNGs decode to their grey levels. Throws std::invalid_argument for divisor <= 0 and
-/// std::runtime_error naming the path for an unreadable file.
+/// for a GT with no known pixel (nothing could be evaluated), std::runtime_error naming the
+/// path for an unreadable file.
 cv::Mat load_gt_disparity(const std::string& path, double divisor);
 
 /// Non-occluded pixels by the left-right check: a left pixel with known GT d is occluded when
@@ -41,7 +42,9 @@ cv::Mat load_gt_disparity(const std::string& path, double divisor);
 /// CV_8U, 255 = non-occluded with known GT. Throws std::invalid_argument on size mismatch.
 cv::Mat left_right_nonoccluded(const cv::Mat& gt_left, const cv::Mat& gt_right);
 
-/// An official mask PNG (nonocc.png): 255 = evaluate. CV_8U with values 0 or 255.
+/// An official mask PNG (nonocc.png): 255 = evaluate, 0 = occluded. CV_8U with values 0 or 255.
+/// Throws std::invalid_argument naming the file for any other grey value (a colour image, a
+/// half-tone) and for a mask with no pixel to evaluate.
 cv::Mat load_mask(const std::string& path);
 
 /// Loads a scene row from the data root: views, GT (divisor from the row), and the
