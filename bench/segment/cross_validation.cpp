@@ -313,7 +313,12 @@ int summarize(const std::vector<std::string>& paths) {
       study.aside[row.image] = row.aside;
     }
   }
-  if (keys.empty()) throw std::invalid_argument("the rows files hold no rows");
+  if (keys.empty()) {
+    std::string names;
+    for (const std::string& path : paths) names += (names.empty() ? "'" : ", '") + path + "'";
+    throw std::invalid_argument(names + (paths.size() == 1 ? " holds" : " hold") +
+                                " no rows to summarize (expected the rows a run printed)");
+  }
   std::map<std::string, OutOfSample> results;
   for (const std::string& key : keys) {
     const Study& study = studies.at(key);

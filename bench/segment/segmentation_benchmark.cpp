@@ -226,6 +226,9 @@ int summarize(const std::string& path) {
     rows.push_back({f[0], f[3], f[8], number(f[4]), number(f[5]), number(f[6]), number(f[9]),
                     number(f[10]), number(f[11]), number(f[12])});
   }
+  if (rows.empty())
+    throw std::invalid_argument("'" + path +
+                                "' holds no rows to summarize (expected the rows a run printed)");
   auto fixed = [](double value, const char* format) {
     char text[32];
     std::snprintf(text, sizeof text, format, value);

@@ -142,15 +142,20 @@ int run_scene(const std::string& name, const std::string& data, int downscale, i
 int summarize(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.rfind("scene\t", 0) != 0) lines.push_back(line);
+  }
+  if (lines.empty())
+    throw std::invalid_argument("'" + path +
+                                "' holds no rows to summarize (expected the rows a run printed)");
   std::printf(
       "| scene | pixels x labels | Boost first sweep (s) | dynamic first sweep (s) | ratio | Boost "
       "converged (s) | dynamic converged (s) | ratio | sweeps Boost / dynamic | final energy "
       "difference | QPBO moves | recycled moves | peak MiB Boost / dynamic |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> first_ratio, converge_ratio, energy_difference, peak;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line.rfind("scene\t", 0) == 0) continue;
+  for (const std::string& line : lines) {
     std::vector<std::string> f;
     std::stringstream stream(line);
     for (std::string field; std::getline(stream, field, '\t');) f.push_back(field);

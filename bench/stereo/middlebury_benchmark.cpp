@@ -215,6 +215,9 @@ int summarize(const std::string& path) {
       throw std::runtime_error("malformed row in '" + path + "': " + line);
     rows.push_back(fields);
   }
+  if (rows.empty())
+    throw std::invalid_argument("'" + path +
+                                "' holds no rows to summarize (expected the rows a run printed)");
   auto number = [](const std::string& s) {
     return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
   };

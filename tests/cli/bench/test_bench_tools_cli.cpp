@@ -157,6 +157,11 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-crossval", "run --kmeans fast", "--kmeans: expected reference or plusplus"},
       {"c2f-bench-crossval", "summarize /nonexistent.tsv", "cannot read '/nonexistent.tsv'"},
       {"c2f-bench-crossval", "walk", "expected 'run' or 'summarize ROWS.tsv...'"},
+      // A summary of nothing is an error, not an empty table with nan medians.
+      {"c2f-bench-stereo", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
+      {"c2f-bench-segment", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
+      {"c2f-bench-expansion", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
+      {"c2f-bench-crossval", "summarize /dev/null", "'/dev/null' is not a c2f-bench-crossval rows"},
       {"c2f-plot", "-o plot.png", "need -o PLOT.png and at least one NAME=TRACE.csv"},
       {"c2f-plot", "-o plot.png =trace.csv", "unexpected argument '=trace.csv'"},
       {"c2f-plot", "-o plot.png --column", "the required argument for option '--column'"},
