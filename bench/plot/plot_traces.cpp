@@ -21,6 +21,7 @@
 
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/output_file.hpp"
+#include "c2f/core/text_input.hpp"
 #include "output_folder.hpp"
 #include "tool_options.hpp"
 
@@ -40,7 +41,7 @@ Series read_trace(const std::string& name, const std::string& path, const std::s
   std::string header;
   std::getline(in, header);
   std::vector<std::string> columns;
-  std::stringstream hs(header);
+  std::stringstream hs{std::string(c2f::without_byte_order_mark(header))};
   for (std::string c; std::getline(hs, c, ',');) columns.push_back(c);
   const auto time_col = std::find(columns.begin(), columns.end(), "time_s") - columns.begin();
   const auto value_col = std::find(columns.begin(), columns.end(), column) - columns.begin();

@@ -39,6 +39,11 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
   CHECK_THROWS_WITH(Schedule::parse("cp:1"),
                     Catch::Contains("level 'cp:1': expected cp:N_L,N_iter"));
   CHECK_THROWS_WITH(Schedule::parse("cp:0,1"), Catch::Contains("'0' must be a whole number >= 1"));
+  // Too large is said so (it read "must be a whole number >= 1").
+  CHECK_THROWS_WITH(Schedule::parse("cp:99999999999999999999,1"),
+                    Catch::Contains("'99999999999999999999' is too large (at most 1000000000)"));
+  CHECK_THROWS_WITH(Schedule::parse("cp:2000000000,1"), Catch::Contains("is too large"));
+  CHECK_THROWS_WITH(Schedule::parse("cp:1e30,1"), Catch::Contains("'1e30' is too large"));
   CHECK_THROWS_WITH(Schedule::parse("cp:a,1"), Catch::Contains("'a' is not a number"));
   CHECK_THROWS_WITH(Schedule::parse("threshold:-2"), Catch::Contains("TAU must be >= 0"));
   CHECK_THROWS_WITH(Schedule::parse("slic:1"), Catch::Contains("'1' must be a whole number >= 2"));

@@ -132,6 +132,10 @@ TEST_CASE("GT loading, the left-right check and the scene table", "[stereo][midd
   good.close();
   CHECK_THROWS_WITH(load_named_scene(dir.string(), "Teddy"),
                     Catch::Contains("no scene 'Teddy' in ") && Catch::Contains("(have: Toy)"));
+  // A table saved with a UTF-8 byte-order mark reads the same (its header was not found).
+  const std::string header = "year,scene,dir,width,height,scale,gt_divisor,files\n";
+  const std::string row = "2003,Toy,toy,4,1,quarter,4,left.png right.png\n";
+  CHECK(parse_scene_table("\xEF\xBB\xBF" + header + row, "marked.csv").front().scene == "Toy");
 
   // A scene whose GT has another size than its views is an error, not resized and scored.
   std::filesystem::create_directories(dir / "toy");

@@ -2,6 +2,7 @@
 
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/output_file.hpp"
+#include "c2f/core/text_input.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,9 +36,9 @@ class TokenReader {
   long integer(const std::string& what, long min, long max) {
     const std::string token = word(what);
     const std::optional<long long> value = parse_integer(token);
-    if (!value) fail("expected " + what + ", got '" + token + "'");
+    if (!value) fail("expected " + what + ", got '" + printable(token) + "'");
     if (*value < min || *value > max) {
-      fail(what + " " + token + " is out of range [" + std::to_string(min) + ", " +
+      fail(what + " " + printable(token) + " is out of range [" + std::to_string(min) + ", " +
            std::to_string(max) + "]");
     }
     return static_cast<long>(*value);
@@ -46,7 +47,7 @@ class TokenReader {
   double real(const std::string& what) {
     const std::string token = word(what);
     const std::optional<double> value = parse_real(token);
-    if (!value) fail("expected " + what + ", got '" + token + "'");
+    if (!value) fail("expected " + what + ", got '" + printable(token) + "'");
     return *value;
   }
 
@@ -72,10 +73,16 @@ double cost_of(double potential, TokenReader& reader, const std::string& where) 
 PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
   // The whole text first: its size bounds every count the file declares, so a short file
   // cannot make the reader allocate for 2^40 entries it does not hold.
-  const std::string text((std::istreambuf_iterator<char>(stream)),
-                         std::istreambuf_iterator<char>());
+  const std::string whole((std::istreambuf_iterator<char>(stream)),
+                          std::istreambuf_iterator<char>());
+  if (is_gzip(whole)) {
+    throw std::invalid_argument(std::string(source) +
+                                ": a gzip-compressed file, not UAI text: decompress it first "
+                                "(gunzip)");
+  }
+  const std::string_view text = without_byte_order_mark(whole);
   const auto bytes = static_cast<long long>(text.size());
-  std::istringstream in(text);
+  std::istringstream in{std::string(text)};
   TokenReader reader(in, source);
   auto require_room = [&](long long count, long long bytes_each, const std::string& what) {
     if (count > bytes / bytes_each) {
@@ -85,7 +92,7 @@ PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
   };
   const std::string kind = reader.word("the network type");
   if (kind != "MARKOV")
-    reader.fail("network type '" + kind + "' is not supported (expected MARKOV)");
+    reader.fail("network type '" + printable(kind) + "' is not supported (expected MARKOV)");
   const long num_variables = reader.integer("the number of variables", 1, 0xffffffffL);
   require_room(num_variables, 2, "the number of variables");
   long num_labels = 0;

@@ -1,6 +1,7 @@
 #include "c2f/lift/schedule.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -31,12 +32,14 @@ double number(std::string_view token, const std::string& text) {
 }
 
 int whole_number(std::string_view token, const std::string& text, int min) {
+  constexpr long long kMax = 1'000'000'000;
   const std::optional<long long> value = parse_integer(text);
-  if (!value) {
-    number(token, text);  // names text that is no number at all
-    bad(token, "'" + text + "' must be a whole number >= " + std::to_string(min));
+  const double real = number(token, text);  // names text that is no number at all
+  const bool too_large = value ? *value > kMax : real > static_cast<double>(kMax);
+  if (too_large && real == std::floor(real)) {
+    bad(token, "'" + text + "' is too large (at most " + std::to_string(kMax) + ")");
   }
-  if (*value < min || *value > 1'000'000'000) {
+  if (!value || *value < min || *value > kMax) {
     bad(token, "'" + text + "' must be a whole number >= " + std::to_string(min));
   }
   return static_cast<int>(*value);

@@ -28,6 +28,7 @@
 #include "c2f/core/output_file.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/pairwise_term.hpp"
+#include "c2f/core/text_input.hpp"
 #include "c2f/core/partition.hpp"
 #include "c2f/core/trace.hpp"
 #include "c2f/core/uai.hpp"

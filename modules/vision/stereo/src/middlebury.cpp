@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "c2f/core/number_text.hpp"
+#include "c2f/core/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
 
 namespace c2f::vision {
@@ -27,7 +28,7 @@ std::vector<std::string> split_csv(const std::string& line) {
 }  // namespace
 
 std::vector<SceneRow> parse_scene_table(std::string_view text, const std::string& source) {
-  std::istringstream in{std::string(text)};
+  std::istringstream in{std::string(without_byte_order_mark(text))};
   std::string line;
   if (!std::getline(in, line)) throw std::invalid_argument("scene table '" + source + "' is empty");
   if (!line.empty() && line.back() == '\r') line.pop_back();
