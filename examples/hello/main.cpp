@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/expansion.hpp"  // c2f::graphcut
-#include "c2f/core/grid.hpp"                     // c2f::core
-#include "c2f/driver/coarse_to_fine.hpp"         // c2f::driver
-#include "c2f/lift/partition_list.hpp"           // c2f::lift
+#include "c2f/core/grid.hpp"                    // c2f::core
+#include "c2f/driver/coarse_to_fine.hpp"        // c2f::driver
+#include "c2f/lift/partition_list.hpp"          // c2f::lift
 #include "c2f/lift/schedule_provider.hpp"
 
 int main() {
@@ -29,10 +29,10 @@ int main() {
     }
   }
   // Unaries plus a truncated-linear term between 4-neighbours: the energy to minimise.
-  const c2f::PairwiseEnergy energy = c2f::make_grid_energy(
-      {width, height}, c2f::Connectivity::four, labels, std::move(unaries),
-      c2f::PairwiseTerm::truncated_linear(3.0),
-      [](c2f::VariableIndex, c2f::VariableIndex) { return 4.0; });
+  const c2f::PairwiseEnergy energy =
+      c2f::make_grid_energy({width, height}, c2f::Connectivity::four, labels, std::move(unaries),
+                            c2f::PairwiseTerm::truncated_linear(3.0),
+                            [](c2f::VariableIndex, c2f::VariableIndex) { return 4.0; });
 
   c2f::ExpansionSolver<> solver;  // alpha-expansion; any AnytimeSolver fits here
   c2f::Options options;           // coarse levels: 4 quiet steps; the original: until converged
@@ -42,8 +42,7 @@ int main() {
   const c2f::Summary flat = c2f::coarse_to_fine(energy, no_levels, solver, options);
 
   // Coarse to fine: colour-passing levels CP(1,1), CP(2,1), CP(3,1), then the original problem.
-  c2f::ScheduleProvider levels(c2f::Schedule::parse("cp:1,1 cp:2,1 cp:3,1 flat"),
-                               {width, height});
+  c2f::ScheduleProvider levels(c2f::Schedule::parse("cp:1,1 cp:2,1 cp:3,1 flat"), {width, height});
   const c2f::Summary c2f_run = c2f::coarse_to_fine(energy, levels, solver, options);
 
   std::printf("flat:           energy %.1f in %.3f s (%ld steps)\n", flat.energy, flat.seconds,

@@ -10,6 +10,7 @@
 
 #include "c2f/c2f.hpp"
 #include "interrupt_watch.hpp"
+#include "output_paths.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
 #include "segment_options.hpp"
@@ -120,15 +121,21 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
 
+    const std::vector<std::string> owned = {"labels.png", "overlay.png", "trace.csv", "summary.txt",
+                                            "partition-level*.png"};
+    examples::check_output_paths(
+        {command.out_dir,
+         owned,
+         {{"--trace", command.trace}, {"--export-uai", command.export_uai}}},
+        {{"IMAGE", command.files.image},
+         {"SEEDS", command.files.seeds},
+         {"--gt", command.files.gt}});
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
     const Schedule schedule = schedule_for(command, scene.num_labels());
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    examples::RunRecord record(
-        command.out_dir,
-        {"labels.png", "overlay.png", "trace.csv", "summary.txt", "partition-level*.png"},
-        command.trace, "c2f-segment", command.quiet);
+    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-segment", command.quiet);
     const TimedProblem built = build_problem(scene, command);
     // The Potts model as UAI, staged with the other outputs (it lands only if the run does).
     if (!command.export_uai.empty())

@@ -10,6 +10,7 @@
 
 #include "c2f/c2f.hpp"
 #include "interrupt_watch.hpp"
+#include "output_paths.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
 #include "solve_options.hpp"
@@ -64,12 +65,14 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SolveCommand& command = *parsed;
 
+    const std::vector<std::string> owned = {"labeling.mpe", "trace.csv", "summary.txt"};
+    examples::check_output_paths({command.out_dir, owned, {{"--trace", command.trace}}},
+                                 {{"MODEL", command.model}});
     const TimedModel model = read_model(command);
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
     // Outputs are staged and moved into place together at the end.
-    examples::RunRecord record(command.out_dir, {"labeling.mpe", "trace.csv", "summary.txt"},
-                               command.trace, "c2f-solve", command.quiet);
+    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-solve", command.quiet);
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
     const Summary summary =

@@ -11,6 +11,7 @@
 
 #include "c2f/c2f.hpp"
 #include "interrupt_watch.hpp"
+#include "output_paths.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
 #include "stereo_options.hpp"
@@ -108,13 +109,22 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::StereoCommand& command = *parsed;
 
+    const std::vector<std::string> owned = {
+        "disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
+        "trace.csv",     "summary.txt",   "partition-level*.png"};
+    examples::check_output_paths(
+        {command.out_dir,
+         owned,
+         {{"--trace", command.trace}, {"--export-uai", command.export_uai}}},
+        {{"LEFT", command.pair.left},
+         {"RIGHT", command.pair.right},
+         {"--gt", command.pair.gt},
+         {"--gt-right", command.pair.gt_right},
+         {"--mask", command.pair.mask}});
     const StereoScene scene = load_input(command);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    examples::RunRecord record(command.out_dir,
-                               {"disparity.pfm", "disparity.png", "disparity-colour.png",
-                                "error.png", "trace.csv", "summary.txt", "partition-level*.png"},
-                               command.trace, "c2f-stereo", command.quiet);
+    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-stereo", command.quiet);
     announce(command, scene);
     const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
     // The model as UAI, staged with the other outputs (it lands only if the run does).

@@ -112,6 +112,10 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
            {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
+           // An output over the model, or over one of the run's own outputs (was exit 0).
+           {grid + out + " --trace " + grid, "--trace '" + grid + "' is the same file as MODEL"},
+           {grid + out + " --trace " + (dir / "out" / "labeling.mpe").string(),
+            "is labeling.mpe, a file the run writes into"},
        }) {
     const auto r = c2f::test::run_tool(C2F_SOLVE_BINARY, arguments);
     INFO(arguments << "\n" << r.output);
