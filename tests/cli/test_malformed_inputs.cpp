@@ -81,6 +81,11 @@ struct Inputs {
     cv::Mat one = white.clone();
     cv::line(one, {5, 5}, {20, 5}, cv::Scalar(0, 0, 255), 2);
     cv::imwrite((dir / "seeds-one.png").string(), one);
+    cv::Mat green = one.clone();  // red and blue seeds, and a green dot --binary has no meaning for
+    cv::line(green, {5, 20}, {20, 20}, cv::Scalar(255, 0, 0), 2);
+    cv::imwrite((dir / "seeds-binary.png").string(), green);
+    green.at<cv::Vec3b>(12, 30) = cv::Vec3b(0, 200, 0);
+    cv::imwrite((dir / "seeds-green.png").string(), green);
     cv::imwrite((dir / "gt-unknown.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(0)));
     cv::imwrite((dir / "mask-none.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(0)));
     cv::imwrite((dir / "mask-grey.png").string(), cv::Mat(32, 48, CV_8U, cv::Scalar(128)));
@@ -313,6 +318,11 @@ std::vector<Case> segment_cases() {
        {"SEEDS '", "' is labels.png, a file the run writes into"}},
       {"segment", run + "--trace {seeds}", 2, {"--trace '", "' is the same file as SEEDS '"}},
       {"segment",
+       "{image} {dir}/seeds-green.png -o {out}/segment --binary",
+       2,
+       {"seeds-green.png': pixel (30, 12) has the colour (0, 200, 0)",
+        "none of red (object), blue (background) and white (unlabelled)"}},
+      {"segment",
        "{dir}/missing.png {seeds} -o {out}/segment",
        2,
        {"IMAGE: file '", "missing.png' does not exist"}},
@@ -398,7 +408,7 @@ std::vector<Case> segment_cases() {
        2,
        {"GT '", "gt-odd.png': colour (30,200,10) at (2, 2) is none of the label colours"}},
       {"segment",
-       run + "--binary --gt {dir}/gt-grey77.png",
+       "{image} {dir}/seeds-binary.png -o {out}/segment --binary --gt {dir}/gt-grey77.png",
        2,
        {"gt-grey77.png': grey level 77 at pixel", "is none of 0 (background), 128"}},
       {"segment", run + "--max-steps x", 2, {"--max-steps: ", "got 'x'"}},

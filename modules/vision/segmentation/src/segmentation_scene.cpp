@@ -194,8 +194,21 @@ SegmentationScene segmentation_scene_from_images(const SegmentationImages& image
       scene.palette = {cv::Vec3b(255, 0, 0), cv::Vec3b(0, 0, 255)};  // blue background, red object
       for (std::size_t i = 0; i < n; ++i) {
         const auto [r, g, b] = rgb(seeds.at<cv::Vec3b>(static_cast<int>(i)));
-        if (r > 127 && g < 128 && b < 128) scene.seeds[i] = 1;
-        if (r < 128 && b > 127) scene.seeds[i] = 0;
+        if (r > 127 && g < 128 && b < 128) {
+          scene.seeds[i] = 1;
+        } else if (r < 128 && b > 127) {
+          scene.seeds[i] = 0;
+        } else if (r < 128 || g < 128 || b < 128) {
+          // Neither red, blue nor light (unlabelled): a seed of a colour the convention does
+          // not have, which the reference's rule would silently leave unlabelled.
+          const auto width = static_cast<std::size_t>(seeds.cols);
+          throw std::invalid_argument(
+              "SEEDS '" + files.seeds + "': pixel (" + std::to_string(i % width) + ", " +
+              std::to_string(i / width) + ") has the colour (" + std::to_string(r) + ", " +
+              std::to_string(g) + ", " + std::to_string(b) +
+              "), which --binary reads as none of red (object), blue (background) and white "
+              "(unlabelled)");
+        }
       }
       if (has_gt) {
         const cv::Mat& gt = gt_image;
