@@ -39,11 +39,22 @@ struct StereoProblem {
   double seconds;
 };
 
-StereoProblem build_problem(const StereoScene& scene, const TsgoOptions& tsgo, bool quiet) {
+StereoProblem build_problem(const examples::StereoCommand& command, const StereoScene& scene) {
   const auto start = Clock::now();
-  TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
+  TsgoProblem problem = [&] {
+    try {
+      return tsgo_problem(scene.left, scene.right, command.tsgo);
+    } catch (const std::invalid_argument& error) {  // a problem of these views: name them
+      throw std::invalid_argument(
+          (command.scene.empty()
+               ? "LEFT '" + command.pair.left + "', RIGHT '" + command.pair.right + "'"
+               : "--scene " + command.scene) +
+          ": " + error.what());
+    }
+  }();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (!quiet) std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s\n", seconds);
+  if (!command.quiet)
+    std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s\n", seconds);
   return {std::move(problem), seconds};
 }
 
@@ -126,7 +137,7 @@ int main(int argc, char** argv) {
     // leaves an earlier run's files as they were.
     examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-stereo", command.quiet);
     announce(command, scene);
-    const StereoProblem problem = build_problem(scene, command.tsgo, command.quiet);
+    const StereoProblem problem = build_problem(command, scene);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!command.export_uai.empty())
       write_uai_file(problem.tsgo.energy, record.stage(command.export_uai).string());

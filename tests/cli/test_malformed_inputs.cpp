@@ -202,6 +202,11 @@ std::vector<Case> stereo_cases() {
        2,
        {"left.png' has 3 channels", "expected one channel of 8 or 16 bits"}},
       {"stereo", pair + "--mask {left}", 2, {"a right-view GT or a mask needs the left-view GT"}},
+      {"stereo",
+       "{left} {left} -o {out}/stereo",
+       2,
+       {"LEFT '", "', RIGHT '", "every pixel matches some disparity perfectly",
+        "are the two views identical"}},
       // Outputs over inputs and over each other (each was overwritten or lost, exit 0).
       {"stereo", pair + "--trace {left}", 2, {"--trace '", "' is the same file as LEFT '"}},
       {"stereo",

@@ -163,8 +163,9 @@ RobustTransformParameters robust_transform(CostVolume& volume, double threshold)
   parameters.mean_excess = sum_excess / static_cast<double>(valid_cells);
   if (!(parameters.mean_minimum > 0.0)) {
     throw std::invalid_argument(
-        "robust_transform: the mean per-pixel minimum cost is 0 (every pixel matches "
-        "perfectly), the TSGO transform is undefined");
+        "every pixel matches some disparity perfectly (are the two views identical, or "
+        "uniform?): TSGO's robust transform divides by the mean best matching cost, which is 0; "
+        "give two views of a textured scene");
   }
   const double spread = parameters.mean_excess - parameters.mean_minimum;
   parameters.slope = threshold * spread * spread;
