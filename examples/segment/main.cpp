@@ -41,11 +41,18 @@ TimedProblem build_problem(const SegmentationScene& scene,
   return {std::move(problem), seconds};
 }
 
-Schedule schedule_for(const examples::SegmentCommand& command, int num_labels) {
+Schedule schedule_for(const examples::SegmentCommand& command, const SegmentationScene& scene) {
+  const int num_labels = scene.num_labels();
   try {
     Schedule schedule = parse_segmentation_schedule(command.schedule, num_labels);
     if (const std::string problem = schedule.validate(num_labels); !problem.empty())
       throw std::invalid_argument(problem);
+    const GridShape shape{static_cast<std::size_t>(scene.image.cols),
+                          static_cast<std::size_t>(scene.image.rows)};
+    if (const std::string problem = schedule.validate_image(shape); !problem.empty()) {
+      // Named with its levels: the schedule may be the default, which the user never wrote.
+      throw std::invalid_argument(command.schedule + " (" + schedule.to_string() + "): " + problem);
+    }
     return schedule;
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("--schedule: ") + error.what());
@@ -132,7 +139,7 @@ int main(int argc, char** argv) {
          {"--gt", command.files.gt}});
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
-    const Schedule schedule = schedule_for(command, scene.num_labels());
+    const Schedule schedule = schedule_for(command, scene);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
     examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-segment", command.quiet);

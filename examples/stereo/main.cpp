@@ -133,6 +133,10 @@ int main(int argc, char** argv) {
          {"--gt-right", command.pair.gt_right},
          {"--mask", command.pair.mask}});
     const StereoScene scene = load_input(command);
+    if (const std::string problem = command.schedule.validate_image(scene.shape());
+        !problem.empty()) {
+      throw std::invalid_argument("--schedule: " + command.schedule.to_string() + ": " + problem);
+    }
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
     examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-stereo", command.quiet);

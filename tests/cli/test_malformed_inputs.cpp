@@ -249,7 +249,8 @@ std::vector<Case> stereo_cases() {
       {"stereo",
        pair + "--schedule \"slic:200 flat\"",
        2,
-       {"region size 200 is larger than the 48x32 image's shorter side"}},
+       {"--schedule: slic:200 flat: level slic:200 needs an image whose shorter side is at "
+        "least 200 pixels, and the image is 48x32"}},
       {"stereo",
        pair + "--labels 8 --schedule \"cp:9,1 flat\"",
        2,
@@ -391,6 +392,13 @@ std::vector<Case> segment_cases() {
        2,
        {"--schedule: level cp:9,1 has N_L 9 above the 3 labels"}},
       {"segment", run + "--schedule local:1,1", 2, {"local grouping reads a pairwise energy"}},
+      // The default schedule on an image too small for it (OpenCV's SLIC message before, which
+      // named no schedule).
+      {"segment",
+       run + "--downscale 4",
+       2,
+       {"--schedule: superpixels (slic:16 slic:8 flat): level slic:16 needs an image whose",
+        "the image is 10x7 (choose smaller regions, or --schedule flat)"}},
       {"segment",
        run + "--schedule \"cp:x\"",
        2,

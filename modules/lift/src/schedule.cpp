@@ -168,4 +168,18 @@ std::string Schedule::validate(int num_labels) const {
   return {};
 }
 
+std::string Schedule::validate_image(GridShape image) const {
+  const std::size_t shorter = std::min(image.width, image.height);
+  for (const LevelSpec& level : levels) {
+    if (const auto* slic = std::get_if<SlicLevel>(&level.partition);
+        slic && static_cast<std::size_t>(slic->region_size) > shorter) {
+      return "level " + level.to_string() + " needs an image whose shorter side is at least " +
+             std::to_string(slic->region_size) + " pixels, and the image is " +
+             std::to_string(image.width) + "x" + std::to_string(image.height) +
+             " (choose smaller regions, or --schedule flat)";
+    }
+  }
+  return {};
+}
+
 }  // namespace c2f

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "c2f/core/grid.hpp"
 #include "c2f/lift/level_spec.hpp"
 
 namespace c2f {
@@ -45,6 +46,9 @@ struct Schedule {
   /// Empty when every level can be built for an energy with num_labels labels, else a message
   /// naming the first level that cannot (N_L above the label count).
   [[nodiscard]] std::string validate(int num_labels) const;
+  /// Empty when every level can be built on an image of this size, else a message naming the
+  /// first level that cannot (a SLIC region larger than the image's shorter side).
+  [[nodiscard]] std::string validate_image(GridShape image) const;
 };
 
 }  // namespace c2f
