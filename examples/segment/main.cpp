@@ -10,6 +10,7 @@
 
 #include "c2f/c2f.hpp"
 #include "interrupt_watch.hpp"
+#include "model_export.hpp"
 #include "output_paths.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
@@ -145,8 +146,10 @@ int main(int argc, char** argv) {
     examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-segment", command.quiet);
     const TimedProblem built = build_problem(scene, command);
     // The Potts model as UAI, staged with the other outputs (it lands only if the run does).
-    if (!command.export_uai.empty())
-      write_uai_file(built.problem.potts, record.stage(command.export_uai).string());
+    if (!command.export_uai.empty() &&
+        !examples::export_uai(built.problem.potts, record.stage(command.export_uai), "c2f-segment",
+                              interrupts))
+      return interrupts.exit_code();
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     LevelPartitionRecorder partitions(command.save_partitions);

@@ -11,6 +11,7 @@
 
 #include "c2f/c2f.hpp"
 #include "interrupt_watch.hpp"
+#include "model_export.hpp"
 #include "output_paths.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
@@ -143,8 +144,10 @@ int main(int argc, char** argv) {
     announce(command, scene);
     const StereoProblem problem = build_problem(command, scene);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
-    if (!command.export_uai.empty())
-      write_uai_file(problem.tsgo.energy, record.stage(command.export_uai).string());
+    if (!command.export_uai.empty() &&
+        !examples::export_uai(problem.tsgo.energy, record.stage(command.export_uai), "c2f-stereo",
+                              interrupts))
+      return interrupts.exit_code();
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);

@@ -257,3 +257,25 @@ TEST_CASE("c2f-stereo --schedule aggregated solves on a level of aggregated best
   CHECK(groups < 48 * 32);
   CHECK_THAT(text.str(), Catch::Contains("level 1: 1536 variables"));
 }
+
+TEST_CASE("c2f-stereo stopped while it exports a large model writes nothing and exits 143",
+          "[stereo][cli][interrupt]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-export-interrupt";
+  std::filesystem::remove_all(dir);
+  // 200x150 pixels and 48 labels: about 2.5 GB of UAI text, several seconds of writing; the
+  // signal comes while it is written (or before, and then the write stops at once).
+  c2f::test::write_synthetic_pair(dir, 200, 150, 2, 6, 5);
+  const auto model = dir / "model.uai";
+  const auto r = c2f::test::run_tool_interrupted(
+      C2F_STEREO_BINARY,
+      (dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
+          (dir / "out").string() + " --labels 48 --export-uai " + model.string(),
+      1.0, SIGTERM);
+  INFO(r.output);
+  CHECK(r.exit_code == 143);
+  CHECK_THAT(r.output, Catch::Contains("c2f-stereo: interrupted by SIGTERM while writing the UAI "
+                                       "model; nothing was written"));
+  CHECK_FALSE(std::filesystem::exists(model));
+  CHECK_FALSE(std::filesystem::exists(dir / "model.uai.c2f-partial"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out" / "summary.txt"));
+}

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+#include <vector>
 
 #include "c2f/core/uai.hpp"
 #include "support/random_models.hpp"
@@ -144,4 +146,27 @@ TEST_CASE("MPE results round-trip and malformed ones are refused", "[uai]") {
   CHECK_THROWS_WITH(refused("MPE\n4 0 0 0\n"), Catch::Contains("unexpected end of file"));
   CHECK_THROWS_WITH(refused("MPE\n4 0 0 0 0 5\n"), Catch::Contains("trailing data"));
   CHECK_THROWS_WITH(refused("MPE\n4 0 x 0 0\n"), Catch::Contains("got 'x'"));
+}
+
+TEST_CASE("a UAI export is sized before it is written", "[uai][limits]") {
+  Rng rng(12);
+  const PairwiseEnergy small = random_grid_energy(rng, 5, 4, 3);
+  std::ostringstream text;
+  write_uai(small, text);
+  // An upper estimate, and not a wild one.
+  CHECK(uai_bytes_estimate(small) >= text.str().size());
+  CHECK(uai_bytes_estimate(small) < 3 * text.str().size());
+
+  // Two variables with a million labels: 10^12 potentials on the edge, about 24 TB, more than
+  // any disk here has free; refused before a byte is written.
+  const int labels = 1'000'000;
+  const PairwiseEnergy huge(2, labels, std::vector<double>(2 * labels, 0.0),
+                            {PairwiseTerm::potts()}, {Edge{0, 1, 1.0, 0}});
+  const auto path = std::filesystem::temp_directory_path() / "c2f-test-huge.uai";
+  std::filesystem::remove(path);
+  CHECK_THROWS_WITH(write_uai_file(huge, path.string()),
+                    Catch::Contains("c2f-test-huge.uai' needs about") &&
+                        Catch::Contains("1000000^2 potentials on 1 edges") &&
+                        Catch::Contains("GB free"));
+  CHECK_FALSE(std::filesystem::exists(path));
 }

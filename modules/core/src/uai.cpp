@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <iterator>
@@ -166,7 +168,7 @@ PairwiseEnergy read_uai_file(const std::string& path) {
   return read_uai(in, path);
 }
 
-void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
+void write_uai(const PairwiseEnergy& energy, std::ostream& out, const std::function<bool()>& stop) {
   const int L = energy.num_labels();
   // Potentials exp(-(cost - the factor's minimum cost)) lie in (0, 1]: any finite costs whose
   // spread within one factor stays below ~708 are written as normal doubles, and every energy
@@ -175,7 +177,10 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   // Tables are written from their costs directly, in two passes (the lowest cost, then the
   // potentials): nothing of size L x L is allocated, whatever the label count.
   char number[40];
+  std::size_t tables = 0;
   auto write_table = [&](std::size_t count, const auto& cost, const std::string& where) {
+    if (stop && ++tables % 1024 == 0 && stop())
+      throw WriteStopped("writing the UAI model stopped before its end");
     double lowest = cost(0);
     for (std::size_t k = 1; k < count; ++k) lowest = std::min(lowest, cost(k));
     out << "\n" << count << "\n";
@@ -214,10 +219,45 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out) {
   }
 }
 
-void write_uai_file(const PairwiseEnergy& energy, const std::string& path) {
+std::uintmax_t uai_bytes_estimate(const PairwiseEnergy& energy) {
+  // Each potential is written with 17 significant digits: at most 23 characters and a
+  // separator; the header and factor scopes are small beside the tables.
+  constexpr std::uintmax_t kBytesPerPotential = 24;
+  const auto labels = static_cast<std::uintmax_t>(energy.num_labels());
+  const auto variables = static_cast<std::uintmax_t>(energy.num_variables());
+  const auto edges = static_cast<std::uintmax_t>(energy.edges().size());
+  return kBytesPerPotential * (variables * labels + edges * labels * labels) +
+         32 * (variables + edges) + 64;
+}
+
+void write_uai_file(const PairwiseEnergy& energy, const std::string& path,
+                    const std::function<bool()>& stop) {
+  // A model of a large image with many labels runs to tens of GB: refuse before writing what
+  // the disk cannot hold (devices and pipes aside).
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path target(path);
+  const bool special = fs::exists(target, error) && !fs::is_regular_file(target, error);
+  if (!special) {
+    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const fs::space_info space = fs::space(folder, error);
+    const std::uintmax_t needed = uai_bytes_estimate(energy);
+    if (!error && needed > space.available) {
+      auto gb = [](std::uintmax_t bytes) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+        return std::string(text);
+      };
+      throw std::runtime_error("writing the UAI model '" + path + "' needs about " + gb(needed) +
+                               " (" + std::to_string(energy.num_labels()) + "^2 potentials on " +
+                               std::to_string(energy.edges().size()) +
+                               " edges), and the disk holding it has " + gb(space.available) +
+                               " free");
+    }
+  }
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot open '" + path + "' for writing");
-  write_uai(energy, out);
+  write_uai(energy, out, stop);
   close_checked(out, path);
 }
 

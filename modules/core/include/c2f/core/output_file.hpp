@@ -2,9 +2,16 @@
 // Writing a file so that a failed write is an error, never a silent success.
 
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace c2f {
+
+/// Thrown by a long write that its caller asked to stop (an interrupt): what was written is
+/// incomplete and must not be used.
+struct WriteStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 /// Flushes and closes a written file stream; throws std::runtime_error naming `what` when any
 /// write failed (a full disk, /dev/full) so that a failed write is never a silent success.

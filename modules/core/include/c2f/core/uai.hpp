@@ -5,6 +5,8 @@
 // other MAP solvers. Costs and potentials are related by cost = -ln(potential).
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <span>
 #include <string>
@@ -32,9 +34,17 @@ PairwiseEnergy read_uai_file(const std::string& path);
 /// the factors' lowest costs: every energy difference is kept (to rounding), whatever the
 /// costs' magnitude. Throws std::invalid_argument when two costs of one factor lie more than
 /// about 708 apart (their potentials' ratio leaves the normal double range).
-void write_uai(const PairwiseEnergy& energy, std::ostream& out);
-/// write_uai to a file; throws std::runtime_error naming the path on failure.
-void write_uai_file(const PairwiseEnergy& energy, const std::string& path);
+/// `stop`, when given, is asked between tables; when it says so the write ends with WriteStopped
+/// (c2f/core/output_file.hpp).
+void write_uai(const PairwiseEnergy& energy, std::ostream& out,
+               const std::function<bool()>& stop = {});
+/// An upper estimate of the bytes write_uai writes for `energy` (its tables dominate:
+/// num_variables * L + num_edges * L^2 potentials).
+std::uintmax_t uai_bytes_estimate(const PairwiseEnergy& energy);
+/// write_uai to a file; throws std::runtime_error naming the path on failure, and before
+/// writing anything when uai_bytes_estimate exceeds the space free on the file's disk.
+void write_uai_file(const PairwiseEnergy& energy, const std::string& path,
+                    const std::function<bool()>& stop = {});
 
 /// Writes a labeling in the UAI competitions' MPE result format: the line "MPE", then one line
 /// with the number of variables followed by each variable's label.

@@ -1,0 +1,22 @@
+#include "model_export.hpp"
+
+#include <cstdio>
+
+#include "c2f/core/output_file.hpp"
+#include "c2f/core/uai.hpp"
+
+namespace c2f::examples {
+
+bool export_uai(const PairwiseEnergy& energy, const std::filesystem::path& staged,
+                const std::string& tool, const InterruptWatch& interrupts) {
+  try {
+    write_uai_file(energy, staged.string(), [&] { return interrupts.interrupted(); });
+    return true;
+  } catch (const WriteStopped&) {
+    std::fprintf(stderr, "%s: interrupted by %s while writing the UAI model; nothing was written\n",
+                 tool.c_str(), interrupts.signal_name().c_str());
+    return false;
+  }
+}
+
+}  // namespace c2f::examples
