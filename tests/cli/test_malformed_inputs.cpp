@@ -74,6 +74,10 @@ struct Inputs {
     write_bytes(dir / "text.png", "not an image\n");
     const std::string png = read_bytes(dir / "left.png");
     write_bytes(dir / "truncated.png", png.substr(0, png.size() / 2));
+    // A PNG header saying 40000x30000 (1.2e9 pixels), and nothing after it.
+    write_bytes(dir / "huge-header.png", std::string("\x89PNG\r\n\x1A\n\0\0\0\x0DIHDR", 16) +
+                                             std::string("\0\0\x9C\x40\0\0\x75\x30", 8) +
+                                             std::string("\x08\x02\0\0\0\0\0\0\0", 9));
 
     const auto seg = c2f::test::write_synthetic_segmentation(dir / "seg", 40, 30, 3);
     cv::Mat white(30, 40, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -202,6 +206,10 @@ std::vector<Case> stereo_cases() {
        2,
        {"left.png' has 3 channels", "expected one channel of 8 or 16 bits"}},
       {"stereo", pair + "--mask {left}", 2, {"a right-view GT or a mask needs the left-view GT"}},
+      {"stereo",
+       "{dir}/huge-header.png {right} -o {out}/stereo",
+       2,
+       {"image '", "huge-header.png' is 40000x30000 pixels, more than the 2^30"}},
       {"stereo",
        "{left} {left} -o {out}/stereo",
        2,

@@ -2,7 +2,14 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -13,11 +20,35 @@ namespace c2f::vision {
 
 namespace {
 
+/// A PNG's size from its header (IHDR), or nullopt when `path` is no PNG.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> png_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[24] = {};
+  if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return std::nullopt;
+  constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (!std::equal(std::begin(kSignature), std::end(kSignature), header)) return std::nullopt;
+  auto big_endian = [&](int at) {
+    return (std::uint32_t{header[at]} << 24) | (std::uint32_t{header[at + 1]} << 16) |
+           (std::uint32_t{header[at + 2]} << 8) | std::uint32_t{header[at + 3]};
+  };
+  return std::pair{big_endian(16), big_endian(20)};
+}
+
 /// The image with its stored depth and channels (`flags` adds to IMREAD_ANYDEPTH; palette
 /// images decode to colour).
 cv::Mat load_as_stored(const std::string& path, int flags) {
   if (const std::string why = why_not_a_file(path); !why.empty())
     throw std::invalid_argument("image '" + path + "' " + why);
+  // OpenCV refuses images of more than 2^30 pixels with a raw message of its own on stderr;
+  // a PNG says its size first, so such a file is refused here by name.
+  constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 30;
+  if (const auto size = png_size(path);
+      size && std::uint64_t{size->first} * size->second > kMaxPixels) {
+    throw std::invalid_argument(
+        "image '" + path + "' is " + std::to_string(size->first) + "x" +
+        std::to_string(size->second) +
+        " pixels, more than the 2^30 (1073741824) pixels an image may have");
+  }
   cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);
   if (image.empty())
     throw std::invalid_argument("image '" + path + "' could not be read as an image");
