@@ -71,7 +71,7 @@ void check_output_paths(const OutputPlan& plan, const std::vector<NamedPath>& in
       }
     }
     const std::string name = name_in(output.path, plan.out_dir);
-    const bool own_default = output.what == "--trace" && name == "trace.csv";
+    const bool own_default = !output.default_name.empty() && name == output.default_name;
     if (!name.empty() && !own_default && owned_by(plan, name)) {
       throw std::invalid_argument(output.what + " '" + output.path + "' is " + name +
                                   ", a file the run writes into '" + plan.out_dir +

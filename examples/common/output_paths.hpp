@@ -10,7 +10,8 @@ namespace c2f::examples {
 /// A path given on the command line, with the name a message uses for it ("--trace", "LEFT").
 struct NamedPath {
   std::string what;
-  std::string path;  ///< empty: not given (skipped)
+  std::string path;               ///< empty: not given (skipped)
+  std::string default_name = {};  ///< an output's own default name in out_dir ("trace.csv")
 };
 
 /// What a run writes: into `out_dir` the files named by `owned` (patterns with a trailing '*'
@@ -25,7 +26,7 @@ struct OutputPlan {
 /// Throws std::invalid_argument naming both paths when a named output is the same file as an
 /// input (after resolving symlinks; by device and inode where both exist), when two named
 /// outputs are one file, when a named output in out_dir takes the name of a file the run writes
-/// there itself (--trace may be out_dir/trace.csv, its default), and when an input lies in
+/// there itself (other than its own default_name), and when an input lies in
 /// out_dir under a name the run writes there. Devices and pipes given as outputs are skipped
 /// (they are written directly).
 void check_output_paths(const OutputPlan& plan, const std::vector<NamedPath>& inputs);

@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
     examples::check_output_paths(
         {command.out_dir,
          owned,
-         {{"--trace", command.trace}, {"--export-uai", command.export_uai}}},
+         {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
         {{"IMAGE", command.files.image},
          {"SEEDS", command.files.seeds},
          {"--gt", command.files.gt}});

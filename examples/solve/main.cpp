@@ -66,8 +66,9 @@ int main(int argc, char** argv) {
     const examples::SolveCommand& command = *parsed;
 
     const std::vector<std::string> owned = {"labeling.mpe", "trace.csv", "summary.txt"};
-    examples::check_output_paths({command.out_dir, owned, {{"--trace", command.trace}}},
-                                 {{"MODEL", command.model}});
+    examples::check_output_paths(
+        {command.out_dir, owned, {{"--trace", command.trace, "trace.csv"}}},
+        {{"MODEL", command.model}});
     const TimedModel model = read_model(command);
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());

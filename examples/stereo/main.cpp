@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     examples::check_output_paths(
         {command.out_dir,
          owned,
-         {{"--trace", command.trace}, {"--export-uai", command.export_uai}}},
+         {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
         {{"LEFT", command.pair.left},
          {"RIGHT", command.pair.right},
          {"--gt", command.pair.gt},
