@@ -7,14 +7,15 @@
 
 namespace c2f::examples {
 
-bool export_uai(const PairwiseEnergy& energy, const std::filesystem::path& staged,
-                const std::string& tool, const InterruptWatch& interrupts) {
+bool export_uai(const PairwiseEnergy& energy, const std::string& path, RunRecord& record,
+                const InterruptWatch& interrupts) {
+  if (path.empty()) return true;
   try {
-    write_uai_file(energy, staged.string(), [&] { return interrupts.interrupted(); });
+    write_uai_file(energy, record.stage(path).string(), [&] { return interrupts.interrupted(); });
     return true;
   } catch (const WriteStopped&) {
     std::fprintf(stderr, "%s: interrupted by %s while writing the UAI model; nothing was written\n",
-                 tool.c_str(), interrupts.signal_name().c_str());
+                 record.tool().c_str(), interrupts.signal_name().c_str());
     return false;
   }
 }

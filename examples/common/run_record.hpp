@@ -35,6 +35,9 @@ class RunRecord {
   Observer observer(TraceWriter::ErrorFunction error, const InterruptWatch& interrupts,
                     std::vector<Observer> extra = {});
 
+  /// The tool's name, as its messages begin.
+  [[nodiscard]] const std::string& tool() const noexcept { return tool_; }
+
   /// Closes the trace (a failed write is an error naming it) and moves every output into place.
   void commit();
 

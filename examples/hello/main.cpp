@@ -11,10 +11,10 @@
 #include "c2f/lift/partition_list.hpp"          // c2f::lift
 #include "c2f/lift/schedule_provider.hpp"
 
-int main() {
-  // A 160x120 image of 16 grey levels (a bright square on a ramp) seen through noise.
-  const std::size_t width = 160, height = 120;
-  const int labels = 16;
+/// A width x height image of `labels` grey levels (a bright square on a ramp) seen through
+/// noise, as an energy: squared distance to the observed value per pixel and label, plus a
+/// truncated-linear term between 4-neighbours.
+c2f::PairwiseEnergy noisy_image_energy(std::size_t width, std::size_t height, int labels) {
   std::mt19937 rng(1);
   std::normal_distribution<double> noise(0.0, 3.0);
   std::vector<double> unaries(width * height * labels);  // unaries[v * labels + l]
@@ -28,27 +28,30 @@ int main() {
       }
     }
   }
-  // Unaries plus a truncated-linear term between 4-neighbours: the energy to minimise.
-  const c2f::PairwiseEnergy energy =
-      c2f::make_grid_energy({width, height}, c2f::Connectivity::four, labels, std::move(unaries),
-                            c2f::PairwiseTerm::truncated_linear(3.0),
-                            [](c2f::VariableIndex, c2f::VariableIndex) { return 4.0; });
+  return c2f::make_grid_energy({width, height}, c2f::Connectivity::four, labels, std::move(unaries),
+                               c2f::PairwiseTerm::truncated_linear(3.0),
+                               [](c2f::VariableIndex, c2f::VariableIndex) { return 4.0; });
+}
 
+void print(const char* name, const c2f::Summary& summary) {
+  std::printf("%-15s energy %.1f in %.3f s (%ld steps, %zu levels)\n", name, summary.energy,
+              summary.seconds, summary.total_steps, summary.levels.size());
+}
+
+int main() {
+  const std::size_t width = 160, height = 120;
+  const c2f::PairwiseEnergy energy = noisy_image_energy(width, height, 16);
   c2f::ExpansionSolver<> solver;  // alpha-expansion; any AnytimeSolver fits here
   c2f::Options options;           // coarse levels: 4 quiet steps; the original: until converged
 
   // Flat: the solver on the original problem only (no levels).
   c2f::PartitionList no_levels;
-  const c2f::Summary flat = c2f::coarse_to_fine(energy, no_levels, solver, options);
+  print("flat:", c2f::coarse_to_fine(energy, no_levels, solver, options));
 
   // Coarse to fine: colour-passing levels CP(1,1), CP(2,1), CP(3,1), then the original problem.
   c2f::ScheduleProvider levels(c2f::Schedule::parse("cp:1,1 cp:2,1 cp:3,1 flat"), {width, height});
-  const c2f::Summary c2f_run = c2f::coarse_to_fine(energy, levels, solver, options);
-
-  std::printf("flat:           energy %.1f in %.3f s (%ld steps)\n", flat.energy, flat.seconds,
-              flat.total_steps);
-  std::printf("coarse to fine: energy %.1f in %.3f s (%ld steps, %zu levels)\n", c2f_run.energy,
-              c2f_run.seconds, c2f_run.total_steps, c2f_run.levels.size());
+  const c2f::Summary summary = c2f::coarse_to_fine(energy, levels, solver, options);
+  print("coarse to fine:", summary);
   // A summary's energy is the energy of its labeling on the original problem.
-  return c2f_run.energy == energy.evaluate(c2f_run.labeling) ? 0 : 1;
+  return summary.energy == energy.evaluate(summary.labeling) ? 0 : 1;
 }

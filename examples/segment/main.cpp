@@ -42,6 +42,19 @@ TimedProblem build_problem(const SegmentationScene& scene,
   return {std::move(problem), seconds};
 }
 
+/// The files a run writes into its output folder (a trailing '*' matches any rest).
+const std::vector<std::string> kOutputs = {"labels.png", "overlay.png", "trace.csv", "summary.txt",
+                                           "partition-level*.png"};
+
+/// Before anything is read: no output over an input or over another output.
+void check_paths(const examples::SegmentCommand& command) {
+  examples::check_output_paths(
+      {command.out_dir,
+       kOutputs,
+       {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
+      {{"IMAGE", command.files.image}, {"SEEDS", command.files.seeds}, {"--gt", command.files.gt}});
+}
+
 Schedule schedule_for(const examples::SegmentCommand& command, const SegmentationScene& scene) {
   const int num_labels = scene.num_labels();
   try {
@@ -129,26 +142,17 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
 
-    const std::vector<std::string> owned = {"labels.png", "overlay.png", "trace.csv", "summary.txt",
-                                            "partition-level*.png"};
-    examples::check_output_paths(
-        {command.out_dir,
-         owned,
-         {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
-        {{"IMAGE", command.files.image},
-         {"SEEDS", command.files.seeds},
-         {"--gt", command.files.gt}});
+    check_paths(command);
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
     const Schedule schedule = schedule_for(command, scene);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-segment", command.quiet);
+    examples::RunRecord record(command.out_dir, kOutputs, command.trace, "c2f-segment",
+                               command.quiet);
     const TimedProblem built = build_problem(scene, command);
     // The Potts model as UAI, staged with the other outputs (it lands only if the run does).
-    if (!command.export_uai.empty() &&
-        !examples::export_uai(built.problem.potts, record.stage(command.export_uai), "c2f-segment",
-                              interrupts))
+    if (!examples::export_uai(built.problem.potts, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));

@@ -24,13 +24,39 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+/// The files a run writes into its output folder (a trailing '*' matches any rest).
+const std::vector<std::string> kOutputs = {
+    "disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
+    "trace.csv",     "summary.txt",   "partition-level*.png"};
+
+/// Before anything is read: no output over an input or over another output.
+void check_paths(const examples::StereoCommand& command) {
+  examples::check_output_paths(
+      {command.out_dir,
+       kOutputs,
+       {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
+      {{"LEFT", command.pair.left},
+       {"RIGHT", command.pair.right},
+       {"--gt", command.pair.gt},
+       {"--gt-right", command.pair.gt_right},
+       {"--mask", command.pair.mask}});
+}
+
+/// The scene the command names, downscaled, with the schedule checked against its size.
 StereoScene load_input(const examples::StereoCommand& command) {
-  if (command.scene.empty()) return downscale(load_stereo_pair(command.pair), command.downscale);
-  try {
-    return downscale(load_named_scene(command.data, command.scene), command.downscale);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(std::string("--scene: ") + error.what());
+  StereoScene scene;
+  if (command.scene.empty()) {
+    scene = downscale(load_stereo_pair(command.pair), command.downscale);
+  } else {
+    try {
+      scene = downscale(load_named_scene(command.data, command.scene), command.downscale);
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument(std::string("--scene: ") + error.what());
+    }
   }
+  if (const std::string problem = command.schedule.validate_image(scene.shape()); !problem.empty())
+    throw std::invalid_argument("--schedule: " + command.schedule.to_string() + ": " + problem);
+  return scene;
 }
 
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
@@ -121,32 +147,16 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::StereoCommand& command = *parsed;
 
-    const std::vector<std::string> owned = {
-        "disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
-        "trace.csv",     "summary.txt",   "partition-level*.png"};
-    examples::check_output_paths(
-        {command.out_dir,
-         owned,
-         {{"--trace", command.trace, "trace.csv"}, {"--export-uai", command.export_uai}}},
-        {{"LEFT", command.pair.left},
-         {"RIGHT", command.pair.right},
-         {"--gt", command.pair.gt},
-         {"--gt-right", command.pair.gt_right},
-         {"--mask", command.pair.mask}});
+    check_paths(command);
     const StereoScene scene = load_input(command);
-    if (const std::string problem = command.schedule.validate_image(scene.shape());
-        !problem.empty()) {
-      throw std::invalid_argument("--schedule: " + command.schedule.to_string() + ": " + problem);
-    }
     // Outputs are staged and moved into place together at the end: a failed or crashed run
     // leaves an earlier run's files as they were.
-    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-stereo", command.quiet);
+    examples::RunRecord record(command.out_dir, kOutputs, command.trace, "c2f-stereo",
+                               command.quiet);
     announce(command, scene);
     const StereoProblem problem = build_problem(command, scene);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
-    if (!command.export_uai.empty() &&
-        !examples::export_uai(problem.tsgo.energy, record.stage(command.export_uai), "c2f-stereo",
-                              interrupts))
+    if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
