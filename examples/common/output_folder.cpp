@@ -14,9 +14,7 @@
 
 namespace c2f::examples {
 
-namespace {
-
-bool matches(const std::string& pattern, const std::string& name) {
+bool name_matches(const std::string& pattern, const std::string& name) {
   if (!pattern.empty() && pattern.back() == '*') {
     const std::string prefix = pattern.substr(0, pattern.size() - 1);
     return name.compare(0, prefix.size(), prefix) == 0;
@@ -29,8 +27,6 @@ bool matches(const std::string& pattern, const std::string& name) {
          name.compare(0, prefix.size(), prefix) == 0 &&
          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
-
-}  // namespace
 
 OutputFolder::OutputFolder(const std::filesystem::path& folder, std::vector<std::string> owned)
     : folder_(folder), owned_(std::move(owned)) {
@@ -86,7 +82,7 @@ std::filesystem::path OutputFolder::stage(const std::filesystem::path& target) {
 
 bool OutputFolder::owns(const std::string& name) const {
   for (const std::string& pattern : owned_)
-    if (matches(pattern, name)) return true;
+    if (name_matches(pattern, name)) return true;
   return false;
 }
 

@@ -18,6 +18,10 @@ namespace c2f::examples {
 /// that are not owned are never touched. Without commit() (an exception, a crash) the output
 /// folder keeps what it held before; the destructor removes the staging folder, and the output
 /// folder too when this run created it and it is empty.
+/// Whether the file name `name` matches `pattern`, where one '*' matches any run of characters
+/// ("partition-level*.png" matches "partition-level3.png").
+bool name_matches(const std::string& pattern, const std::string& name);
+
 class OutputFolder {
  public:
   /// Creates the output folder if needed and a staging folder inside it (removing staging

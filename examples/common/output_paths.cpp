@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "output_folder.hpp"
+
 namespace c2f::examples {
 
 namespace fs = std::filesystem;
@@ -26,12 +28,6 @@ bool same_file(const std::string& a, const std::string& b) {
   return resolved(a) == resolved(b);
 }
 
-bool matches(const std::string& pattern, const std::string& name) {
-  if (!pattern.empty() && pattern.back() == '*')
-    return name.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
-  return name == pattern;
-}
-
 /// The name of `path` when it lies directly in `folder`, else empty.
 std::string name_in(const std::string& path, const std::string& folder) {
   const fs::path target = resolved(path);
@@ -40,7 +36,7 @@ std::string name_in(const std::string& path, const std::string& folder) {
 
 bool owned_by(const OutputPlan& plan, const std::string& name) {
   for (const std::string& pattern : plan.owned)
-    if (matches(pattern, name)) return true;
+    if (name_matches(pattern, name)) return true;
   return false;
 }
 

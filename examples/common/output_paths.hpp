@@ -14,8 +14,8 @@ struct NamedPath {
   std::string default_name = {};  ///< an output's own default name in out_dir ("trace.csv")
 };
 
-/// What a run writes: into `out_dir` the files named by `owned` (patterns with a trailing '*'
-/// as OutputFolder takes them), and the outputs the user named (`named`, e.g. --trace,
+/// What a run writes: into `out_dir` the files named by `owned` (patterns with one '*', as
+/// OutputFolder takes them: name_matches), and the outputs the user named (`named`, e.g. --trace,
 /// --export-uai), which may lie anywhere.
 struct OutputPlan {
   std::string out_dir;

@@ -42,7 +42,7 @@ TimedProblem build_problem(const SegmentationScene& scene,
   return {std::move(problem), seconds};
 }
 
-/// The files a run writes into its output folder (a trailing '*' matches any rest).
+/// The files a run writes into its output folder ('*' matches any run of characters).
 const std::vector<std::string> kOutputs = {"labels.png", "overlay.png", "trace.csv", "summary.txt",
                                            "partition-level*.png"};
 

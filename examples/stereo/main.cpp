@@ -24,7 +24,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-/// The files a run writes into its output folder (a trailing '*' matches any rest).
+/// The files a run writes into its output folder ('*' matches any run of characters).
 const std::vector<std::string> kOutputs = {
     "disparity.pfm", "disparity.png", "disparity-colour.png", "error.png",
     "trace.csv",     "summary.txt",   "partition-level*.png"};
