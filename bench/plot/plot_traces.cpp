@@ -22,7 +22,7 @@
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/output_file.hpp"
 #include "c2f/core/text_input.hpp"
-#include "output_folder.hpp"
+#include "staged_file.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -103,10 +103,8 @@ std::string format(double v) {
 void write_plot(const cv::Mat& plot, const std::filesystem::path& out) {
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", plot, png)) throw std::runtime_error("cannot encode the plot as PNG");
-  const std::filesystem::path folder = out.has_parent_path() ? out.parent_path() : ".";
-  c2f::examples::OutputFolder output(folder, {out.filename().string()});
-  const std::filesystem::path staged = output.stage(out);
-  std::ofstream file(staged, std::ios::binary);
+  c2f::examples::StagedFile output(out);
+  std::ofstream file(output.path(), std::ios::binary);
   if (!file) throw std::runtime_error("cannot write '" + out.string() + "'");
   file.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   c2f::close_checked(file, "'" + out.string() + "'");

@@ -161,7 +161,8 @@ int run_image(const std::string& set, const std::string& name, const std::string
         std::find(selected.begin(), selected.end(), config.name) != selected.end())
       traces.push_back(name + "-" + config.name + ".csv");
   }
-  examples::OutputFolder output(out, traces);
+  examples::OutputFolder output(out, "c2f-bench-segment", traces,
+                                examples::OutputFolder::Sharing::by_files);
   if (header) {
     for (std::size_t i = 0; i < std::size(kColumns); ++i)
       std::printf("%s%s", i ? "\t" : "", kColumns[i]);

@@ -143,7 +143,8 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
-  examples::OutputFolder output(out, {name + "-flat.csv", name + "-c2f.csv"});
+  examples::OutputFolder output(out, "c2f-bench-stereo", {name + "-flat.csv", name + "-c2f.csv"},
+                                examples::OutputFolder::Sharing::by_files);
   auto solve_with = [&](const std::string& schedule, int near_radius, bool shift_moves,
                         const std::string& trace) {
     return solve(problem, scene, schedule, near_radius, shift_moves, settings,

@@ -11,7 +11,8 @@ bool export_uai(const PairwiseEnergy& energy, const std::string& path, RunRecord
                 const InterruptWatch& interrupts) {
   if (path.empty()) return true;
   try {
-    write_uai_file(energy, record.stage(path).string(), [&] { return interrupts.interrupted(); });
+    write_uai_file(energy, record.stage(path, "--export-uai").string(),
+                   [&] { return interrupts.interrupted(); });
     return true;
   } catch (const WriteStopped&) {
     std::fprintf(stderr, "%s: interrupted by %s while writing the UAI model; nothing was written\n",

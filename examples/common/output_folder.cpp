@@ -1,18 +1,55 @@
 #include "output_folder.hpp"
 
-#include "c2f/core/number_text.hpp"
-
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
-#include <optional>
 
-#include <fstream>
 #include <stdexcept>
 #include <system_error>
 
+#include "c2f/core/number_text.hpp"
+#include "folder_swap.hpp"
+#include "staged_paths.hpp"
+
 namespace c2f::examples {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Sibling folders of `folder` that runs on it use: ".NAME.c2f-staging-PID-N" while a run
+/// writes, ".NAME.c2f-retired-PID-N" for the old version during a fallback commit (N counts the
+/// OutputFolders of one process).
+std::string sibling_prefix(const fs::path& folder, const std::string& kind) {
+  return "." + folder.filename().string() + ".c2f-" + kind + "-";
+}
+
+fs::path sibling(const fs::path& folder, const std::string& kind, int number) {
+  return folder.parent_path() /
+         (sibling_prefix(folder, kind) + std::to_string(::getpid()) + "-" + std::to_string(number));
+}
+
+std::atomic<int> folders_opened{0};
+
+/// Staging folders that runs of earlier versions created inside the output folder.
+bool legacy_staging(const std::string& name) {
+  return name.rfind(".c2f-staging-", 0) == 0;
+}
+
+/// Whether `inner` is `outer` or lies inside it (both absolute and normal).
+bool within(const fs::path& inner, const fs::path& outer) {
+  const fs::path relative = inner.lexically_relative(outer);
+  return !relative.empty() && *relative.begin() != "..";
+}
+
+[[noreturn]] void refuse(const fs::path& folder, const std::string& why) {
+  throw std::runtime_error("the output folder '" + folder.string() + "' " + why);
+}
+
+}  // namespace
 
 bool name_matches(const std::string& pattern, const std::string& name) {
   if (!pattern.empty() && pattern.back() == '*') {
@@ -28,56 +65,101 @@ bool name_matches(const std::string& pattern, const std::string& name) {
          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-OutputFolder::OutputFolder(const std::filesystem::path& folder, std::vector<std::string> owned)
-    : folder_(folder), owned_(std::move(owned)) {
+OutputFolder::OutputFolder(const fs::path& folder, const std::string& tool,
+                           std::vector<std::string> owned, Sharing sharing)
+    : tool_(tool), owned_(std::move(owned)), sharing_(sharing) {
   std::error_code error;
-  created_ = !std::filesystem::exists(folder_, error);
-  std::filesystem::create_directories(folder_, error);
-  if (error || !std::filesystem::is_directory(folder_)) {
-    throw std::runtime_error("cannot create the output folder '" + folder_.string() +
-                             "': " + (error ? error.message() : "not a folder"));
+  folder_ = fs::weakly_canonical(fs::absolute(folder), error);
+  if (error) folder_ = fs::absolute(folder).lexically_normal();
+  if (folder_.filename().empty()) folder_ = folder_.parent_path();  // "out/" names "out"
+  if (folder_ == folder_.root_path()) refuse(folder, "is the root folder: give a folder in it");
+  const fs::path current = fs::weakly_canonical(fs::current_path(error), error);
+  if (!error && within(current, folder_)) {
+    refuse(folder,
+           "is the current folder or holds it: a run replaces its output folder as a "
+           "whole; give a folder inside it");
   }
-  // Staging folders of runs that were killed (their process is gone) are left-overs.
-  const std::string prefix = ".c2f-staging-";
-  for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
-    const std::optional<long long> pid = parse_integer(name.substr(prefix.size()));
-    if (pid && *pid > 0 && kill(static_cast<pid_t>(*pid), 0) == -1 && errno == ESRCH) {
-      std::error_code ignored;
-      std::filesystem::remove_all(entry.path(), ignored);
-    }
+  const int number = folders_opened++;
+  staging_ = sibling(folder_, "staging", number);
+  retired_ = sibling(folder_, "retired", number);
+  // A run killed between the two renames of a fallback commit left no folder, only the old one
+  // aside: it is put back before anything else.
+  const std::string retired_prefix = sibling_prefix(folder_, "retired");
+  for (const auto& entry : fs::directory_iterator(folder_.parent_path(), error)) {
+    if (entry.path().filename().string().rfind(retired_prefix, 0) == 0)
+      restore_retired_folder(entry.path(), folder_);
   }
-  staging_ = folder_ / (prefix + std::to_string(getpid()));
-  std::filesystem::remove_all(staging_, error);
-  std::filesystem::create_directory(staging_, error);
+  claim_.emplace(folder_, tool, sharing_ == Sharing::by_files);
+  created_ = claim_->created();
+  marked_ = claim_->marked();
+  struct stat inner {};
+  struct stat outer {};
+  if (::stat(folder_.c_str(), &inner) == 0 && ::stat(folder_.parent_path().c_str(), &outer) == 0 &&
+      inner.st_dev != outer.st_dev) {
+    refuse(folder,
+           "is a mount point: a run replaces its output folder as a whole; give a "
+           "folder inside it");
+  }
+  remove_stale_siblings();
+  check_carriable(folder_, [this](const std::string& name) { return keeps(name); });
+  fs::create_directory(staging_, error);
   if (error) {
-    throw std::runtime_error("cannot create a staging folder in '" + folder_.string() +
-                             "': " + error.message());
+    refuse(folder, "cannot have its new version staged beside it ('" + staging_.string() +
+                       "'): " + error.message());
   }
+  note_staged_path(staging_.string(), folder_.string());
+  if (sharing_ == Sharing::by_files) claim_.reset();  // taken again to commit
 }
 
 OutputFolder::~OutputFolder() {
   std::error_code ignored;
-  std::filesystem::remove_all(staging_, ignored);
-  if (!committed_) {
-    for (const auto& [partial, target] : elsewhere_) std::filesystem::remove(partial, ignored);
-    // A folder this run created and did not fill goes again (remove() leaves a non-empty one).
-    if (created_) std::filesystem::remove(folder_, ignored);
-  }
+  fs::remove_all(staging_, ignored);
+  if (committed_ || sharing_ == Sharing::by_files) return;
+  // A folder this run created, or a marker it added to an empty folder, goes again.
+  if (marked_) fs::remove(folder_ / FolderClaim::kMarker, ignored);
+  if (created_) fs::remove(folder_, ignored);  // remove() leaves a non-empty folder
 }
 
-std::filesystem::path OutputFolder::stage(const std::filesystem::path& target) {
+void OutputFolder::remove_stale_siblings() const {
+  // Staging and retired folders of this folder whose process is gone are from runs that were
+  // killed (runs sharing the folder stage at the same time, each in its own).
   std::error_code error;
-  const auto parent = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  if (std::filesystem::equivalent(parent, folder_, error)) return staging_ / target.filename();
-  // A device or pipe (/dev/stdout, /dev/full) is written directly: it cannot be replaced.
-  const auto status = std::filesystem::status(target, error);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) return target;
-  std::filesystem::path partial = target;
-  partial += ".c2f-partial";
-  elsewhere_.emplace_back(partial, target);
-  return partial;
+  std::vector<fs::path> stale;
+  for (const char* kind : {"staging", "retired"}) {
+    const std::string prefix = sibling_prefix(folder_, kind);
+    for (const auto& entry : fs::directory_iterator(folder_.parent_path(), error)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(prefix, 0) != 0) continue;
+      const std::string process =
+          name.substr(prefix.size(), name.find('-', prefix.size()) - prefix.size());
+      const std::optional<long long> pid = parse_integer(process);
+      const bool gone =
+          pid && *pid > 0 && ::kill(static_cast<pid_t>(*pid), 0) == -1 && errno == ESRCH;
+      if (gone) stale.push_back(entry.path());
+    }
+  }
+  for (const auto& entry : fs::directory_iterator(folder_, error)) {
+    if (legacy_staging(entry.path().filename().string())) stale.push_back(entry.path());
+  }
+  for (const fs::path& path : stale) fs::remove_all(path, error);
+}
+
+fs::path OutputFolder::stage(const fs::path& target) {
+  std::error_code error;
+  const fs::file_status status = fs::status(target, error);
+  const bool special = fs::exists(status) && !fs::is_regular_file(status);
+  if (!special) {
+    fs::path resolved = fs::weakly_canonical(fs::absolute(target), error);
+    if (error) resolved = fs::absolute(target).lexically_normal();
+    if (resolved.parent_path() == folder_) return staging_ / resolved.filename();
+    if (within(resolved, folder_)) {
+      throw std::invalid_argument(
+          "'" + target.string() + "' lies in a folder inside the output folder '" +
+          folder_.string() + "': name a file directly in it, or outside it");
+    }
+  }
+  elsewhere_.emplace_back(target);
+  return elsewhere_.back().path();
 }
 
 bool OutputFolder::owns(const std::string& name) const {
@@ -86,38 +168,24 @@ bool OutputFolder::owns(const std::string& name) const {
   return false;
 }
 
+bool OutputFolder::keeps(const std::string& name) const {
+  return !owns(name) && !legacy_staging(name);
+}
+
 std::vector<std::string> OutputFolder::commit() {
   if (committed_) throw std::logic_error("OutputFolder::commit: already committed");
+  if (!claim_) claim_.emplace(folder_, tool_, true);  // a shared folder: wait for its lock
   std::vector<std::string> written;
-  for (const auto& entry : std::filesystem::directory_iterator(staging_)) {
-    if (entry.is_regular_file()) written.push_back(entry.path().filename().string());
+  for (const auto& entry : fs::directory_iterator(staging_)) {
+    written.push_back(entry.path().filename().string());
   }
-  for (const std::string& name : written) {
-    std::error_code error;
-    std::filesystem::rename(staging_ / name, folder_ / name, error);
-    if (error) {
-      throw std::runtime_error("cannot move '" + name + "' into '" + folder_.string() +
-                               "': " + error.message());
-    }
-  }
-  for (const auto& [partial, target] : elsewhere_) {
-    std::error_code error;
-    std::filesystem::rename(partial, target, error);
-    if (error) {
-      throw std::runtime_error("cannot move '" + partial.string() + "' to '" + target.string() +
-                               "': " + error.message());
-    }
-  }
-  for (const auto& entry : std::filesystem::directory_iterator(folder_)) {
-    if (!entry.is_regular_file()) continue;
-    const std::string name = entry.path().filename().string();
-    if (!owns(name)) continue;
-    bool fresh = false;
-    for (const std::string& w : written) fresh = fresh || w == name;
-    std::error_code ignored;
-    if (!fresh) std::filesystem::remove(entry.path(), ignored);
-  }
-  committed_ = true;
+  carry_over(folder_, staging_, [this](const std::string& name) { return keeps(name); });
+  swap_in(staging_, folder_, retired_);
+  committed_ = true;  // from here on the new version is in place
+  std::error_code ignored;
+  fs::remove_all(staging_, ignored);  // the old version
+  for (StagedFile& file : elsewhere_) file.commit();
+  if (sharing_ == Sharing::by_files) claim_.reset();  // the next run sharing the folder may commit
   return written;
 }
 

@@ -1,33 +1,50 @@
 #pragma once
-// A run's output files land together or not at all: everything is written into a staging folder
-// inside the output folder and moved into place only when the run has finished writing.
+// A run's output folder changes in one step or not at all: the run writes a new version of the
+// folder beside it and exchanges the two with one rename, so any interruption (an error, a
+// signal, SIGKILL) leaves either the earlier run's folder or this run's, never a mix.
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "folder_claim.hpp"
+#include "staged_file.hpp"
 
 namespace c2f::examples {
 
-/// The output folder of one run. Writers write into staging() (a fresh hidden folder inside
-/// the output folder, so that moving files out of it is a rename on the same file system);
-/// commit() then moves every staged file into the output folder, replacing files of the same
-/// name, and removes the files of earlier runs that this run owns but did not write (names
-/// matching `owned`, where a trailing '*' matches any rest: "partition-level*.png"). Files
-/// that are not owned are never touched. Without commit() (an exception, a crash) the output
-/// folder keeps what it held before; the destructor removes the staging folder, and the output
-/// folder too when this run created it and it is empty.
 /// Whether the file name `name` matches `pattern`, where one '*' matches any run of characters
 /// ("partition-level*.png" matches "partition-level3.png").
 bool name_matches(const std::string& pattern, const std::string& name);
 
+/// The output folder of one run of `tool`, which writes the files named by `owned` (patterns
+/// for name_matches).
+///
+/// - Ownership: the folder is claimed (FolderClaim): created with a marker naming the tool, or
+///   an existing folder holding that tool's marker, or an empty one; any other is refused.
+/// - One run at a time: the claim's lock is held until the OutputFolder ends; a second run on
+///   the folder is refused, naming the first. Runs that write disjoint files into one folder
+///   (a benchmark's scenes, run in parallel) share it instead (Sharing::by_files): each holds
+///   the lock only to claim the folder and, waiting for it, to commit.
+/// - One commit: writers write into staging(), a sibling folder ".NAME.c2f-staging-PID".
+///   commit() carries into it, as hard links, every entry of the old folder this run does not
+///   own (the user's files, the marker) and exchanges the two folders (folder_swap.hpp). Files
+///   of earlier runs that this run owns and did not write are thereby gone; no other file is
+///   touched.
+/// - Without commit() (an exception, a crash) the folder is as it was before; the destructor
+///   removes the staging folder, and the folder too when this run created it.
 class OutputFolder {
  public:
-  /// Creates the output folder if needed and a staging folder inside it (removing staging
-  /// folders that killed runs left behind). Throws std::runtime_error naming the folder when
-  /// either cannot be created.
-  OutputFolder(const std::filesystem::path& folder, std::vector<std::string> owned);
+  enum class Sharing { none, by_files };
+
+  /// Claims `folder` (symbolic links resolved) and creates the staging folder beside it, after
+  /// putting back a folder that a run killed in the middle of a fallback commit left aside and
+  /// removing staging folders of killed runs. Throws std::runtime_error naming the folder when
+  /// it is refused (FolderClaim), is the current folder or holds it, is a mount point, holds an
+  /// entry that could not be kept (a FIFO, socket or device), or when the staging folder cannot
+  /// be created.
+  OutputFolder(const std::filesystem::path& folder, const std::string& tool,
+               std::vector<std::string> owned, Sharing sharing = Sharing::none);
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -35,27 +52,34 @@ class OutputFolder {
   [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
   [[nodiscard]] const std::filesystem::path& staging() const noexcept { return staging_; }
 
-  /// Where to write `target`: staging() / its name when it lies in the output folder; target
-  /// itself when it is an existing device or pipe (/dev/stdout); else a partial file beside it
-  /// ("NAME.c2f-partial"), which commit() renames to target.
+  /// Where to write `target`: staging() / its name when it lies in the output folder; else a
+  /// StagedFile's path (beside the target until commit(), or the target itself for a device or
+  /// a pipe). Throws std::invalid_argument naming the target when it lies in a subfolder of the
+  /// output folder, or when StagedFile refuses it.
   std::filesystem::path stage(const std::filesystem::path& target);
 
-  /// Moves the staged files into place and removes stale owned files; returns the names
-  /// moved into the output folder. Throws std::runtime_error naming the file when a move
-  /// fails.
+  /// Puts the new version of the folder in place, then the outputs staged elsewhere; returns the
+  /// names written into the folder. Throws std::runtime_error naming the folder or file.
   std::vector<std::string> commit();
 
   /// Whether `name` matches one of the owned patterns.
   [[nodiscard]] bool owns(const std::string& name) const;
 
  private:
+  [[nodiscard]] bool keeps(const std::string& name) const;
+  void remove_stale_siblings() const;
+
   std::filesystem::path folder_;
   std::filesystem::path staging_;
+  std::filesystem::path retired_;
+  std::string tool_;
   std::vector<std::string> owned_;
-  std::vector<std::pair<std::filesystem::path, std::filesystem::path>>
-      elsewhere_;  // partial, target
+  Sharing sharing_;
+  std::optional<FolderClaim> claim_;
+  bool created_ = false;  ///< the claim created the folder
+  bool marked_ = false;   ///< the claim created the folder's marker
+  std::vector<StagedFile> elsewhere_;
   bool committed_ = false;
-  bool created_ = false;  ///< the folder did not exist before this run
 };
 
 }  // namespace c2f::examples

@@ -49,6 +49,11 @@ void check_output_paths(const OutputPlan& plan, const std::vector<NamedPath>& in
     // Devices and pipes (/dev/stdout) are written directly and may be shared.
     std::error_code error;
     const auto status = fs::status(output.path, error);
+    if (fs::is_directory(status) || fs::is_socket(status)) {
+      throw std::invalid_argument(output.what + " '" + output.path + "' is a " +
+                                  (fs::is_socket(status) ? "socket" : "folder") +
+                                  ", not a file: give a file's path");
+    }
     const bool special =
         !error && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
     if (special) continue;

@@ -9,11 +9,20 @@
 
 namespace c2f::examples {
 
+std::filesystem::path staged_output(OutputFolder& output, const std::filesystem::path& target,
+                                    const std::string& flag) {
+  try {
+    return output.stage(target);
+  } catch (const std::invalid_argument& refused) {
+    throw std::invalid_argument(flag + ": " + refused.what());
+  }
+}
+
 RunRecord::RunRecord(const std::filesystem::path& folder, std::vector<std::string> owned,
                      const std::string& trace_path, std::string tool, bool quiet)
-    : output_(folder, std::move(owned)),
+    : output_(folder, tool, std::move(owned)),
       trace_name_("the trace '" + trace_path + "'"),
-      trace_file_(open_trace_file(output_.stage(trace_path).string())),
+      trace_file_(open_trace_file(staged_output(output_, trace_path, "--trace").string())),
       tool_(std::move(tool)),
       quiet_(quiet) {}
 

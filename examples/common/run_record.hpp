@@ -15,6 +15,10 @@
 
 namespace c2f::examples {
 
+/// output.stage(target), with a refusal's message beginning with the flag that named the target.
+std::filesystem::path staged_output(OutputFolder& output, const std::filesystem::path& target,
+                                    const std::string& flag);
+
 class RunRecord {
  public:
   /// Opens the output folder (OutputFolder with the files the tool owns) and the trace, staged
@@ -27,7 +31,10 @@ class RunRecord {
 
   /// Where to write an output the user named (OutputFolder::stage): in the staging folder when
   /// it lies in the output folder, beside its target until commit() otherwise.
-  std::filesystem::path stage(const std::filesystem::path& target) { return output_.stage(target); }
+  /// A refusal's message begins with `flag`.
+  std::filesystem::path stage(const std::filesystem::path& target, const std::string& flag) {
+    return staged_output(output_, target, flag);
+  }
 
   /// The run's observer: a trace row per step (with an error column when `error` is given),
   /// progress on stderr unless quiet, `extra` observers, and a stop once `interrupts` caught a

@@ -13,6 +13,7 @@
 
 #include "c2f/core/input_file.hpp"
 #include "c2f/core/number_text.hpp"
+#include "staged_paths.hpp"
 
 namespace po = boost::program_options;
 
@@ -103,10 +104,10 @@ int run_tool(const char* tool, const std::function<int()>& body) {
     }
     return code;
   } catch (const std::invalid_argument& error) {
-    std::cerr << tool << ": error: " << error.what() << "\n";
+    std::cerr << tool << ": error: " << with_target_paths(error.what()) << "\n";
     return 2;
   } catch (const std::exception& error) {
-    std::cerr << tool << ": error: " << error.what() << "\n";
+    std::cerr << tool << ": error: " << with_target_paths(error.what()) << "\n";
     return 1;
   }
 }

@@ -54,7 +54,7 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
 std::optional<examples::OutputFolder> open_outputs(const std::string& out_dir) {
   if (out_dir.empty()) return std::nullopt;
   return std::optional<examples::OutputFolder>(
-      std::in_place, out_dir,
+      std::in_place, out_dir, "c2f-synthetic",
       std::vector<std::string>{"trace-flat.csv", "trace-c2f.csv", "truth.pgm", "flat.pgm",
                                "c2f.pgm"});
 }

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -107,6 +109,13 @@ struct Inputs {
       fs::create_directories(dir / name);
       write_bytes(dir / name / "scenes.csv", header + rows);
     };
+    // A user's own folder, and a FIFO nobody reads.
+    fs::create_directories(dir / "out" / "users");
+    write_bytes(dir / "out" / "users" / "error.png", "the user's own picture");
+    fs::create_directories(dir / "out" / "empty");
+    const std::string fifo = (dir / "fifo").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+
     table("scenes-good", "2003,Pair,pair,48,32,native,4,left.png right.png\n");
     table("scenes-width", "2003,Pair,pair,48x,32,native,4,left.png\n");
     table("scenes-fields", "2003,Pair,pair,48,32\n");
@@ -237,6 +246,25 @@ std::vector<Case> stereo_cases() {
        pair + "--trace {dir}/both.out --export-uai {dir}/both.out",
        2,
        {"--trace and --export-uai name one file '"}},
+      // Folders the tool does not own, and outputs that are not files.
+      {"stereo",
+       "{left} {right} -o {out}/users --labels 8",
+       1,
+       {"the output folder '", "users' is not empty and was not written by a c2f tool"}},
+      {"stereo",
+       "{left} {right} -o {out}/segment --labels 8",
+       1,
+       {"the output folder '", "segment' holds the outputs of c2f-segment, not of c2f-stereo"}},
+      {"stereo", "{left} {right} -o / --labels 8", 1, {"the output folder '/' is the root folder"}},
+      {"stereo", pair + "--trace {dir}", 2, {"--trace '", "' is a folder, not a file"}},
+      {"stereo",
+       pair + "--trace {dir}/fifo --labels 8",
+       2,
+       {"--trace: '", "fifo' is a FIFO that no process is reading"}},
+      {"stereo",
+       pair + "--export-uai {out}/empty/model.uai --trace {dir}/fifo --labels 8",
+       2,
+       {"--trace: '", "fifo' is a FIFO that no process is reading"}},
       {"stereo",
        pair + "--gt {dir}/gt-unknown.png --gt-divisor 4",
        2,
@@ -330,6 +358,10 @@ std::vector<Case> stereo_cases() {
 std::vector<Case> segment_cases() {
   const std::string run = "{image} {seeds} -o {out}/segment ";
   return {
+      {"segment",
+       "{image} {seeds} -o {out}/stereo",
+       1,
+       {"the output folder '", "stereo' holds the outputs of c2f-stereo, not of c2f-segment"}},
       {"segment",
        "{image} {out}/segment/labels.png -o {out}/segment",
        2,

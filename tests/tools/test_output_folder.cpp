@@ -1,19 +1,27 @@
-// OutputFolder: a run's files land together or not at all, stale files the run owns go, other
-// files stay.
+// OutputFolder: a run's folder changes in one step, only folders a tool owns are written, one run
+// at a time; StagedFile: an output elsewhere is replaced in one step, never over a link or FIFO.
 
 #include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 
 #include "c2f/core/output_file.hpp"
+#include "folder_swap.hpp"
 #include "output_folder.hpp"
+#include "staged_file.hpp"
+#include "staged_paths.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using c2f::examples::OutputFolder;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path);
@@ -25,42 +33,84 @@ std::string read_text(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-}  // namespace
+/// Every entry of `folder` (recursively) with its content ("/" for a folder).
+std::map<std::string, std::string> contents(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    const std::string name = entry.path().lexically_relative(folder).string();
+    files[name] = entry.is_directory() ? "/" : read_text(entry.path());
+  }
+  return files;
+}
 
-TEST_CASE("OutputFolder commits staged files and removes only stale owned ones", "[output]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-output-folder";
+/// A fresh, empty test folder.
+fs::path fresh(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
-  write_text(dir / "summary.txt", "old summary");
-  write_text(dir / "partition-level0.png", "old picture");
-  write_text(dir / "notes.txt", "the user's own file");
+  return dir;
+}
+
+/// Entries beside `folder` that runs on it leave while they work.
+std::size_t siblings(const fs::path& folder) {
+  std::size_t count = 0;
+  const std::string prefix = "." + folder.filename().string() + ".c2f-";
+  for (const auto& entry : fs::directory_iterator(folder.parent_path()))
+    count += entry.path().filename().string().rfind(prefix, 0) == 0;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("OutputFolder replaces the folder in one step and keeps the user's files", "[output]") {
+  const fs::path dir = fresh("c2f-test-output-folder") / "out";
   {
-    c2f::examples::OutputFolder output(dir, {"summary.txt", "trace.csv", "partition-level*.png"});
+    OutputFolder first(dir, "c2f-test", {"summary.txt", "trace.csv", "partition-level*.png"});
+    write_text(first.staging() / "summary.txt", "old summary");
+    write_text(first.staging() / "partition-level0.png", "old picture");
+    first.commit();
+  }
+  write_text(dir / "notes.txt", "the user's own file");
+  fs::create_directories(dir / "mine");
+  write_text(dir / "mine" / "more.txt", "more of the user's");
+  struct stat before {};
+  REQUIRE(::stat((dir / "notes.txt").c_str(), &before) == 0);
+  {
+    OutputFolder output(dir, "c2f-test", {"summary.txt", "trace.csv", "partition-level*.png"});
     CHECK(output.owns("partition-level12.png"));
     CHECK_FALSE(output.owns("notes.txt"));
+    CHECK(output.staging().parent_path() == dir.parent_path());  // beside, not inside
     write_text(output.stage(dir / "summary.txt"), "new summary");
     write_text(output.stage(dir / "trace.csv"), "new trace");
-    CHECK(read_text(dir / "summary.txt") == "old summary");  // nothing moves before commit
-    const auto moved = output.commit();
-    CHECK(moved.size() == 2);
+    CHECK(read_text(dir / "summary.txt") == "old summary");  // nothing changes before commit
+    CHECK(output.commit().size() == 2);
   }
   CHECK(read_text(dir / "summary.txt") == "new summary");
   CHECK(read_text(dir / "trace.csv") == "new trace");
   CHECK_FALSE(fs::exists(dir / "partition-level0.png"));  // owned, not written this time
   CHECK(read_text(dir / "notes.txt") == "the user's own file");
-  for (const auto& entry : fs::directory_iterator(dir))  // no staging folder left
-    CHECK(entry.path().filename().string().rfind(".c2f-staging", 0) != 0);
+  CHECK(read_text(dir / "mine" / "more.txt") == "more of the user's");
+  struct stat after {};
+  REQUIRE(::stat((dir / "notes.txt").c_str(), &after) == 0);
+  CHECK(after.st_ino == before.st_ino);  // the same file, linked into the new folder
+  CHECK(read_text(dir / c2f::examples::FolderClaim::kMarker).rfind("c2f-test\n", 0) == 0);
+  CHECK(siblings(dir) == 0);
 }
 
-TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-output-folder-failed";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_text(dir / "summary.txt", "earlier run");
-  const fs::path elsewhere = fs::temp_directory_path() / "c2f-test-output-elsewhere.csv";
+TEST_CASE("OutputFolder without a commit leaves the folder and other outputs as they were",
+          "[output]") {
+  const fs::path root = fresh("c2f-test-output-folder-failed");
+  const fs::path dir = root / "out";
+  {
+    OutputFolder first(dir, "c2f-test", {"summary.txt"});
+    write_text(first.staging() / "summary.txt", "earlier run");
+    first.commit();
+  }
+  const fs::path elsewhere = root / "trace.csv";
   write_text(elsewhere, "earlier trace");
+  const auto before = contents(dir);
   try {
-    c2f::examples::OutputFolder output(dir, {"summary.txt"});
+    OutputFolder output(dir, "c2f-test", {"summary.txt"});
     write_text(output.stage(dir / "summary.txt"), "half of a new summ");
     const fs::path partial = output.stage(elsewhere);
     CHECK(partial != elsewhere);
@@ -68,15 +118,13 @@ TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]
     throw std::runtime_error("the run failed");
   } catch (const std::runtime_error&) {
   }
-  CHECK(read_text(dir / "summary.txt") == "earlier run");
+  CHECK(contents(dir) == before);
   CHECK(read_text(elsewhere) == "earlier trace");
-  CHECK_FALSE(fs::exists(fs::path(elsewhere.string() + ".c2f-partial")));
-  std::size_t entries = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
-  CHECK(entries == 1);
+  CHECK(contents(root).size() == before.size() + 2);  // out/, its files and the trace: no partial
+  CHECK(siblings(dir) == 0);
   {
-    c2f::examples::OutputFolder output(dir, {});
-    CHECK(output.stage("/dev/null") == fs::path("/dev/null"));  // devices are written directly
+    OutputFolder output(dir, "c2f-test", {});
+    CHECK(output.stage("/dev/null") == fs::path("/dev/null"));  // devices are written in place
   }
   std::ofstream full("/dev/full");
   full << std::string(1 << 16, 'x');
@@ -84,30 +132,134 @@ TEST_CASE("OutputFolder without a commit leaves the folder as it was", "[output]
                     Catch::Contains("writing the test stream failed"));
 }
 
-TEST_CASE("OutputFolder removes staging folders that killed runs left behind", "[output]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-output-folder-stale";
-  fs::remove_all(dir);
-  fs::create_directories(dir / ".c2f-staging-999999999");  // no such process
-  write_text(dir / ".c2f-staging-999999999" / "summary.txt", "from a killed run");
-  { c2f::examples::OutputFolder output(dir, {"summary.txt"}); }
-  CHECK_FALSE(fs::exists(dir / ".c2f-staging-999999999"));
+TEST_CASE("OutputFolder writes only folders its tool owns", "[output]") {
+  const fs::path root = fresh("c2f-test-output-folder-owner");
+  fs::create_directories(root / "users");
+  write_text(root / "users" / "error.png", "the user's picture");
+  CHECK_THROWS_WITH(OutputFolder(root / "users", "c2f-test", {"error.png"}),
+                    Catch::Contains("'" + (root / "users").string() + "' is not empty") &&
+                        Catch::Contains("not written by a c2f tool"));
+  CHECK(read_text(root / "users" / "error.png") == "the user's picture");
+
+  {
+    OutputFolder other(root / "other", "c2f-other", {"a.txt"});
+    write_text(other.staging() / "a.txt", "other's");
+    other.commit();
+  }
+  CHECK_THROWS_WITH(OutputFolder(root / "other", "c2f-test", {"a.txt"}),
+                    Catch::Contains("holds the outputs of c2f-other, not of c2f-test"));
+
+  // An empty folder is taken, and given back empty when the run fails.
+  fs::create_directories(root / "empty");
+  { OutputFolder adopted(root / "empty", "c2f-test", {"a.txt"}); }
+  CHECK(fs::is_empty(root / "empty"));
+  // A folder the run created goes again when the run fails.
+  { OutputFolder created(root / "new" / "deeper", "c2f-test", {"a.txt"}); }
+  CHECK_FALSE(fs::exists(root / "new" / "deeper"));
 }
 
-TEST_CASE("OutputFolder without a commit removes the folder it created", "[output]") {
-  const fs::path root = fs::temp_directory_path() / "c2f-test-output-created";
-  fs::remove_all(root);
-  fs::create_directories(root / "existing");
+TEST_CASE("OutputFolder lets one run at a time write a folder", "[output]") {
+  const fs::path dir = fresh("c2f-test-output-folder-lock") / "out";
   {
-    c2f::examples::OutputFolder fresh(root / "fresh", {"a.txt"});
-    write_text(fresh.staging() / "a.txt", "never committed");
-    c2f::examples::OutputFolder existing(root / "existing", {"a.txt"});
+    OutputFolder first(dir, "c2f-test", {"a.txt"});
+    CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"a.txt"}),
+                      Catch::Contains("is being written by another run (c2f-test, process " +
+                                      std::to_string(::getpid()) + ")"));
+    write_text(first.staging() / "a.txt", "first");
+    first.commit();
+    // Still held after the commit, by the marker carried into the new folder.
+    CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"a.txt"}),
+                      Catch::Contains("is being written by another run"));
   }
-  CHECK_FALSE(fs::exists(root / "fresh"));     // created by the run, which failed
-  CHECK(fs::is_directory(root / "existing"));  // the user's folder stays, even empty
   {
-    c2f::examples::OutputFolder fresh(root / "fresh", {"a.txt"});
-    write_text(fresh.staging() / "a.txt", "committed");
-    fresh.commit();
+    OutputFolder second(dir, "c2f-test", {"a.txt"});  // free again
   }
-  CHECK(fs::exists(root / "fresh" / "a.txt"));
+  // Runs sharing a folder by files stage side by side and commit one after the other.
+  {
+    OutputFolder a(dir, "c2f-test", {"a.txt"}, OutputFolder::Sharing::by_files);
+    OutputFolder b(dir, "c2f-test", {"b.txt"}, OutputFolder::Sharing::by_files);
+    write_text(a.staging() / "a.txt", "from a");
+    write_text(b.staging() / "b.txt", "from b");
+    b.commit();
+    a.commit();
+  }
+  CHECK(read_text(dir / "a.txt") == "from a");
+  CHECK(read_text(dir / "b.txt") == "from b");
+}
+
+TEST_CASE("OutputFolder cleans up after killed runs", "[output]") {
+  const fs::path root = fresh("c2f-test-output-folder-stale");
+  const fs::path dir = root / "out";
+  {
+    OutputFolder first(dir, "c2f-test", {"summary.txt"});
+    write_text(first.staging() / "summary.txt", "committed");
+    first.commit();
+  }
+  // A run killed while it staged (no such process).
+  fs::create_directories(root / ".out.c2f-staging-999999999-0");
+  write_text(root / ".out.c2f-staging-999999999-0" / "summary.txt", "from a killed run");
+  { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
+  CHECK_FALSE(fs::exists(root / ".out.c2f-staging-999999999-0"));
+  // A run killed between the two renames of a fallback commit: the old folder is put back.
+  fs::rename(dir, root / ".out.c2f-retired-999999999-0");
+  { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
+  CHECK(read_text(dir / "summary.txt") == "committed");
+  CHECK(siblings(dir) == 0);
+}
+
+TEST_CASE("OutputFolder refuses folders it cannot replace and paths inside them", "[output]") {
+  const fs::path root = fresh("c2f-test-output-folder-refused");
+  CHECK_THROWS_WITH(OutputFolder(fs::current_path(), "c2f-test", {}),
+                    Catch::Contains("is the current folder or holds it"));
+  CHECK_THROWS_WITH(OutputFolder("/", "c2f-test", {}), Catch::Contains("is the root folder"));
+  const fs::path dir = root / "out";
+  {
+    OutputFolder first(dir, "c2f-test", {"a.txt"});
+    first.commit();
+  }
+  REQUIRE(::mkfifo((dir / "pipe").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"a.txt"}),
+                    Catch::Contains("pipe' , which is not a file") ||
+                        Catch::Contains("which is not a file, folder or symbolic link"));
+  fs::remove(dir / "pipe");
+  OutputFolder output(dir, "c2f-test", {"a.txt"});
+  fs::create_directories(dir / "sub");
+  CHECK_THROWS_WITH(output.stage(dir / "sub" / "trace.csv"),
+                    Catch::Contains("lies in a folder inside the output folder"));
+  CHECK(c2f::examples::with_target_paths("cannot write '" + output.staging().string() +
+                                         "/summary.txt'") ==
+        "cannot write '" + dir.string() + "/summary.txt'");
+}
+
+TEST_CASE("StagedFile replaces the file a link names, and refuses a FIFO without reader",
+          "[output]") {
+  const fs::path root = fresh("c2f-test-staged-file");
+  write_text(root / "real.csv", "old");
+  fs::create_symlink(root / "real.csv", root / "link.csv");
+  {
+    c2f::examples::StagedFile file(root / "link.csv");
+    CHECK_FALSE(file.in_place());
+    write_text(file.path(), "new");
+    CHECK(read_text(root / "real.csv") == "old");
+    file.commit();
+  }
+  CHECK(fs::is_symlink(root / "link.csv"));
+  CHECK(read_text(root / "real.csv") == "new");
+  { c2f::examples::StagedFile abandoned(root / "real.csv"); }
+  CHECK(contents(root).size() == 2);  // no partial file left
+
+  REQUIRE(::mkfifo((root / "fifo").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(c2f::examples::StagedFile(root / "fifo"),
+                    Catch::Contains("is a FIFO that no process is reading"));
+  CHECK_THROWS_WITH(c2f::examples::StagedFile(root), Catch::Contains("is a folder, not a file"));
+  CHECK(c2f::examples::StagedFile("/dev/null").in_place());
+}
+
+TEST_CASE("restore_retired_folder puts a folder back only where none stands", "[output]") {
+  const fs::path root = fresh("c2f-test-restore-retired");
+  fs::create_directories(root / "aside");
+  fs::create_directories(root / "standing");
+  CHECK_FALSE(c2f::examples::restore_retired_folder(root / "aside", root / "standing"));
+  CHECK(c2f::examples::restore_retired_folder(root / "aside", root / "out"));
+  CHECK(fs::is_directory(root / "out"));
 }
