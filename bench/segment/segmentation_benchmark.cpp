@@ -41,6 +41,7 @@
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
 #include "support/coopcuts_files.hpp"
+#include "support/summary_rows.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -207,8 +208,6 @@ int run_image(const std::string& set, const std::string& name, const std::string
 }
 
 int summarize(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
   struct Row {
     std::string image, config, reason;
     double energy, error, seconds, reach, ratio, flat_error, c2f_error;
@@ -217,19 +216,10 @@ int summarize(const std::string& path) {
   auto number = [](const std::string& s) {
     return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
   };
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line.rfind("image\t", 0) == 0) continue;
-    std::vector<std::string> f;
-    std::stringstream stream(line);
-    for (std::string field; std::getline(stream, field, '\t');) f.push_back(field);
-    if (f.size() != std::size(kColumns))
-      throw std::runtime_error("malformed row in '" + path + "': " + line);
+  for (const auto& f : bench::read_summary_rows(path, "image\t", std::size(kColumns))) {
     rows.push_back({f[0], f[3], f[8], number(f[4]), number(f[5]), number(f[6]), number(f[9]),
                     number(f[10]), number(f[11]), number(f[12])});
   }
-  if (rows.empty())
-    throw std::invalid_argument("'" + path +
-                                "' holds no rows to summarize (expected the rows a run printed)");
   auto fixed = [](double value, const char* format) {
     char text[32];
     std::snprintf(text, sizeof text, format, value);

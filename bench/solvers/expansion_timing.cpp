@@ -36,6 +36,7 @@
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
+#include "support/summary_rows.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -140,27 +141,14 @@ int run_scene(const std::string& name, const std::string& data, int downscale, i
 }
 
 int summarize(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.rfind("scene\t", 0) != 0) lines.push_back(line);
-  }
-  if (lines.empty())
-    throw std::invalid_argument("'" + path +
-                                "' holds no rows to summarize (expected the rows a run printed)");
+  const auto rows = bench::read_summary_rows(path, "scene\t", std::size(kColumns));
   std::printf(
       "| scene | pixels x labels | Boost first sweep (s) | dynamic first sweep (s) | ratio | Boost "
       "converged (s) | dynamic converged (s) | ratio | sweeps Boost / dynamic | final energy "
       "difference | QPBO moves | recycled moves | peak MiB Boost / dynamic |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> first_ratio, converge_ratio, energy_difference, peak;
-  for (const std::string& line : lines) {
-    std::vector<std::string> f;
-    std::stringstream stream(line);
-    for (std::string field; std::getline(stream, field, '\t');) f.push_back(field);
-    if (f.size() != std::size(kColumns))
-      throw std::runtime_error("malformed row in '" + path + "': " + line);
+  for (const std::vector<std::string>& f : rows) {
     auto number = [&](std::size_t i) {
       const std::optional<double> value = parse_real(f[i]);
       return value ? *value : std::nan("");

@@ -53,6 +53,7 @@
 #include "support/anytime_comparison.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
+#include "support/summary_rows.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -203,22 +204,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
 }
 
 int summarize(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
-  std::string line;
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty() || line.rfind("scene\t", 0) == 0) continue;
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    for (std::string f; std::getline(stream, f, '\t');) fields.push_back(f);
-    if (fields.size() != std::size(kColumns))
-      throw std::runtime_error("malformed row in '" + path + "': " + line);
-    rows.push_back(fields);
-  }
-  if (rows.empty())
-    throw std::invalid_argument("'" + path +
-                                "' holds no rows to summarize (expected the rows a run printed)");
+  const auto rows = bench::read_summary_rows(path, "scene\t", std::size(kColumns));
   auto number = [](const std::string& s) {
     return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
   };

@@ -145,18 +145,15 @@ void OutputFolder::remove_stale_siblings() const {
 }
 
 fs::path OutputFolder::stage(const fs::path& target) {
+  // Whatever stands at a path in the output folder now (a file, a folder) is replaced.
   std::error_code error;
-  const fs::file_status status = fs::status(target, error);
-  const bool special = fs::exists(status) && !fs::is_regular_file(status);
-  if (!special) {
-    fs::path resolved = fs::weakly_canonical(fs::absolute(target), error);
-    if (error) resolved = fs::absolute(target).lexically_normal();
-    if (resolved.parent_path() == folder_) return staging_ / resolved.filename();
-    if (within(resolved, folder_)) {
-      throw std::invalid_argument(
-          "'" + target.string() + "' lies in a folder inside the output folder '" +
-          folder_.string() + "': name a file directly in it, or outside it");
-    }
+  fs::path resolved = fs::weakly_canonical(fs::absolute(target), error);
+  if (error) resolved = fs::absolute(target).lexically_normal();
+  if (resolved.parent_path() == folder_) return staging_ / resolved.filename();
+  if (within(resolved, folder_)) {
+    throw std::invalid_argument("'" + target.string() +
+                                "' lies in a folder inside the output folder '" + folder_.string() +
+                                "': name a file directly in it, or outside it");
   }
   elsewhere_.emplace_back(target);
   return elsewhere_.back().path();

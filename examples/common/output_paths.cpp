@@ -49,7 +49,9 @@ void check_output_paths(const OutputPlan& plan, const std::vector<NamedPath>& in
     // Devices and pipes (/dev/stdout) are written directly and may be shared.
     std::error_code error;
     const auto status = fs::status(output.path, error);
-    if (fs::is_directory(status) || fs::is_socket(status)) {
+    // (In out_dir whatever stands at the path is replaced with the folder.)
+    const bool in_out_dir = !name_in(output.path, plan.out_dir).empty();
+    if (!in_out_dir && (fs::is_directory(status) || fs::is_socket(status))) {
       throw std::invalid_argument(output.what + " '" + output.path + "' is a " +
                                   (fs::is_socket(status) ? "socket" : "folder") +
                                   ", not a file: give a file's path");

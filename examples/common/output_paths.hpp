@@ -23,13 +23,13 @@ struct OutputPlan {
   std::vector<NamedPath> named;
 };
 
-/// Throws std::invalid_argument naming the path when a named output is a folder or a socket, and
-/// naming both paths when a named output is the same file as an
-/// input (after resolving symlinks; by device and inode where both exist), when two named
-/// outputs are one file, when a named output in out_dir takes the name of a file the run writes
-/// there itself (other than its own default_name), and when an input lies in
-/// out_dir under a name the run writes there. Devices and pipes given as outputs are written in
-/// place and may be shared (whether a FIFO has a reader is checked as it is opened: StagedFile).
+/// Throws std::invalid_argument naming the path when a named output outside out_dir is a folder
+/// or a socket, and naming both paths when a named output is the same file as an input (after
+/// resolving symlinks; by device and inode where both exist), when two named outputs are one file,
+/// when a named output in out_dir takes the name of a file the run writes there itself (other than
+/// its own default_name), and when an input lies in out_dir under a name the run writes there.
+/// Devices and pipes given as outputs are written in place and may be shared (whether a FIFO has a
+/// reader is checked as it is opened: StagedFile).
 void check_output_paths(const OutputPlan& plan, const std::vector<NamedPath>& inputs);
 
 }  // namespace c2f::examples

@@ -45,7 +45,9 @@ c2f::test::ToolResult run_shell(const std::string& command) {
   return c2f::test::run_tool("sh", "-c '" + command + "'");
 }
 
-const std::string kStrace = "/usr/bin/strace";
+/// strace, with LeakSanitizer off in sanitizer builds (it cannot run under a tracer).
+const std::string kStrace =
+    "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 /usr/bin/strace";
 
 /// c2f-stereo with `arguments`, run under strace with `injections` (strace -e inject=...).
 c2f::test::ToolResult run_stereo_injected(const std::string& injections,
@@ -92,7 +94,7 @@ TEST_CASE("c2f-stereo refuses a folder it does not own and leaves its files alon
 
 TEST_CASE("two c2f-stereo runs into one folder at once: the second is refused by name",
           "[cli][commit][strace]") {
-  REQUIRE(fs::exists(kStrace));  // scripts/install-deps installs strace
+  REQUIRE(fs::exists("/usr/bin/strace"));  // scripts/install-deps installs strace
   const Scene scene = make_scene("c2f-test-commit-concurrent");
   // The first run is held for three seconds as it commits (strace delays its exchange); the
   // second starts one second after it.
@@ -113,7 +115,7 @@ TEST_CASE("two c2f-stereo runs into one folder at once: the second is refused by
 
 TEST_CASE("a run killed at any step of its commit leaves one run's folder, never a mix",
           "[cli][commit][strace]") {
-  REQUIRE(fs::exists(kStrace));  // scripts/install-deps installs strace
+  REQUIRE(fs::exists("/usr/bin/strace"));  // scripts/install-deps installs strace
   const Scene scene = make_scene("c2f-test-commit-killed");
   REQUIRE(c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 8 --save-partitions")
               .exit_code == 0);
@@ -179,4 +181,19 @@ TEST_CASE("a FIFO given as --trace is written in place while a process reads it"
   std::getline(read, header);
   CHECK(header == "time_s,level,step,energy,num_vars");
   CHECK_FALSE(fs::exists(scene.out / "trace.csv"));
+}
+
+TEST_CASE("a folder standing where an output goes is replaced with the folder's new version",
+          "[cli][commit]") {
+  const Scene scene = make_scene("c2f-test-commit-folder-in-the-way");
+  REQUIRE(c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 8").exit_code == 0);
+  for (const char* name : {"summary.txt", "trace.csv"}) {
+    fs::remove(scene.out / name);
+    fs::create_directories(scene.out / name / "inside");
+  }
+  const auto r = c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 8");
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  CHECK(fs::is_regular_file(scene.out / "summary.txt"));
+  CHECK(fs::is_regular_file(scene.out / "trace.csv"));
 }

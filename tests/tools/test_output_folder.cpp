@@ -71,6 +71,7 @@ TEST_CASE("OutputFolder replaces the folder in one step and keeps the user's fil
     first.commit();
   }
   write_text(dir / "notes.txt", "the user's own file");
+  fs::create_directories(dir / "trace.csv");  // a folder where an output goes
   fs::create_directories(dir / "mine");
   write_text(dir / "mine" / "more.txt", "more of the user's");
   struct stat before {};

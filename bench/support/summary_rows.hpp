@@ -1,0 +1,40 @@
+#pragma once
+// The rows a benchmark's `run` printed (tab-separated, one header line per run), read back by its
+// `summarize`.
+
+#include <cstddef>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace c2f::bench {
+
+/// The rows of `path` with their fields: empty lines and header lines (beginning with
+/// `header_start`, e.g. "scene\t") are skipped. Throws std::runtime_error naming the file when it
+/// cannot be opened or a row has other than `columns` fields, and std::invalid_argument when it
+/// holds no row (a summary of nothing is no summary).
+inline std::vector<std::vector<std::string>> read_summary_rows(const std::string& path,
+                                                               const std::string& header_start,
+                                                               std::size_t columns) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line.rfind(header_start, 0) == 0) continue;
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    for (std::string field; std::getline(stream, field, '\t');) fields.push_back(field);
+    if (fields.size() != columns)
+      throw std::runtime_error("malformed row in '" + path + "': " + line);
+    rows.push_back(std::move(fields));
+  }
+  if (rows.empty()) {
+    throw std::invalid_argument("'" + path +
+                                "' holds no rows to summarize (expected the rows a run printed)");
+  }
+  return rows;
+}
+
+}  // namespace c2f::bench
