@@ -1,0 +1,110 @@
+"""c2f: coarse-to-fine lifted MAP inference for pairwise energies, from numpy.
+
+Build an energy from arrays, solve it flat or coarse to fine with a chosen solver, and look at
+the result and its trace::
+
+    import numpy as np, c2f
+    unary = np.random.rand(240, 320, 8)                 # (H, W, L) costs
+    energy = c2f.Energy.grid(unary, c2f.Term.potts(), weight=0.5)
+    result = c2f.solve(energy, schedule="paper")
+    result.labeling.shape                                # (240, 320)
+    result.energy == energy.evaluate(result.labeling)    # True
+
+The compiled core is c2f._c2f (C++20, pybind11); this module is its documented front.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Dict, Optional, Sequence, Union
+
+import numpy as np
+
+from ._c2f import Energy, Term, _solve
+
+__all__ = ["Energy", "Term", "Result", "solve"]
+
+
+@dataclass
+class Result:
+    """The outcome of a solve.
+
+    labeling: int32 labels, shaped like the energy's variables ((H, W) for a grid energy).
+    energy: E(labeling).
+    reason: why the run ended: 'converged', 'step_limit', 'time_limit', 'target_energy' or
+        'observer' (the callback, or Ctrl-C, stopped it).
+    seconds: the run clock at the end (time inside the callback excluded).
+    steps: solver steps made over all levels.
+    summary: a few lines per level and the outcome, as the command-line tools print them.
+    trace: numpy arrays with one entry per step: 'time', 'level', 'step', 'energy' (of the
+        original problem's labeling) and 'variables' (of the step's level).
+    """
+
+    labeling: np.ndarray
+    energy: float
+    reason: str
+    seconds: float
+    steps: int
+    summary: str
+    trace: Dict[str, np.ndarray]
+
+
+Schedule = Union[str, Sequence[np.ndarray]]
+Callback = Callable[[Dict[str, Any]], Optional[bool]]
+
+
+def solve(
+    energy: Energy,
+    schedule: Schedule = "flat",
+    *,
+    solver: str = "expansion",
+    maxflow: str = "dynamic",
+    order: str = "sequential",
+    seed: int = 1,
+    near_radius: int = 0,
+    shift_moves: bool = False,
+    near_levels: str = "original",
+    time_limit: float = 0.0,
+    max_steps: int = 0,
+    plateau: int = 4,
+    plateau_tolerance: float = 0.0,
+    start: str = "unary_argmin",
+    callback: Optional[Callback] = None,
+) -> Result:
+    """Minimises `energy`, flat or coarse to fine; the C++ coarse_to_fine with a SolverChoice.
+
+    schedule: the coarse levels, coarsest first. 'flat' (the original problem only), 'paper'
+        (colour passing CP(1,1) CP(2,1) CP(3,1)), or any schedule text of the library
+        ('cp:1,1 cp:2,1', 'auto:0.01,0.1', and on a grid energy also 'agg:2/cc', 'blocks:4',
+        'threshold:0.5', ...); or a list of your own partitions, each an integer array of
+        group ids of every variable (equal ids: one group), each refining the one before.
+    solver: 'expansion' (alpha-expansion with QPBO moves), 'swap', 'lbp' or 'icm'.
+    maxflow: the graph-cut solvers' max-flow: 'dynamic' (ours, recycled graphs) or 'boost'.
+    order: the order moves are tried in: 'sequential', 'random' (from `seed`) or 'frequency'.
+    near_radius, shift_moves, near_levels: expansion's near moves (labels within the radius of
+        the current one) and shift moves, on the 'original' problem only or on 'all' levels.
+    time_limit: stop once the run clock passes this many seconds (0: no limit).
+    max_steps: stop after this many solver steps over all levels (0: no limit).
+    plateau: a level is refined (the original problem: finished) after this many steps without
+        a decrease (on the original problem the solver's own convergence rule applies).
+    plateau_tolerance: on coarse levels, decreases below this fraction of |E| do not count.
+    start: the first labeling: 'unary_argmin' or 'zero'.
+    callback: called after every step with a dict (time, level, step, energy, variables,
+        at_original); returning False stops the run (None or True goes on).
+
+    The GIL is released while the solver runs. Ctrl-C ends the run at its next step and raises
+    KeyboardInterrupt with the best result so far as its `result` attribute; an exception
+    raised by the callback is raised the same way. Bad arguments raise ValueError or TypeError
+    naming the argument.
+    """
+    try:
+        raw = _solve(energy, list(schedule) if isinstance(schedule, tuple) else schedule,
+                     solver, maxflow, order, int(seed), int(near_radius), bool(shift_moves),
+                     near_levels, float(time_limit), int(max_steps), int(plateau),
+                     float(plateau_tolerance), start, callback)
+    except BaseException as error:
+        partial = getattr(error, "result", None)
+        if isinstance(partial, dict):
+            error.result = Result(**partial)
+        raise
+    return Result(**raw)

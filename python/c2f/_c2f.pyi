@@ -1,0 +1,98 @@
+"""Type stubs of c2f._c2f, the compiled core (pybind11)."""
+
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+class Term:
+    """A pairwise cost of two labels, shared by edges and scaled by each edge's weight."""
+
+    @staticmethod
+    def potts() -> Term:
+        """cost(a, b) = 0 if a == b else 1."""
+    @staticmethod
+    def truncated_linear(truncation: float) -> Term:
+        """cost(a, b) = min(|a - b|, truncation); truncation > 0."""
+    @staticmethod
+    def truncated_quadratic(truncation: float, num_labels: int) -> Term:
+        """cost(a, b) = min((a - b)^2, truncation), as a num_labels x num_labels table."""
+    @staticmethod
+    def table(costs: npt.ArrayLike) -> Term:
+        """cost(a, b) = costs[a, b] for a float (L, L) array of finite costs."""
+    @property
+    def kind(self) -> str:
+        """'potts', 'truncated_linear', 'tsgo_step' or 'table'."""
+    @property
+    def truncation(self) -> float:
+        """The truncation of a truncated-linear term (0 otherwise)."""
+    def cost(self, a: int, b: int) -> float:
+        """The cost of labels a and b."""
+
+class Energy:
+    """E(x) = sum_v unary[v, x_v] + sum_e weight_e * term(x_u, x_v)."""
+
+    def __init__(
+        self,
+        unary: npt.ArrayLike,
+        edges: Optional[npt.ArrayLike] = None,
+        weights: Optional[npt.ArrayLike] = None,
+        term: Term = ...,
+    ) -> None:
+        """A general energy: unary (N, L) float costs, edges (E, 2) integer variable pairs,
+        weights (E,) (default 1), one pairwise term on every edge."""
+    @staticmethod
+    def grid(
+        unary: npt.ArrayLike,
+        term: Term = ...,
+        weight: float = 1.0,
+        weights: Optional[npt.ArrayLike] = None,
+        connectivity: int = 4,
+    ) -> Energy:
+        """A grid energy from unary (H, W, L) float costs; `term` on the edges to the right and
+        down neighbours (and down-right, down-left when connectivity is 8), of weight `weight`
+        or weights[y, x, k] (shape (H, W, connectivity / 2)). Labelings come back as (H, W)."""
+    @staticmethod
+    def read_uai(path: str) -> Energy:
+        """A pairwise MARKOV model in the UAI format (energy = -ln potential)."""
+    def write_uai(self, path: str) -> None:
+        """Writes the energy as a UAI MARKOV model (potentials exp(-cost), scaled per factor)."""
+    def evaluate(self, labeling: npt.ArrayLike) -> float:
+        """E(labeling) for a labeling of shape (N,) or the grid's (H, W)."""
+    @property
+    def num_variables(self) -> int: ...
+    @property
+    def num_labels(self) -> int: ...
+    @property
+    def num_edges(self) -> int: ...
+    @property
+    def shape(self) -> Optional[Tuple[int, int]]:
+        """(H, W) for a grid energy, None for a general one."""
+    @property
+    def unary(self) -> npt.NDArray[np.float64]:
+        """A copy of the unary costs, (N, L)."""
+    @property
+    def edges(self) -> npt.NDArray[np.int64]:
+        """A copy of the edges' variable pairs, (E, 2)."""
+    @property
+    def weights(self) -> npt.NDArray[np.float64]:
+        """A copy of the edges' weights, (E,)."""
+
+def _solve(
+    energy: Energy,
+    schedule: Union[str, Sequence[npt.ArrayLike]],
+    solver: str,
+    maxflow: str,
+    order: str,
+    seed: int,
+    near_radius: int,
+    shift_moves: bool,
+    near_levels: str,
+    time_limit: float,
+    max_steps: int,
+    plateau: int,
+    plateau_tolerance: float,
+    start: str,
+    callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
+) -> Dict[str, Any]:
+    """The engine of c2f.solve (which documents the arguments); returns a dict."""

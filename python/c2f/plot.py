@@ -1,0 +1,106 @@
+"""Energy and error against time, from c2f.Result traces or the tools' trace.csv files.
+
+    import c2f, c2f.plot
+    flat, fine = c2f.solve(energy, "flat"), c2f.solve(energy, "paper")
+    figure = c2f.plot.energy_against_time({"flat": flat, "c2f": fine}, gap_to=min(flat.energy, fine.energy))
+    figure.savefig("energy.png")
+
+matplotlib is needed (Debian: python3-matplotlib); it is imported when a function is called.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+from typing import Any, Dict, Mapping, Optional, Union
+
+import numpy as np
+
+Trace = Dict[str, np.ndarray]
+TraceSource = Union[Any, Mapping[str, np.ndarray], str, os.PathLike]
+
+
+def read_trace(path: Union[str, os.PathLike]) -> Trace:
+    """A tool's trace.csv (time_s,level,step,energy,num_vars[,error]) as arrays named like
+    Result.trace: time, level, step, energy, variables (and error). Raises ValueError naming the
+    file when it has no rows or lacks a column."""
+    with open(path, newline="") as file:
+        rows = list(csv.DictReader(file))
+    if not rows:
+        raise ValueError(f"trace '{os.fspath(path)}' has no rows")
+    names = {"time": "time_s", "level": "level", "step": "step", "energy": "energy",
+             "variables": "num_vars", "error": "error"}
+    trace = {}
+    for name, column in names.items():
+        if column not in rows[0]:
+            if name == "error":
+                continue
+            raise ValueError(f"trace '{os.fspath(path)}' has no column '{column}'")
+        trace[name] = np.array([float(row[column]) for row in rows])
+    return trace
+
+
+def _trace(source: TraceSource) -> Trace:
+    if isinstance(source, (str, os.PathLike)):
+        return read_trace(source)
+    if hasattr(source, "trace"):
+        return source.trace
+    return dict(source)
+
+
+def energy_against_time(traces: Mapping[str, TraceSource], *, gap_to: Optional[float] = None,
+                        title: str = "energy against time", ax=None):
+    """One line per named trace. Without `gap_to`: the energy normalised as the paper does,
+    E / E_first of the first trace (so every run starts near 1). With `gap_to` (a reference
+    energy, e.g. the best one any run reached): log10 of the gap E - gap_to, which shows the
+    late differences a linear axis hides (a gap of 0 is drawn at the lowest gap seen). Returns
+    the figure."""
+    import matplotlib.pyplot as plt
+
+    figure, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 4.5))
+    loaded = {name: _trace(source) for name, source in traces.items()}
+    first = next(iter(loaded.values()))["energy"][0]
+    gaps = []
+    if gap_to is not None:
+        gaps = [t["energy"] - gap_to for t in loaded.values()]
+        positive = np.concatenate([g[g > 0] for g in gaps] or [np.array([1.0])])
+        floor = positive.min() if positive.size else 1.0
+    for index, (name, trace) in enumerate(loaded.items()):
+        time = np.maximum(trace["time"], 1e-6)
+        if gap_to is None:
+            ax.step(time, trace["energy"] / first, where="post", label=name)
+        else:
+            ax.step(time, np.maximum(gaps[index], floor), where="post", label=name)
+    ax.set_xscale("log")
+    ax.set_xlabel("time (s, log)")
+    if gap_to is None:
+        ax.set_ylabel("energy / first energy")
+    else:
+        ax.set_yscale("log")
+        ax.set_ylabel(f"energy - {gap_to:.6g} (log)")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    return figure
+
+
+def error_against_time(traces: Mapping[str, TraceSource], *, title: str = "error against time",
+                       ax=None):
+    """One line per named trace of its 'error' column (the tools' trace.csv with --gt, or a
+    trace dict with an 'error' array) against time. Returns the figure. Raises ValueError
+    naming a trace without errors."""
+    import matplotlib.pyplot as plt
+
+    figure, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 4.5))
+    for name, source in traces.items():
+        trace = _trace(source)
+        if "error" not in trace:
+            raise ValueError(f"trace '{name}' has no error column")
+        ax.step(np.maximum(trace["time"], 1e-6), trace["error"], where="post", label=name)
+    ax.set_xscale("log")
+    ax.set_xlabel("time (s, log)")
+    ax.set_ylabel("error")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    return figure

@@ -1,0 +1,245 @@
+// c2f._solve: coarse_to_fine with a chosen solver on a c2f.Energy, the GIL released while it runs,
+// every step recorded (and shown to a Python callback, which may stop the run), Ctrl-C honoured
+// at the next step with the best labeling kept.
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/partition_list.hpp"
+#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "model_energy.hpp"
+#include "numpy_input.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// The schedules `paper` names, as c2f-solve has it.
+std::span<const SchedulePreset> presets() {
+  static const std::array<SchedulePreset, 1> list{
+      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
+  return list;
+}
+
+Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
+  Schedule schedule;
+  try {
+    schedule = Schedule::parse(text, presets());
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("schedule: ") + error.what());
+  }
+  if (const std::string problem = schedule.validate(model.energy.num_labels()); !problem.empty())
+    throw py::value_error("schedule: " + problem);
+  if (model.shape.empty()) {
+    for (const LevelSpec& level : schedule.levels) {
+      if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected) {
+        throw py::value_error("schedule: level " + level.to_string() +
+                              " needs a pixel grid; build the energy with Energy.grid, or use cp "
+                              "and auto levels");
+      }
+    }
+  }
+  return schedule;
+}
+
+PartitionList partition_list(const py::list& partitions, std::size_t num_variables) {
+  std::vector<DensePartition> levels;
+  for (std::size_t i = 0; i < partitions.size(); ++i) {
+    const std::string name = "schedule[" + std::to_string(i) + "]";
+    py::array array = py::array::ensure(partitions[i]);
+    if (!array) throw py::type_error(name + ": expected an integer array of group ids");
+    const auto ids = integer_array(array.reshape({array.size()}), name, 1, "(N,)");
+    if (static_cast<std::size_t>(ids.shape(0)) != num_variables) {
+      throw py::value_error(
+          name + ": a partition of the energy's " + std::to_string(num_variables) +
+          " variables needs as many group ids, got " + std::to_string(ids.shape(0)));
+    }
+    try {
+      levels.push_back(DensePartition::from_ids(
+          std::span<const std::int64_t>(ids.data(), static_cast<std::size_t>(ids.shape(0)))));
+    } catch (const std::invalid_argument& error) {
+      throw py::value_error(name + ": " + error.what());
+    }
+  }
+  try {
+    return PartitionList(std::move(levels));
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("schedule: ") + error.what());
+  }
+}
+
+template <class Parse>
+auto parsed(const std::string& argument, const std::string& text, Parse parse) {
+  try {
+    return parse(text);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(argument + ": " + error.what());
+  }
+}
+
+/// What the run's observer collects, without the GIL, and what it met with it.
+struct StepRecord {
+  std::vector<double> time, energy;
+  std::vector<int> level;
+  std::vector<long> step;
+  std::vector<std::size_t> variables;
+  py::object callback;
+  /// A Python exception raised inside the run (KeyboardInterrupt, or the callback's own),
+  /// fetched with the GIL held and raised again after the run.
+  PyObject* error_type = nullptr;
+  PyObject* error_value = nullptr;
+  PyObject* error_traceback = nullptr;
+
+  ObserverDecision operator()(const StepEvent& event) {
+    time.push_back(event.time_s);
+    energy.push_back(event.energy);
+    level.push_back(event.level);
+    step.push_back(event.step);
+    variables.push_back(event.num_variables);
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) return fetch_error();
+    if (callback.is_none()) return ObserverDecision::continue_run;
+    try {
+      py::dict info;
+      info["time"] = event.time_s;
+      info["level"] = event.level;
+      info["step"] = event.step;
+      info["energy"] = event.energy;
+      info["variables"] = event.num_variables;
+      info["at_original"] = event.at_original;
+      const py::object answer = callback(info);
+      if (!answer.is_none() && !answer.cast<bool>()) return ObserverDecision::stop;
+    } catch (py::error_already_set& error) {
+      error.restore();
+      return fetch_error();
+    }
+    return ObserverDecision::continue_run;
+  }
+
+  ObserverDecision fetch_error() {
+    PyErr_Fetch(&error_type, &error_value, &error_traceback);
+    PyErr_NormalizeException(&error_type, &error_value, &error_traceback);
+    return ObserverDecision::stop;
+  }
+};
+
+py::dict result_dict(const ModelEnergy& model, const Summary& summary, const StepRecord& record,
+                     const std::string& report) {
+  py::dict result;
+  result["labeling"] = labeling_array(summary.labeling, model.shape);
+  result["energy"] = summary.energy;
+  result["reason"] = std::string(to_string(summary.reason));
+  result["seconds"] = summary.seconds;
+  result["steps"] = summary.total_steps;
+  result["summary"] = report;
+  py::dict trace;
+  trace["time"] =
+      py::array_t<double>(static_cast<py::ssize_t>(record.time.size()), record.time.data());
+  trace["level"] =
+      py::array_t<int>(static_cast<py::ssize_t>(record.level.size()), record.level.data());
+  trace["step"] =
+      py::array_t<long>(static_cast<py::ssize_t>(record.step.size()), record.step.data());
+  trace["energy"] =
+      py::array_t<double>(static_cast<py::ssize_t>(record.energy.size()), record.energy.data());
+  trace["variables"] = py::array_t<std::size_t>(static_cast<py::ssize_t>(record.variables.size()),
+                                                record.variables.data());
+  result["trace"] = trace;
+  return result;
+}
+
+py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
+               const std::string& solver, const std::string& maxflow, const std::string& order,
+               std::uint64_t seed, int near_radius, bool shift_moves,
+               const std::string& near_levels, double time_limit, long max_steps, int plateau,
+               double plateau_tolerance, const std::string& start, const py::object& callback) {
+  SolverChoice choice;
+  choice.kind =
+      parsed("solver", solver, [](const std::string& t) { return solver_kind_from_string(t); });
+  choice.maxflow =
+      parsed("maxflow", maxflow, [](const std::string& t) { return maxflow_kind_from_string(t); });
+  choice.order =
+      parsed("order", order, [](const std::string& t) { return visit_order_from_string(t); });
+  choice.near_levels = parsed("near_levels", near_levels,
+                              [](const std::string& t) { return near_levels_from_string(t); });
+  choice.seed = seed;
+  if (near_radius < 0) throw py::value_error("near_radius: expected an integer >= 0");
+  choice.near_radius = near_radius;
+  choice.shift_moves = shift_moves;
+  if (const std::string problem = choice.validate(); !problem.empty())
+    throw py::value_error("solver: " + problem);
+  if (!maxflow_available(choice.maxflow))
+    throw py::value_error("maxflow: '" + maxflow + "' is not in this build");
+
+  Options options;
+  if (!std::isfinite(time_limit) || time_limit < 0)
+    throw py::value_error("time_limit: expected a finite number >= 0 (0: no limit)");
+  if (max_steps < 0) throw py::value_error("max_steps: expected an integer >= 0 (0: no limit)");
+  if (plateau < 1) throw py::value_error("plateau: expected an integer >= 1");
+  if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0)
+    throw py::value_error("plateau_tolerance: expected a finite number >= 0");
+  options.time_limit_seconds = time_limit;
+  options.max_total_steps = max_steps;
+  options.plateau_steps = {plateau};
+  options.plateau_tolerance = plateau_tolerance;
+  options.initial_labeling =
+      parsed("start", start, [](const std::string& t) { return initial_labeling_from_string(t); });
+
+  StepRecord record;
+  record.callback = callback;
+  const GridShape shape = model.shape.empty() ? GridShape{model.energy.num_variables(), 1}
+                                              : GridShape{static_cast<std::size_t>(model.shape[1]),
+                                                          static_cast<std::size_t>(model.shape[0])};
+  auto run = [&](auto& levels) {
+    py::gil_scoped_release free;
+    return with_chosen_solvers(choice, [&](auto&& solvers) {
+      return coarse_to_fine(model.energy, levels, solvers, options, std::ref(record));
+    });
+  };
+  Summary summary;
+  std::string report;
+  if (py::isinstance<py::list>(schedule_object) || py::isinstance<py::tuple>(schedule_object)) {
+    PartitionList levels = partition_list(py::list(schedule_object), model.energy.num_variables());
+    summary = run(levels);
+    report = summary.report();
+  } else if (py::isinstance<py::str>(schedule_object)) {
+    ScheduleProvider levels(parse_schedule(schedule_object.cast<std::string>(), model), shape);
+    summary = run(levels);
+    report = summary.report();
+  } else {
+    throw py::type_error(
+        "schedule: expected a schedule text ('flat', 'paper', 'cp:1,1 cp:2,1') or "
+        "a list of partitions (integer arrays of group ids, coarsest first)");
+  }
+  py::dict result = result_dict(model, summary, record, report);
+  if (record.error_type != nullptr) {
+    // The run stopped for a Python exception: raise it, with the best result found attached.
+    if (record.error_value != nullptr)
+      PyObject_SetAttrString(record.error_value, "result", result.ptr());
+    PyErr_Restore(record.error_type, record.error_value, record.error_traceback);
+    throw py::error_already_set();
+  }
+  return result;
+}
+
+}  // namespace
+
+void bind_solve(py::module_& module) {
+  module.def("_solve", &solve, py::arg("energy"), py::arg("schedule"), py::arg("solver"),
+             py::arg("maxflow"), py::arg("order"), py::arg("seed"), py::arg("near_radius"),
+             py::arg("shift_moves"), py::arg("near_levels"), py::arg("time_limit"),
+             py::arg("max_steps"), py::arg("plateau"), py::arg("plateau_tolerance"),
+             py::arg("start"), py::arg("callback"),
+             "The engine of c2f.solve (which documents the arguments); returns a dict.");
+}
+
+}  // namespace c2f::python

@@ -1,0 +1,58 @@
+#pragma once
+// Arrays from Python checked at the boundary: every refusal is a TypeError or ValueError naming
+// the argument and what was expected, never a crash or a silent conversion of wrong data.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "c2f/core/labeling.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+/// `object` as a C-contiguous float64 array with `ndim` dimensions (copied when it is float32,
+/// non-contiguous or has negative strides). Throws TypeError naming `name` unless it is a
+/// float32 or float64 numpy array, ValueError unless it has `ndim` dimensions (described by
+/// `shape`, e.g. "(H, W, L)"), is not empty, and every entry is finite.
+py::array_t<double, py::array::c_style> float_array(const py::handle& object,
+                                                    const std::string& name, int ndim,
+                                                    const std::string& shape);
+
+/// The entries of a float array and its shape.
+struct FloatValues {
+  std::vector<double> values;  ///< row-major
+  std::vector<py::ssize_t> shape;
+};
+
+/// The same checks as float_array, with the entries converted to double in one pass (no
+/// intermediate array; the GIL released while it runs): what energies are built from.
+FloatValues float_values(const py::handle& object, const std::string& name, int ndim,
+                         const std::string& shape);
+
+/// `object` as a C-contiguous int64 array with `ndim` dimensions. Throws TypeError naming `name`
+/// unless it is an integer numpy array (or a list of integers), ValueError unless it has `ndim`
+/// dimensions (described by `shape`).
+py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& object,
+                                                            const std::string& name, int ndim,
+                                                            const std::string& shape);
+
+/// The labeling `object` of `num_variables` variables with labels in [0, num_labels), given
+/// flat (N,) or in `shape` (e.g. the grid's (H, W)). Throws TypeError or ValueError naming
+/// `name`.
+Labeling labeling_from(const py::handle& object, const std::string& name, std::size_t num_variables,
+                       int num_labels, const std::vector<py::ssize_t>& shape);
+
+/// `labeling` as an int32 array of `shape` (empty: flat).
+py::array_t<std::int32_t> labeling_array(const Labeling& labeling,
+                                         const std::vector<py::ssize_t>& shape);
+
+/// "(3, 4, 5)".
+std::string shape_text(const py::array& array);
+
+}  // namespace c2f::python

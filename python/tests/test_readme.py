@@ -1,0 +1,15 @@
+"""The README's Python example runs as written and does what its comments say."""
+
+import pathlib
+import re
+
+
+def test_readme_python_example_runs():
+    readme = (pathlib.Path(__file__).parents[2] / "README.md").read_text()
+    section = readme.split("## From Python", 1)[1]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    names = {}
+    exec(compile(code, "README.md", "exec"), names)
+    assert names["fine"].labeling.shape == (240, 320)
+    assert names["fine"].energy == names["energy"].evaluate(names["fine"].labeling)
+    assert names["flat"].reason == "converged"

@@ -1,0 +1,110 @@
+"""Solving from Python: optimal where it must be, every solver and schedule consistent, the same
+result as the command-line tool on the same model."""
+
+import itertools
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import c2f
+
+
+def brute_force_minimum(energy):
+    n, labels = energy.num_variables, energy.num_labels
+    return min(energy.evaluate(np.array(x)) for x in itertools.product(range(labels), repeat=n))
+
+
+def test_two_label_potts_is_solved_exactly(rng):
+    # Two labels and a non-negative Potts term: one expansion move is a minimum cut, exact.
+    for _ in range(5):
+        energy = c2f.Energy.grid(rng.random((3, 4, 2)), c2f.Term.potts(), weight=0.4)
+        result = c2f.solve(energy)
+        assert result.energy == pytest.approx(brute_force_minimum(energy), abs=1e-9)
+
+
+def test_table_energy_is_no_worse_than_a_local_minimum_and_reports_its_own_energy(rng):
+    table = rng.random((3, 3))
+    table = table + table.T
+    np.fill_diagonal(table, 0.0)
+    energy = c2f.Energy(rng.random((6, 3)), np.array([[0, 1], [1, 2], [2, 3], [3, 4], [4, 5]]),
+                        term=c2f.Term.table(table))
+    best = brute_force_minimum(energy)
+    for solver in ["expansion", "swap", "icm", "lbp"]:
+        result = c2f.solve(energy, solver=solver)
+        assert result.energy == pytest.approx(energy.evaluate(result.labeling), abs=1e-12)
+        assert result.energy >= best - 1e-12
+
+
+@pytest.mark.parametrize("solver", ["expansion", "swap", "icm"])
+@pytest.mark.parametrize("schedule", ["flat", "paper", "cp:2,1/cc flat", "agg:1/cc"])
+def test_move_solvers_never_raise_the_energy(rng, solver, schedule):
+    energy = c2f.Energy.grid(rng.random((20, 24, 5)), c2f.Term.truncated_linear(2.0), weight=0.3)
+    result = c2f.solve(energy, schedule, solver=solver)
+    trace = result.trace
+    assert len(trace["energy"]) == result.steps + 1 or len(trace["energy"]) >= result.steps
+    assert np.all(np.diff(trace["energy"]) <= 1e-9 * np.abs(trace["energy"][:-1]).max())
+    assert trace["energy"][-1] == pytest.approx(result.energy, rel=1e-12)
+    assert result.energy == pytest.approx(energy.evaluate(result.labeling), rel=1e-12)
+    assert result.reason == "converged"
+    assert result.labeling.shape == (20, 24)
+    if schedule != "flat":
+        assert trace["variables"][0] < 20 * 24  # started on a coarse level
+    assert trace["variables"][-1] == 20 * 24
+
+
+def test_own_partitions_as_a_schedule(rng):
+    energy = c2f.Energy.grid(rng.random((8, 8, 3)), c2f.Term.potts(), weight=0.2)
+    blocks4 = (np.arange(8)[:, None] // 4) * 2 + np.arange(8)[None, :] // 4
+    blocks2 = (np.arange(8)[:, None] // 2) * 4 + np.arange(8)[None, :] // 2
+    result = c2f.solve(energy, [blocks4, blocks2])
+    assert list(np.unique(result.trace["variables"])) == [4, 16, 64]
+    assert result.energy == pytest.approx(energy.evaluate(result.labeling))
+
+
+def test_limits_and_a_callback_that_stops(rng):
+    energy = c2f.Energy.grid(rng.random((30, 30, 6)), c2f.Term.potts(), weight=0.5)
+    assert c2f.solve(energy, max_steps=2).reason == "step_limit"
+    seen = []
+
+    def stop_at_three(step):
+        seen.append(step)
+        return step["step"] < 3
+
+    result = c2f.solve(energy, callback=stop_at_three)
+    assert result.reason == "observer"
+    assert [s["step"] for s in seen] == [0, 1, 2, 3]
+    assert set(seen[0]) == {"time", "level", "step", "energy", "variables", "at_original"}
+
+
+def test_a_callback_exception_is_raised_with_the_result(rng):
+    energy = c2f.Energy.grid(rng.random((10, 10, 4)), c2f.Term.potts(), weight=0.5)
+
+    def fail(step):
+        if step["step"] == 2:
+            raise RuntimeError("from the callback")
+
+    with pytest.raises(RuntimeError, match="from the callback") as caught:
+        c2f.solve(energy, callback=fail)
+    assert caught.value.result.energy == pytest.approx(
+        energy.evaluate(caught.value.result.labeling))
+
+
+def test_same_result_as_c2f_solve(rng, tmp_path):
+    build = os.environ.get("C2F_BUILD_DIR")
+    if not build:
+        pytest.skip("C2F_BUILD_DIR is not set (ctest sets it): no c2f-solve to compare with")
+    energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
+    model = tmp_path / "model.uai"
+    energy.write_uai(str(model))
+    subprocess.run([os.path.join(build, "examples/solve/c2f-solve"), str(model), "-o",
+                    str(tmp_path / "out"), "--schedule", "paper", "-q"], check=True)
+    words = (tmp_path / "out" / "labeling.mpe").read_text().split()
+    assert words[0] == "MPE" and int(words[1]) == energy.num_variables
+    cli = np.array([int(w) for w in words[2:]])
+    read = c2f.Energy.read_uai(str(model))
+    result = c2f.solve(read, "paper")
+    np.testing.assert_array_equal(result.labeling, cli)
+    summary = (tmp_path / "out" / "summary.txt").read_text()
+    assert f"final energy {result.energy:.6f}" in summary
