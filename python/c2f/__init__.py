@@ -20,9 +20,11 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 import numpy as np
 
-from ._c2f import Energy, Term, _solve
+from ._c2f import (Energy, Term, _solve, bad_pixel_rates, read_image, read_stereo_pair,
+                   stereo_energy)
 
-__all__ = ["Energy", "Term", "Result", "solve"]
+__all__ = ["Energy", "Term", "Result", "solve", "stereo", "stereo_energy", "read_image",
+           "read_stereo_pair", "bad_pixel_rates"]
 
 
 @dataclass
@@ -108,3 +110,14 @@ def solve(
             error.result = Result(**partial)
         raise
     return Result(**raw)
+
+
+def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
+           *, smoothness: str = "tsgo_step", truncation: float = 2.0, **options: Any) -> Result:
+    """TSGO stereo of two RGB uint8 views (H, W, 3), coarse to fine: the disparities 0..labels-1
+    of the left view are result.labeling ((H, W)). `schedule` takes the stereo presets ('paper',
+    'paper-slic', 'regions', 'aggregated', ...) besides every schedule text; `options` are
+    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, ...). The same energy
+    and run as `c2f-stereo LEFT RIGHT --labels L --schedule S`."""
+    energy = stereo_energy(left, right, labels, smoothness, truncation)
+    return solve(energy, schedule, **options)

@@ -96,3 +96,22 @@ def _solve(
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
 ) -> Dict[str, Any]:
     """The engine of c2f.solve (which documents the arguments); returns a dict."""
+
+def read_image(path: str) -> npt.NDArray[np.uint8]:
+    """An image file as an (H, W, 3) uint8 RGB array (grey is made colour)."""
+
+def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 1.0,
+                     mask: str = "", downscale: int = 1) -> Dict[str, Optional[np.ndarray]]:
+    """A stereo pair loaded as c2f-stereo loads it: 'left', 'right' (RGB uint8), 'gt' ((H, W)
+    float32 disparities, NaN unknown; None without a GT file), 'mask' ((H, W) bool, True =
+    non-occluded; None without one), all shrunk by `downscale`."""
+
+def stereo_energy(left: npt.ArrayLike, right: npt.ArrayLike, labels: int = 85,
+                  smoothness: str = "tsgo_step", truncation: float = 2.0) -> Energy:
+    """The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 of the
+    left view on a 4-connected grid; its schedules include the stereo presets and slic:S."""
+
+def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
+                    mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:
+    """Fractions of pixels with |disparity - gt| above 0.5, 1 and 2 over pixels of known GT
+    ('all') and over the mask's pixels ('nonoccluded'), and the pixel counts."""

@@ -15,6 +15,8 @@
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
+#include "c2f/vision/superpixels.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
 
@@ -34,7 +36,8 @@ std::span<const SchedulePreset> presets() {
 Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
   Schedule schedule;
   try {
-    schedule = Schedule::parse(text, presets());
+    schedule =
+        model.stereo ? vision::parse_stereo_schedule(text) : Schedule::parse(text, presets());
   } catch (const std::invalid_argument& error) {
     throw py::value_error(std::string("schedule: ") + error.what());
   }
@@ -212,7 +215,20 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
     summary = run(levels);
     report = summary.report();
   } else if (py::isinstance<py::str>(schedule_object)) {
-    ScheduleProvider levels(parse_schedule(schedule_object.cast<std::string>(), model), shape);
+    const Schedule schedule = parse_schedule(schedule_object.cast<std::string>(), model);
+    if (const std::string problem = schedule.validate_image(shape); !problem.empty())
+      throw py::value_error("schedule: " + problem);
+    bool slic = false;
+    for (const LevelSpec& level : schedule.levels)
+      slic = slic || std::holds_alternative<SlicLevel>(level.partition);
+    if (slic && model.guide.empty()) {
+      throw py::value_error(
+          "schedule: slic levels segment an image; they need an energy built "
+          "from one (c2f.stereo_energy)");
+    }
+    ScheduleProvider levels(
+        schedule, shape,
+        model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide));
     summary = run(levels);
     report = summary.report();
   } else {

@@ -6,10 +6,12 @@
 
 namespace c2f::python {
 void bind_solve(pybind11::module_& module);
+void bind_stereo(pybind11::module_& module);
 }  // namespace c2f::python
 
 PYBIND11_MODULE(_c2f, module) {
   module.doc() = "c2f: coarse-to-fine lifted MAP inference (the compiled core of the package)";
   c2f::python::bind_energy(module);
   c2f::python::bind_solve(module);
+  c2f::python::bind_stereo(module);
 }
