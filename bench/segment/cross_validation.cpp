@@ -91,15 +91,15 @@ Outcome segment(const RunCommand& command, const ImageData& image,
     const PairwiseEnergy potts = potts_energy(coop);
     ExpansionSolver<> solver;
     options.plateau_steps = {
-        examples::coarse_plateau_steps(solver.quiet_steps_to_converge(potts), L, false)};
+        vision::coarse_plateau_steps(solver.quiet_steps_to_converge(potts), L, false)};
     summary = coarse_to_fine(potts, levels, solver, options);
   } else {
     CoopSolverOptions solver_options;
     solver_options.strategy = aux_strategy_from_string(command.method);
     solver_options.start = expansion_start_from_string(command.start);
     CoopSolver solver(solver_options);
-    options.plateau_steps = {examples::coarse_plateau_steps(solver.quiet_steps_to_converge(coop), L,
-                                                            command.plateau == "sweep")};
+    options.plateau_steps = {vision::coarse_plateau_steps(solver.quiet_steps_to_converge(coop), L,
+                                                          command.plateau == "sweep")};
     summary = coarse_to_fine(coop, levels, solver, options);
   }
   return {pixel_error(summary.labeling, image.scene.truth), summary.energy};

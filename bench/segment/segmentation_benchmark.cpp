@@ -100,7 +100,7 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   // says so, or when a sweep is shorter); the original problem where the solver has converged.
   const auto options_for = [&](std::size_t sweep) {
     Options options;
-    options.plateau_steps = {examples::coarse_plateau_steps(sweep, L, config.sweep_plateau)};
+    options.plateau_steps = {vision::coarse_plateau_steps(sweep, L, config.sweep_plateau)};
     options.time_limit_seconds = time_limit;
     return options;
   };

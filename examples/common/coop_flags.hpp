@@ -30,15 +30,6 @@ inline ToolOptions& declare_coop_parameters(ToolOptions& options, CoopParameters
             "slope of the concave costs after the breakpoint");
 }
 
-/// Steps without decrease that end a coarse level of a segmentation run whose solver's sweep
-/// (quiet_steps_to_converge) is `sweep` steps: the reference's window of num_labels trials, or
-/// the sweep when that is shorter (a majorise-minimise step without decrease is already a fixed
-/// point); the whole sweep when `whole_sweep` (--plateau sweep).
-inline int coarse_plateau_steps(std::size_t sweep, int num_labels, bool whole_sweep) {
-  const std::size_t window = static_cast<std::size_t>(num_labels);
-  return static_cast<int>(whole_sweep ? sweep : std::min(sweep, window));
-}
-
 /// What the data preparation's flags set; `resolved()` is the DataPreparation they name.
 struct PreparationFlags {
   int classes = 10;

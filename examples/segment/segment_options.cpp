@@ -120,9 +120,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
 
 Options run_options(const SegmentCommand& command, int num_labels, std::size_t sweep) {
   Options options;
-  options.plateau_steps = {command.plateau > 0
-                               ? command.plateau
-                               : coarse_plateau_steps(sweep, num_labels, command.plateau < 0)};
+  options.plateau_steps = {
+      command.plateau > 0 ? command.plateau
+                          : vision::coarse_plateau_steps(sweep, num_labels, command.plateau < 0)};
   options.plateau_steps_at_original = command.final_plateau;  // 0: the solver's own
   options.time_limit_seconds = command.time_limit;
   options.max_total_steps = command.max_steps;

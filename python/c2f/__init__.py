@@ -20,11 +20,11 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 import numpy as np
 
-from ._c2f import (Energy, Term, _solve, bad_pixel_rates, read_image, read_stereo_pair,
-                   stereo_energy)
+from ._c2f import (Energy, Term, _segment, _solve, bad_pixel_rates, read_image,
+                   read_segmentation, read_stereo_pair, stereo_energy)
 
 __all__ = ["Energy", "Term", "Result", "solve", "stereo", "stereo_energy", "read_image",
-           "read_stereo_pair", "bad_pixel_rates"]
+           "read_stereo_pair", "bad_pixel_rates", "segment", "read_segmentation"]
 
 
 @dataclass
@@ -99,17 +99,10 @@ def solve(
     raised by the callback is raised the same way. Bad arguments raise ValueError or TypeError
     naming the argument.
     """
-    try:
-        raw = _solve(energy, list(schedule) if isinstance(schedule, tuple) else schedule,
-                     solver, maxflow, order, int(seed), int(near_radius), bool(shift_moves),
-                     near_levels, float(time_limit), int(max_steps), int(plateau),
-                     float(plateau_tolerance), start, callback)
-    except BaseException as error:
-        partial = getattr(error, "result", None)
-        if isinstance(partial, dict):
-            error.result = Result(**partial)
-        raise
-    return Result(**raw)
+    return _result(lambda: _solve(
+        energy, list(schedule) if isinstance(schedule, tuple) else schedule, solver, maxflow,
+        order, int(seed), int(near_radius), bool(shift_moves), near_levels, float(time_limit),
+        int(max_steps), int(plateau), float(plateau_tolerance), start, callback))
 
 
 def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
@@ -121,3 +114,41 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Sche
     and run as `c2f-stereo LEFT RIGHT --labels L --schedule S`."""
     energy = stereo_energy(left, right, labels, smoothness, truncation)
     return solve(energy, schedule, **options)
+
+
+def _result(call: Callable[[], Dict[str, Any]]) -> Result:
+    """A Result from the engine's dict; a Python exception that stopped the run keeps its
+    partial result as a Result too."""
+    try:
+        raw = call()
+    except BaseException as error:
+        partial = getattr(error, "result", None)
+        if isinstance(partial, dict):
+            error.result = Result(**partial)
+        raise
+    return Result(**raw)
+
+
+def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels", *,
+            method: str = "coop", aux: str = "mm", start: str = "zero", lambda_: float = 0.5,
+            theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
+            kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27,
+            time_limit: float = 0.0, max_steps: int = 0, plateau: int = 0,
+            callback: Optional[Callback] = None) -> Result:
+    """Interactive multi-label segmentation by cooperative cuts, as c2f-segment runs it.
+
+    image: (H, W, 3) uint8 RGB. seeds: (H, W) integers, -1 where the user drew nothing, else the
+    pixel's label 0..L-1 (every label needs a seed). A colour GMM per label from its seeds gives
+    the unaries; 8-connected edges in `classes` colour-difference classes carry the cooperative
+    cut (lambda_, theta, alpha: docs/segmentation.md). method: 'coop' or 'potts' (the
+    alpha-expansion baseline on the same data). aux: how the cooperative cut's auxiliary
+    variables are found: 'mm' (majorise-minimise), 'greedy' (with `start`: 'zero' or
+    'current') or 'ceres' (a continuous relaxation). schedule: 'superpixels', 'paper', 'flat' or
+    any schedule text (slic:S levels segment the image). kmeans, gmm_seed, edge_seed: the data
+    preparation's clustering. plateau: steps without decrease that end a coarse level (0: the
+    number of labels or one sweep when shorter; -1: one sweep). result.labeling is (H, W).
+    """
+    return _result(lambda: _segment(image, seeds, method, aux, start, schedule, float(lambda_),
+                                    float(theta), float(alpha), int(classes), kmeans,
+                                    int(gmm_seed), int(edge_seed), float(time_limit),
+                                    int(max_steps), int(plateau), callback))

@@ -115,3 +115,16 @@ def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
                     mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:
     """Fractions of pixels with |disparity - gt| above 0.5, 1 and 2 over pixels of known GT
     ('all') and over the mask's pixels ('nonoccluded'), and the pixel counts."""
+
+def read_segmentation(image: str, seeds: str, gt: str = "", convention: str = "colours",
+                      downscale: int = 1) -> Dict[str, Optional[np.ndarray]]:
+    """A segmentation scene loaded as c2f-segment loads it: 'image' (RGB uint8), 'seeds'
+    ((H, W) int32, -1 where no seed), 'truth' ((H, W) int32, -1 unscored; None without GT),
+    'palette' ((L, 3) RGB colour of each label)."""
+
+def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, method: str, aux: str, start: str,
+             schedule: str, lambda_: float, theta: float, alpha: float, classes: int,
+             kmeans: str, gmm_seed: int, edge_seed: int, time_limit: float, max_steps: int,
+             plateau: int,
+             callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]]) -> Dict[str, Any]:
+    """The engine of c2f.segment (which documents the arguments); returns a dict."""

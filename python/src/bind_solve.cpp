@@ -19,6 +19,7 @@
 #include "c2f/vision/superpixels.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "step_record.hpp"
 
 namespace c2f::python {
 
@@ -90,76 +91,6 @@ auto parsed(const std::string& argument, const std::string& text, Parse parse) {
   }
 }
 
-/// What the run's observer collects, without the GIL, and what it met with it.
-struct StepRecord {
-  std::vector<double> time, energy;
-  std::vector<int> level;
-  std::vector<long> step;
-  std::vector<std::size_t> variables;
-  py::object callback;
-  /// A Python exception raised inside the run (KeyboardInterrupt, or the callback's own),
-  /// fetched with the GIL held and raised again after the run.
-  PyObject* error_type = nullptr;
-  PyObject* error_value = nullptr;
-  PyObject* error_traceback = nullptr;
-
-  ObserverDecision operator()(const StepEvent& event) {
-    time.push_back(event.time_s);
-    energy.push_back(event.energy);
-    level.push_back(event.level);
-    step.push_back(event.step);
-    variables.push_back(event.num_variables);
-    py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) return fetch_error();
-    if (callback.is_none()) return ObserverDecision::continue_run;
-    try {
-      py::dict info;
-      info["time"] = event.time_s;
-      info["level"] = event.level;
-      info["step"] = event.step;
-      info["energy"] = event.energy;
-      info["variables"] = event.num_variables;
-      info["at_original"] = event.at_original;
-      const py::object answer = callback(info);
-      if (!answer.is_none() && !answer.cast<bool>()) return ObserverDecision::stop;
-    } catch (py::error_already_set& error) {
-      error.restore();
-      return fetch_error();
-    }
-    return ObserverDecision::continue_run;
-  }
-
-  ObserverDecision fetch_error() {
-    PyErr_Fetch(&error_type, &error_value, &error_traceback);
-    PyErr_NormalizeException(&error_type, &error_value, &error_traceback);
-    return ObserverDecision::stop;
-  }
-};
-
-py::dict result_dict(const ModelEnergy& model, const Summary& summary, const StepRecord& record,
-                     const std::string& report) {
-  py::dict result;
-  result["labeling"] = labeling_array(summary.labeling, model.shape);
-  result["energy"] = summary.energy;
-  result["reason"] = std::string(to_string(summary.reason));
-  result["seconds"] = summary.seconds;
-  result["steps"] = summary.total_steps;
-  result["summary"] = report;
-  py::dict trace;
-  trace["time"] =
-      py::array_t<double>(static_cast<py::ssize_t>(record.time.size()), record.time.data());
-  trace["level"] =
-      py::array_t<int>(static_cast<py::ssize_t>(record.level.size()), record.level.data());
-  trace["step"] =
-      py::array_t<long>(static_cast<py::ssize_t>(record.step.size()), record.step.data());
-  trace["energy"] =
-      py::array_t<double>(static_cast<py::ssize_t>(record.energy.size()), record.energy.data());
-  trace["variables"] = py::array_t<std::size_t>(static_cast<py::ssize_t>(record.variables.size()),
-                                                record.variables.data());
-  result["trace"] = trace;
-  return result;
-}
-
 py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
                const std::string& solver, const std::string& maxflow, const std::string& order,
                std::uint64_t seed, int near_radius, bool shift_moves,
@@ -197,8 +128,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   options.initial_labeling =
       parsed("start", start, [](const std::string& t) { return initial_labeling_from_string(t); });
 
-  StepRecord record;
-  record.callback = callback;
+  StepRecord record(callback);
   const GridShape shape = model.shape.empty() ? GridShape{model.energy.num_variables(), 1}
                                               : GridShape{static_cast<std::size_t>(model.shape[1]),
                                                           static_cast<std::size_t>(model.shape[0])};
@@ -236,15 +166,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
         "schedule: expected a schedule text ('flat', 'paper', 'cp:1,1 cp:2,1') or "
         "a list of partitions (integer arrays of group ids, coarsest first)");
   }
-  py::dict result = result_dict(model, summary, record, report);
-  if (record.error_type != nullptr) {
-    // The run stopped for a Python exception: raise it, with the best result found attached.
-    if (record.error_value != nullptr)
-      PyObject_SetAttrString(record.error_value, "result", result.ptr());
-    PyErr_Restore(record.error_type, record.error_value, record.error_traceback);
-    throw py::error_already_set();
-  }
-  return result;
+  return record.result(summary, model.shape, report);
 }
 
 }  // namespace

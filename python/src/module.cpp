@@ -7,6 +7,7 @@
 namespace c2f::python {
 void bind_solve(pybind11::module_& module);
 void bind_stereo(pybind11::module_& module);
+void bind_segment(pybind11::module_& module);
 }  // namespace c2f::python
 
 PYBIND11_MODULE(_c2f, module) {
@@ -14,4 +15,5 @@ PYBIND11_MODULE(_c2f, module) {
   c2f::python::bind_energy(module);
   c2f::python::bind_solve(module);
   c2f::python::bind_stereo(module);
+  c2f::python::bind_segment(module);
 }

@@ -195,6 +195,7 @@ using c2f::vision::BadPixelRates;
 using c2f::vision::BilateralOptions;
 using c2f::vision::ColourClusters;
 using c2f::vision::ColourGmm;
+using c2f::vision::coarse_plateau_steps;
 using c2f::vision::colourise_disparity;
 using c2f::vision::coop_energy;
 using c2f::vision::CostVolume;

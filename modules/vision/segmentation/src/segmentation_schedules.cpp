@@ -1,5 +1,6 @@
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace c2f::vision {
@@ -14,6 +15,11 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels) {
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels) {
   const std::vector<SchedulePreset> presets = segmentation_schedule_presets(num_labels);
   return Schedule::parse(text, presets);
+}
+
+int coarse_plateau_steps(std::size_t sweep, int num_labels, bool whole_sweep) {
+  const std::size_t window = static_cast<std::size_t>(num_labels);
+  return static_cast<int>(whole_sweep ? sweep : std::min(sweep, window));
 }
 
 }  // namespace c2f::vision

@@ -21,4 +21,10 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels);
 /// Schedule::parse with the segmentation presets for num_labels labels.
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels);
 
+/// Steps without decrease that end a coarse level of a segmentation run whose solver's sweep
+/// (quiet_steps_to_converge) is `sweep` steps: the reference's window of num_labels trials, or
+/// the sweep when that is shorter (a majorise-minimise step without decrease is already a fixed
+/// point); the whole sweep when `whole_sweep` (c2f-segment's --plateau sweep).
+int coarse_plateau_steps(std::size_t sweep, int num_labels, bool whole_sweep);
+
 }  // namespace c2f::vision

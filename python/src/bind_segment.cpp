@@ -1,0 +1,188 @@
+// Cooperative-cut segmentation from Python: an RGB image and seed labels in, c2f-segment's data
+// preparation, energy, schedules and solvers, the labels out.
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <string>
+
+#include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "c2f/vision/segmentation/kmeans.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
+#include "c2f/vision/segmentation/segmentation_schedules.hpp"
+#include "c2f/vision/superpixels.hpp"
+#include "image_arrays.hpp"
+#include "numpy_input.hpp"
+#include "step_record.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+namespace {
+
+py::array_t<std::int32_t> label_array(const std::vector<int>& labels, const cv::Mat& image) {
+  py::array_t<std::int32_t> out({image.rows, image.cols});
+  std::copy(labels.begin(), labels.end(), out.mutable_data());
+  return out;
+}
+
+py::dict read_segmentation(const std::string& image, const std::string& seeds,
+                           const std::string& gt, const std::string& convention, int factor) {
+  vision::SegmentationFiles files;
+  files.image = image;
+  files.seeds = seeds;
+  files.gt = gt;
+  try {
+    files.convention = vision::seed_convention_from_string(convention);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("convention: ") + error.what());
+  }
+  const vision::SegmentationScene scene =
+      vision::downscale(vision::load_segmentation_scene(files), factor);
+  py::dict out;
+  out["image"] = rgb_array(scene.image);
+  out["seeds"] = label_array(scene.seeds, scene.image);
+  out["truth"] = scene.truth.empty() ? py::object(py::none())
+                                     : py::object(label_array(scene.truth, scene.image));
+  py::array_t<std::uint8_t> palette(
+      {static_cast<py::ssize_t>(scene.palette.size()), py::ssize_t{3}});
+  for (std::size_t l = 0; l < scene.palette.size(); ++l)
+    for (int c = 0; c < 3; ++c) palette.mutable_data()[3 * l + c] = scene.palette[l][2 - c];
+  out["palette"] = palette;
+  return out;
+}
+
+/// The scene of an RGB image and seed labels (-1: no seed), checked by name.
+vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::handle& seeds) {
+  vision::SegmentationScene scene;
+  scene.name = "image";
+  scene.image = bgr_image(image, "image");
+  const auto labels = integer_array(seeds, "seeds", 2, "(H, W)");
+  if (labels.shape(0) != scene.image.rows || labels.shape(1) != scene.image.cols) {
+    throw py::value_error("seeds: expected shape (" + std::to_string(scene.image.rows) + ", " +
+                          std::to_string(scene.image.cols) + "), the image's, got shape " +
+                          shape_text(labels));
+  }
+  std::int64_t largest = -1;
+  for (py::ssize_t i = 0; i < labels.size(); ++i) {
+    const std::int64_t label = labels.data()[i];
+    if (label < -1 || label >= 64)
+      throw py::value_error("seeds: expected -1 (no seed) or a label in [0, 63], got " +
+                            std::to_string(label) + " at flat index " + std::to_string(i));
+    largest = std::max(largest, label);
+    scene.seeds.push_back(label < 0 ? vision::kNoLabel : static_cast<int>(label));
+  }
+  if (largest < 1) throw py::value_error("seeds: expected seeds of at least 2 labels");
+  std::vector<bool> seeded(static_cast<std::size_t>(largest) + 1, false);
+  for (const int label : scene.seeds)
+    if (label >= 0) seeded[static_cast<std::size_t>(label)] = true;
+  for (std::size_t l = 0; l < seeded.size(); ++l)
+    if (!seeded[l])
+      throw py::value_error("seeds: label " + std::to_string(l) + " has no seed pixel");
+  for (std::int64_t l = 0; l <= largest; ++l)  // colours for pictures only
+    scene.palette.emplace_back(static_cast<std::uint8_t>(37 * l), static_cast<std::uint8_t>(91 * l),
+                               static_cast<std::uint8_t>(173 * l));
+  return scene;
+}
+
+py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& method,
+                 const std::string& aux, const std::string& start, const std::string& schedule_text,
+                 double lambda, double theta, double alpha, int classes, const std::string& kmeans,
+                 std::uint64_t gmm_seed, std::uint64_t edge_seed, double time_limit, long max_steps,
+                 int plateau, const py::object& callback) {
+  if (method != "coop" && method != "potts")
+    throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");
+  const vision::SegmentationScene scene = scene_from_arrays(image, seeds);
+  const CoopParameters parameters{lambda, theta, alpha};
+  if (const std::string problem = parameters.validate(); !problem.empty())
+    throw py::value_error(problem);
+  CoopSolverOptions coop;
+  try {
+    coop.strategy = aux_strategy_from_string(aux);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("aux: ") + error.what());
+  }
+  try {
+    coop.start = expansion_start_from_string(start);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("start: ") + error.what());
+  }
+  if (classes < 1 || classes > 256)
+    throw py::value_error("classes: expected an integer in [1, 256]");
+  if (kmeans != "plusplus" && kmeans != "reference")
+    throw py::value_error("kmeans: expected 'plusplus' or 'reference', got '" + kmeans + "'");
+  const auto clustering = [&](std::uint64_t seed) {
+    return kmeans == "plusplus" ? vision::plus_plus_kmeans(seed) : vision::reference_kmeans(seed);
+  };
+  const vision::DataPreparation preparation{classes, clustering(gmm_seed), clustering(edge_seed)};
+  if (!std::isfinite(time_limit) || time_limit < 0)
+    throw py::value_error("time_limit: expected a finite number >= 0 (0: no limit)");
+  if (max_steps < 0) throw py::value_error("max_steps: expected an integer >= 0 (0: no limit)");
+  if (plateau < -1) throw py::value_error("plateau: expected -1 (a sweep), 0 (default) or a count");
+
+  const int num_labels = scene.num_labels();
+  Schedule schedule;
+  try {
+    schedule = vision::parse_segmentation_schedule(schedule_text, num_labels);
+    if (std::string problem = schedule.validate(num_labels); !problem.empty())
+      throw std::invalid_argument(problem);
+    if (std::string problem = schedule.validate_image(scene.shape()); !problem.empty())
+      throw std::invalid_argument(problem);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("schedule: ") + error.what());
+  }
+
+  StepRecord record(callback);
+  Summary summary;
+  std::string report;
+  {
+    py::gil_scoped_release free;
+    const vision::SegmentationProblem problem =
+        vision::segmentation_problem(scene, parameters, preparation);
+    ScheduleProvider levels(schedule, scene.shape(), vision::slic_source(scene.image));
+    const auto options_for = [&](std::size_t sweep) {
+      Options options;
+      options.plateau_steps = {
+          plateau > 0 ? plateau : vision::coarse_plateau_steps(sweep, num_labels, plateau < 0)};
+      options.time_limit_seconds = time_limit;
+      options.max_total_steps = max_steps;
+      return options;
+    };
+    if (method == "potts") {
+      ExpansionSolver<> solver;
+      summary = coarse_to_fine(problem.potts, levels, solver,
+                               options_for(solver.quiet_steps_to_converge(problem.potts)),
+                               std::ref(record));
+    } else {
+      CoopSolver solver(coop);
+      summary = coarse_to_fine(problem.coop, levels, solver,
+                               options_for(solver.quiet_steps_to_converge(problem.coop)),
+                               std::ref(record));
+    }
+    report = summary.report();
+  }
+  return record.result(summary, {scene.image.rows, scene.image.cols}, report);
+}
+
+}  // namespace
+
+void bind_segment(py::module_& module) {
+  module.def("read_segmentation", &read_segmentation, py::arg("image"), py::arg("seeds"),
+             py::arg("gt") = "", py::arg("convention") = "colours", py::arg("downscale") = 1,
+             "A segmentation scene loaded as c2f-segment loads it: a dict with 'image' (RGB "
+             "uint8), 'seeds' ((H, W) int32, -1 where no seed), 'truth' ((H, W) int32 labels, -1 "
+             "unscored; None without GT) and 'palette' ((L, 3) RGB colour of each label).");
+  module.def("_segment", &segment, py::arg("image"), py::arg("seeds"), py::arg("method"),
+             py::arg("aux"), py::arg("start"), py::arg("schedule"), py::arg("lambda_"),
+             py::arg("theta"), py::arg("alpha"), py::arg("classes"), py::arg("kmeans"),
+             py::arg("gmm_seed"), py::arg("edge_seed"), py::arg("time_limit"), py::arg("max_steps"),
+             py::arg("plateau"), py::arg("callback"),
+             "The engine of c2f.segment (which documents the arguments); returns a dict.");
+}
+
+}  // namespace c2f::python

@@ -1,0 +1,78 @@
+#include "step_record.hpp"
+
+#include <pybind11/numpy.h>
+
+#include "numpy_input.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+StepRecord::StepRecord(py::object callback) : callback_(std::move(callback)) {}
+
+StepRecord::~StepRecord() {
+  // Only when result() did not hand the exception back (it threw before): drop it.
+  Py_XDECREF(error_type_);
+  Py_XDECREF(error_value_);
+  Py_XDECREF(error_traceback_);
+}
+
+ObserverDecision StepRecord::operator()(const StepEvent& event) {
+  time_.push_back(event.time_s);
+  energy_.push_back(event.energy);
+  level_.push_back(event.level);
+  step_.push_back(event.step);
+  variables_.push_back(event.num_variables);
+  py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() != 0) return stop_for_python_error();
+  if (callback_.is_none()) return ObserverDecision::continue_run;
+  try {
+    py::dict info;
+    info["time"] = event.time_s;
+    info["level"] = event.level;
+    info["step"] = event.step;
+    info["energy"] = event.energy;
+    info["variables"] = event.num_variables;
+    info["at_original"] = event.at_original;
+    const py::object answer = callback_(info);
+    if (!answer.is_none() && !answer.cast<bool>()) return ObserverDecision::stop;
+  } catch (py::error_already_set& error) {
+    error.restore();
+    return stop_for_python_error();
+  }
+  return ObserverDecision::continue_run;
+}
+
+ObserverDecision StepRecord::stop_for_python_error() {
+  PyErr_Fetch(&error_type_, &error_value_, &error_traceback_);
+  PyErr_NormalizeException(&error_type_, &error_value_, &error_traceback_);
+  return ObserverDecision::stop;
+}
+
+py::dict StepRecord::result(const Summary& summary, const std::vector<py::ssize_t>& shape,
+                            const std::string& report) {
+  py::dict result;
+  result["labeling"] = labeling_array(summary.labeling, shape);
+  result["energy"] = summary.energy;
+  result["reason"] = std::string(to_string(summary.reason));
+  result["seconds"] = summary.seconds;
+  result["steps"] = summary.total_steps;
+  result["summary"] = report;
+  const auto size = [](const auto& values) { return static_cast<py::ssize_t>(values.size()); };
+  py::dict trace;
+  trace["time"] = py::array_t<double>(size(time_), time_.data());
+  trace["level"] = py::array_t<int>(size(level_), level_.data());
+  trace["step"] = py::array_t<long>(size(step_), step_.data());
+  trace["energy"] = py::array_t<double>(size(energy_), energy_.data());
+  trace["variables"] = py::array_t<std::size_t>(size(variables_), variables_.data());
+  result["trace"] = trace;
+  if (error_type_ != nullptr) {
+    if (error_value_ != nullptr) PyObject_SetAttrString(error_value_, "result", result.ptr());
+    PyErr_Restore(error_type_, error_value_, error_traceback_);  // steals the references
+    error_type_ = error_value_ = error_traceback_ = nullptr;
+    throw py::error_already_set();
+  }
+  return result;
+}
+
+}  // namespace c2f::python

@@ -1,0 +1,75 @@
+"""Segmentation from Python is c2f-segment's: the same scene, data, energy, run and labels."""
+
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import c2f
+
+FRUITS = pathlib.Path("/usr/share/doc/opencv-doc/examples/data/fruits.jpg")
+SEEDS = pathlib.Path(__file__).parents[2] / "examples/segment/data/fruits-seeds.png"
+
+
+@pytest.fixture
+def fruits():
+    if not FRUITS.is_file():
+        pytest.skip(f"{FRUITS} is missing (Debian package opencv-doc)")
+    return c2f.read_segmentation(str(FRUITS), str(SEEDS), downscale=4)
+
+
+def labels_of(picture, palette):
+    labels = np.full(picture.shape[:2], -1)
+    for label, colour in enumerate(palette):
+        labels[np.all(picture == colour, axis=2)] = label
+    return labels
+
+
+def test_fruits_through_python_and_through_c2f_segment(fruits, tmp_path):
+    build = os.environ.get("C2F_BUILD_DIR")
+    if not build:
+        pytest.skip("C2F_BUILD_DIR is not set (ctest sets it): no c2f-segment to compare with")
+    result = c2f.segment(fruits["image"], fruits["seeds"])
+    out = tmp_path / "out"
+    subprocess.run([os.path.join(build, "examples/segment/c2f-segment"), str(FRUITS), str(SEEDS),
+                    "--downscale", "4", "-o", str(out), "-q"], check=True)
+    cli = labels_of(c2f.read_image(str(out / "labels.png")), fruits["palette"])
+    np.testing.assert_array_equal(cli, result.labeling)
+    assert f"final energy {result.energy:.6f}" in (out / "summary.txt").read_text()
+
+
+def test_segment_methods_and_schedules(fruits):
+    image, seeds = fruits["image"], fruits["seeds"]
+    for kwargs in [dict(method="potts"), dict(schedule="flat", max_steps=5),
+                   dict(aux="greedy", start="current", plateau=-1, max_steps=20)]:
+        result = c2f.segment(image, seeds, **kwargs)
+        assert result.labeling.shape == seeds.shape
+        seeded = seeds >= 0
+        assert np.array_equal(result.labeling[seeded], seeds[seeded])  # seeds keep their label
+        assert np.all(np.diff(result.trace["energy"]) <= 1e-9 * abs(result.trace["energy"][0]))
+
+
+def test_segment_inputs_are_checked(rng):
+    image = rng.integers(0, 255, (20, 30, 3), dtype=np.uint8)
+    seeds = np.full((20, 30), -1)
+    seeds[2, 2], seeds[15, 25] = 0, 1
+    with pytest.raises(ValueError, match=r"seeds: expected shape \(20, 30\)"):
+        c2f.segment(image, seeds[:10])
+    one = seeds.copy()
+    one[15, 25] = 0
+    with pytest.raises(ValueError, match="seeds: expected seeds of at least 2 labels"):
+        c2f.segment(image, one)
+    gap = seeds.copy()
+    gap[15, 25] = 2
+    with pytest.raises(ValueError, match="seeds: label 1 has no seed pixel"):
+        c2f.segment(image, gap)
+    with pytest.raises(ValueError, match="aux: "):
+        c2f.segment(image, seeds, aux="magic")
+    with pytest.raises(ValueError, match="method: "):
+        c2f.segment(image, seeds, method="graphcut")
+    with pytest.raises(TypeError, match="seeds: expected an integer array"):
+        c2f.segment(image, seeds.astype(float))
+    result = c2f.segment(image, seeds, schedule="flat")
+    assert result.labeling[2, 2] == 0 and result.labeling[15, 25] == 1
