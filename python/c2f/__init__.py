@@ -20,11 +20,13 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 import numpy as np
 
-from ._c2f import (Energy, Term, _segment, _solve, bad_pixel_rates, read_image,
-                   read_segmentation, read_stereo_pair, stereo_energy)
+from ._c2f import (Energy, Term, _segment, _solve, bad_pixel_rates, expand, partition,
+                   read_image, read_segmentation, read_stereo_pair, reduce, stereo_energy,
+                   transfer)
 
 __all__ = ["Energy", "Term", "Result", "solve", "stereo", "stereo_energy", "read_image",
-           "read_stereo_pair", "bad_pixel_rates", "segment", "read_segmentation"]
+           "read_stereo_pair", "bad_pixel_rates", "segment", "read_segmentation", "partition",
+           "reduce", "expand", "transfer"]
 
 
 @dataclass

@@ -128,3 +128,19 @@ def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, method: str, aux: str, 
              plateau: int,
              callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]]) -> Dict[str, Any]:
     """The engine of c2f.segment (which documents the arguments); returns a dict."""
+
+def partition(energy: Energy, level: str) -> npt.NDArray[np.int32]:
+    """One level's partition of the energy's variables as group ids in the energy's shape:
+    'cp:N_L,N_iter', 'local:..', 'threshold:T', 'agg:R', 'blocks:S', 'slic:S', any with '/cc'."""
+
+def reduce(energy: Energy, partition: npt.ArrayLike) -> Energy:
+    """The reduced energy over the groups of `partition` (group ids of every variable):
+    reduce(e, p).evaluate(y) == e.evaluate(expand(y, p, L)) up to rounding."""
+
+def expand(labeling: npt.ArrayLike, partition: npt.ArrayLike, num_labels: int) -> npt.NDArray[np.int32]:
+    """The labeling of the variables in which every member of group g gets labeling[g]."""
+
+def transfer(labeling: npt.ArrayLike, from_partition: npt.ArrayLike, to_partition: npt.ArrayLike,
+             num_labels: int) -> npt.NDArray[np.int32]:
+    """The same labeling of the variables, on the groups of `to_partition` (which refines
+    `from_partition`)."""

@@ -5,9 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <array>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "c2f/adapters/solver_choice.hpp"
@@ -15,10 +13,9 @@
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
-#include "c2f/vision/stereo/stereo_schedules.hpp"
-#include "c2f/vision/superpixels.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "schedules.hpp"
 #include "step_record.hpp"
 
 namespace c2f::python {
@@ -27,53 +24,11 @@ namespace py = pybind11;
 
 namespace {
 
-/// The schedules `paper` names, as c2f-solve has it.
-std::span<const SchedulePreset> presets() {
-  static const std::array<SchedulePreset, 1> list{
-      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
-  return list;
-}
-
-Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
-  Schedule schedule;
-  try {
-    schedule =
-        model.stereo ? vision::parse_stereo_schedule(text) : Schedule::parse(text, presets());
-  } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("schedule: ") + error.what());
-  }
-  if (const std::string problem = schedule.validate(model.energy.num_labels()); !problem.empty())
-    throw py::value_error("schedule: " + problem);
-  if (model.shape.empty()) {
-    for (const LevelSpec& level : schedule.levels) {
-      if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected) {
-        throw py::value_error("schedule: level " + level.to_string() +
-                              " needs a pixel grid; build the energy with Energy.grid, or use cp "
-                              "and auto levels");
-      }
-    }
-  }
-  return schedule;
-}
-
 PartitionList partition_list(const py::list& partitions, std::size_t num_variables) {
   std::vector<DensePartition> levels;
   for (std::size_t i = 0; i < partitions.size(); ++i) {
     const std::string name = "schedule[" + std::to_string(i) + "]";
-    py::array array = py::array::ensure(partitions[i]);
-    if (!array) throw py::type_error(name + ": expected an integer array of group ids");
-    const auto ids = integer_array(array.reshape({array.size()}), name, 1, "(N,)");
-    if (static_cast<std::size_t>(ids.shape(0)) != num_variables) {
-      throw py::value_error(
-          name + ": a partition of the energy's " + std::to_string(num_variables) +
-          " variables needs as many group ids, got " + std::to_string(ids.shape(0)));
-    }
-    try {
-      levels.push_back(DensePartition::from_ids(
-          std::span<const std::int64_t>(ids.data(), static_cast<std::size_t>(ids.shape(0)))));
-    } catch (const std::invalid_argument& error) {
-      throw py::value_error(name + ": " + error.what());
-    }
+    levels.push_back(partition_from(partitions[i], name, num_variables));
   }
   try {
     return PartitionList(std::move(levels));
@@ -129,9 +84,6 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
       parsed("start", start, [](const std::string& t) { return initial_labeling_from_string(t); });
 
   StepRecord record(callback);
-  const GridShape shape = model.shape.empty() ? GridShape{model.energy.num_variables(), 1}
-                                              : GridShape{static_cast<std::size_t>(model.shape[1]),
-                                                          static_cast<std::size_t>(model.shape[0])};
   auto run = [&](auto& levels) {
     py::gil_scoped_release free;
     return with_chosen_solvers(choice, [&](auto&& solvers) {
@@ -145,20 +97,8 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
     summary = run(levels);
     report = summary.report();
   } else if (py::isinstance<py::str>(schedule_object)) {
-    const Schedule schedule = parse_schedule(schedule_object.cast<std::string>(), model);
-    if (const std::string problem = schedule.validate_image(shape); !problem.empty())
-      throw py::value_error("schedule: " + problem);
-    bool slic = false;
-    for (const LevelSpec& level : schedule.levels)
-      slic = slic || std::holds_alternative<SlicLevel>(level.partition);
-    if (slic && model.guide.empty()) {
-      throw py::value_error(
-          "schedule: slic levels segment an image; they need an energy built "
-          "from one (c2f.stereo_energy)");
-    }
-    ScheduleProvider levels(
-        schedule, shape,
-        model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide));
+    ScheduleProvider levels =
+        schedule_provider(parse_schedule(schedule_object.cast<std::string>(), model), model);
     summary = run(levels);
     report = summary.report();
   } else {

@@ -8,6 +8,7 @@ namespace c2f::python {
 void bind_solve(pybind11::module_& module);
 void bind_stereo(pybind11::module_& module);
 void bind_segment(pybind11::module_& module);
+void bind_lift(pybind11::module_& module);
 }  // namespace c2f::python
 
 PYBIND11_MODULE(_c2f, module) {
@@ -16,4 +17,5 @@ PYBIND11_MODULE(_c2f, module) {
   c2f::python::bind_solve(module);
   c2f::python::bind_stereo(module);
   c2f::python::bind_segment(module);
+  c2f::python::bind_lift(module);
 }
