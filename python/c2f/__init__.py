@@ -72,7 +72,7 @@ def solve(
     max_steps: int = 0,
     plateau: int = 4,
     plateau_tolerance: float = 0.0,
-    start: str = "unary_argmin",
+    start: Union[str, np.ndarray] = "unary_argmin",
     callback: Optional[Callback] = None,
 ) -> Result:
     """Minimises `energy`, flat or coarse to fine; the C++ coarse_to_fine with a SolverChoice.
@@ -92,7 +92,9 @@ def solve(
     plateau: a level is refined (the original problem: finished) after this many steps without
         a decrease (on the original problem the solver's own convergence rule applies).
     plateau_tolerance: on coarse levels, decreases below this fraction of |E| do not count.
-    start: the first labeling: 'unary_argmin' or 'zero'.
+    start: the first labeling: 'unary_argmin', 'zero', or a labeling of your own (an integer
+        array of shape (N,) or the grid's (H, W)); on a coarse first level each group starts
+        at the label most of its members have in it.
     callback: called after every step with a dict (time, level, step, energy, variables,
         at_original); returning False stops the run (None or True goes on).
 

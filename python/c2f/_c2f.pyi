@@ -92,7 +92,7 @@ def _solve(
     max_steps: int,
     plateau: int,
     plateau_tolerance: float,
-    start: str,
+    start: Union[str, npt.ArrayLike],
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
 ) -> Dict[str, Any]:
     """The engine of c2f.solve (which documents the arguments); returns a dict."""

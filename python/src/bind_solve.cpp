@@ -50,7 +50,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
                const std::string& solver, const std::string& maxflow, const std::string& order,
                std::uint64_t seed, int near_radius, bool shift_moves,
                const std::string& near_levels, double time_limit, long max_steps, int plateau,
-               double plateau_tolerance, const std::string& start, const py::object& callback) {
+               double plateau_tolerance, const py::object& start, const py::object& callback) {
   SolverChoice choice;
   choice.kind =
       parsed("solver", solver, [](const std::string& t) { return solver_kind_from_string(t); });
@@ -80,8 +80,14 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   options.max_total_steps = max_steps;
   options.plateau_steps = {plateau};
   options.plateau_tolerance = plateau_tolerance;
-  options.initial_labeling =
-      parsed("start", start, [](const std::string& t) { return initial_labeling_from_string(t); });
+  if (py::isinstance<py::str>(start)) {
+    options.initial_labeling = parsed("start", start.cast<std::string>(), [](const std::string& t) {
+      return initial_labeling_from_string(t);
+    });
+  } else {
+    options.start_labeling = labeling_from(start, "start", model.energy.num_variables(),
+                                           model.energy.num_labels(), model.shape);
+  }
 
   StepRecord record(callback);
   auto run = [&](auto& levels) {

@@ -108,3 +108,15 @@ def test_same_result_as_c2f_solve(rng, tmp_path):
     np.testing.assert_array_equal(result.labeling, cli)
     summary = (tmp_path / "out" / "summary.txt").read_text()
     assert f"final energy {result.energy:.6f}" in summary
+
+
+def test_a_run_starts_from_a_labeling_of_ones_own(rng):
+    energy = c2f.Energy.grid(rng.random((10, 12, 4)), c2f.Term.potts(), weight=0.5)
+    start = rng.integers(0, 4, (10, 12))
+    result = c2f.solve(energy, "flat", start=start, solver="icm")
+    assert result.trace["energy"][0] == pytest.approx(energy.evaluate(start), rel=1e-12)
+    assert result.energy <= energy.evaluate(start)
+    with pytest.raises(ValueError, match="start: labels must lie in"):
+        c2f.solve(energy, start=np.full((10, 12), 4))
+    with pytest.raises(ValueError, match="start: expected a labeling of shape"):
+        c2f.solve(energy, start=np.zeros(7, dtype=int))

@@ -110,6 +110,45 @@ TEST_CASE("a flat run is a coarse-to-fine run without partitions", "[driver]") {
   CHECK(summary.energy <= summary.levels[0].start_energy);
 }
 
+TEST_CASE("a run starts from a labeling of one's own", "[driver][start]") {
+  Rng rng(11);
+  const PairwiseEnergy energy = random_grid_energy(rng, 9, 7, 4);
+  Labeling start(energy.num_variables());
+  for (Label& label : start) label = std::uniform_int_distribution<Label>(0, 3)(rng);
+  Options options;
+  options.start_labeling = start;
+  std::vector<StepEvent> events;
+  const auto record = [&](const StepEvent& event) {
+    events.push_back(event);
+    return ObserverDecision::continue_run;
+  };
+  // Flat: step 0 is the start labeling itself.
+  PartitionList flat;
+  IcmSolver solver;
+  const Summary summary = coarse_to_fine(energy, flat, solver, options, record);
+  REQUIRE_FALSE(events.empty());
+  CHECK(events.front().energy == energy.evaluate(start));
+  CHECK(summary.energy <= energy.evaluate(start));
+  // Coarse first: every group starts at its members' majority label.
+  events.clear();
+  const DensePartition blocks = random_partition(rng, energy.num_variables(), 8);
+  PartitionList levels({blocks});
+  IcmSolver coarse_solver;
+  coarse_to_fine(energy, levels, coarse_solver, options, record);
+  const Labeling expected =
+      transfer_labels_by_majority(start, DensePartition::identity(start.size()), blocks);
+  CHECK(close_relative(events.front().energy, energy.evaluate(expand(expected, blocks)), 1e-12));
+  // A start labeling of the wrong size or with a label out of range is refused by name.
+  options.start_labeling.pop_back();
+  PartitionList again;
+  CHECK_THROWS_WITH(coarse_to_fine(energy, again, solver, options),
+                    Catch::Contains("Options::start_labeling has 62 labels, the energy has 63"));
+  options.start_labeling = start;
+  options.start_labeling[5] = 4;
+  CHECK_THROWS_WITH(coarse_to_fine(energy, again, solver, options),
+                    Catch::Contains("gives variable 5 label 4, outside [0, 3]"));
+}
+
 TEST_CASE("coarse levels and the original problem can have solvers of their own", "[driver]") {
   Rng rng(31);
   const PairwiseEnergy energy = random_grid_energy(rng, 16, 16, 4);

@@ -94,7 +94,25 @@ auto& original_of(S& solvers) {
 template <class E, class P, class CoarseSolver, class OriginalSolver>
 Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
                    OriginalSolver& original_solver, const Rules& rules, const Observer& observer,
-                   InitialLabeling init, LevelTransfer transfer) {
+                   InitialLabeling init, std::span<const Label> start_labeling,
+                   LevelTransfer transfer) {
+  if (!start_labeling.empty()) {
+    const std::size_t n = energy_traits<E>::num_variables(energy);
+    const int num_labels = energy_traits<E>::num_labels(energy);
+    if (start_labeling.size() != n) {
+      throw std::invalid_argument("coarse_to_fine: Options::start_labeling has " +
+                                  std::to_string(start_labeling.size()) +
+                                  " labels, the energy has " + std::to_string(n) + " variables");
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      if (start_labeling[v] < 0 || start_labeling[v] >= num_labels) {
+        throw std::invalid_argument("coarse_to_fine: Options::start_labeling gives variable " +
+                                    std::to_string(v) + " label " +
+                                    std::to_string(start_labeling[v]) + ", outside [0, " +
+                                    std::to_string(num_labels - 1) + "]");
+      }
+    }
+  }
   LevelSolver<E, CoarseSolver, OriginalSolver> solver(coarse_solver, original_solver);
   RunClock clock;
   Summary summary;
@@ -128,7 +146,12 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
     const E& level_energy = at_original ? energy : *reduced;
 
     Labeling start;
-    if (level == 0) {
+    if (level == 0 && !start_labeling.empty()) {
+      start = at_original ? Labeling(start_labeling.begin(), start_labeling.end())
+                          : transfer_labels_by_majority(
+                                start_labeling, DensePartition::identity(start_labeling.size()),
+                                *partition);
+    } else if (level == 0) {
       start = initial_labeling(level_energy, init);
     } else if (at_original) {
       start = expand(labeling, *previous);
@@ -240,7 +263,8 @@ Summary coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Opti
   auto& original = detail::original_of(solvers);
   return detail::run_levels(energy, levels, coarse, original,
                             detail::with_solver_convergence(options, original, energy).rules(),
-                            observer, options.initial_labeling, options.level_transfer);
+                            observer, options.initial_labeling, options.start_labeling,
+                            options.level_transfer);
 }
 
 }  // namespace c2f

@@ -50,6 +50,11 @@ struct Options {
   /// Stop once the energy is at or below this value.
   std::optional<double> target_energy;
   InitialLabeling initial_labeling = InitialLabeling::unary_argmin;
+  /// When not empty, the labeling the run starts from instead (one label in [0, L) per original
+  /// variable; coarse_to_fine throws std::invalid_argument otherwise). On a coarse first level
+  /// each group starts at the label most of its members have here (ties: the lower label), so
+  /// the run's first energy can differ from this labeling's.
+  Labeling start_labeling;
   /// exact unless the partition provider was explicitly allowed to produce levels that do not
   /// refine each other.
   LevelTransfer level_transfer = LevelTransfer::exact;
