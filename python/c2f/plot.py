@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import os
+import sys
 from typing import Any, Dict, Mapping, Optional, Union
 
 import numpy as np
@@ -104,3 +105,54 @@ def error_against_time(traces: Mapping[str, TraceSource], *, title: str = "error
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
     return figure
+
+
+def main(argv: Optional[list] = None) -> int:
+    """`python3 -m c2f.plot -o OUT.png [--column energy|error] [--gap-to E] [--title T]
+    NAME=TRACE.csv ...`: the command line of this module, as scripts/demo uses it. The PNG is
+    written beside OUT and renamed over it once complete. Exit 0, 2 for bad arguments, 1 when a
+    trace cannot be read."""
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python3 -m c2f.plot",
+                                     description="Plots traces of c2f runs against time.")
+    parser.add_argument("-o", "--out", required=True, help="the PNG to write")
+    parser.add_argument("--column", choices=["energy", "error"], default="energy")
+    parser.add_argument("--gap-to", type=float, default=None,
+                        help="plot log10(energy - this reference) instead of E / E_first")
+    parser.add_argument("--title", default=None)
+    parser.add_argument("traces", nargs="+", metavar="NAME=TRACE.csv")
+    arguments = parser.parse_args(argv)
+    if not arguments.out.endswith(".png"):
+        parser.error(f"-o: expected a .png path, got '{arguments.out}'")
+    traces = {}
+    for item in arguments.traces:
+        name, sep, path = item.partition("=")
+        if not sep or not name or not path:
+            parser.error(f"expected NAME=TRACE.csv, got '{item}'")
+        traces[name] = path
+    import matplotlib
+
+    matplotlib.use("Agg")
+    try:
+        loaded = {name: read_trace(path) for name, path in traces.items()}
+        if arguments.column == "error":
+            figure = error_against_time(loaded, title=arguments.title or "error against time")
+        else:
+            figure = energy_against_time(loaded, gap_to=arguments.gap_to,
+                                         title=arguments.title or "energy against time")
+        partial = f"{arguments.out}.c2f-partial-{os.getpid()}"
+        try:
+            figure.savefig(partial, format="png", dpi=110, bbox_inches="tight")
+            os.replace(partial, arguments.out)
+        finally:
+            if os.path.exists(partial):
+                os.remove(partial)
+    except (OSError, ValueError) as error:
+        print(f"c2f.plot: error: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -36,3 +36,25 @@ def test_energy_and_error_plots_hold_the_traces(rng, tmp_path):
     (tmp_path / "empty.csv").write_text("time_s,level,step,energy,num_vars\n")
     with pytest.raises(ValueError, match="has no rows"):
         c2f.plot.read_trace(tmp_path / "empty.csv")
+
+
+def test_the_command_line_writes_a_png_or_says_why(tmp_path):
+    import subprocess
+    import sys
+
+    csv = tmp_path / "trace.csv"
+    csv.write_text("time_s,level,step,energy,num_vars,error\n0.1,0,0,10,4,0.5\n0.2,0,1,9,4,0.25\n")
+    out = tmp_path / "error.png"
+    run = subprocess.run([sys.executable, "-m", "c2f.plot", "-o", str(out), "--column", "error",
+                          f"run={csv}"], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    before = out.read_bytes()
+    run = subprocess.run([sys.executable, "-m", "c2f.plot", "-o", str(out),
+                          f"run={tmp_path / 'missing.csv'}"], capture_output=True, text=True)
+    assert run.returncode == 1 and "missing.csv" in run.stderr
+    assert out.read_bytes() == before  # the earlier plot stays
+    run = subprocess.run([sys.executable, "-m", "c2f.plot", "-o", str(tmp_path / "x.jpg"),
+                          f"run={csv}"], capture_output=True, text=True)
+    assert run.returncode == 2 and "expected a .png path" in run.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["error.png", "trace.csv"]
