@@ -34,6 +34,14 @@ fs::path sibling(const fs::path& folder, const std::string& kind, int number) {
 
 std::atomic<int> folders_opened{0};
 
+/// Whether the process that named sibling `name` ("PREFIX" PID "-" N) has ended.
+bool process_gone(const std::string& name, const std::string& prefix) {
+  const std::size_t dash = name.find('-', prefix.size());
+  const std::optional<long long> pid = parse_integer(
+      name.substr(prefix.size(), dash == std::string::npos ? dash : dash - prefix.size()));
+  return pid && *pid > 0 && ::kill(static_cast<pid_t>(*pid), 0) == -1 && errno == ESRCH;
+}
+
 /// Staging folders that runs of earlier versions created inside the output folder.
 bool legacy_staging(const std::string& name) {
   return name.rfind(".c2f-staging-", 0) == 0;
@@ -83,10 +91,11 @@ OutputFolder::OutputFolder(const fs::path& folder, const std::string& tool,
   staging_ = sibling(folder_, "staging", number);
   retired_ = sibling(folder_, "retired", number);
   // A run killed between the two renames of a fallback commit left no folder, only the old one
-  // aside: it is put back before anything else.
+  // aside: it is put back before anything else (not one a live run has aside for a moment).
   const std::string retired_prefix = sibling_prefix(folder_, "retired");
   for (const auto& entry : fs::directory_iterator(folder_.parent_path(), error)) {
-    if (entry.path().filename().string().rfind(retired_prefix, 0) == 0)
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(retired_prefix, 0) == 0 && process_gone(name, retired_prefix))
       restore_retired_folder(entry.path(), folder_);
   }
   claim_.emplace(folder_, tool, sharing_ == Sharing::by_files);
@@ -129,13 +138,7 @@ void OutputFolder::remove_stale_siblings() const {
     const std::string prefix = sibling_prefix(folder_, kind);
     for (const auto& entry : fs::directory_iterator(folder_.parent_path(), error)) {
       const std::string name = entry.path().filename().string();
-      if (name.rfind(prefix, 0) != 0) continue;
-      const std::string process =
-          name.substr(prefix.size(), name.find('-', prefix.size()) - prefix.size());
-      const std::optional<long long> pid = parse_integer(process);
-      const bool gone =
-          pid && *pid > 0 && ::kill(static_cast<pid_t>(*pid), 0) == -1 && errno == ESRCH;
-      if (gone) stale.push_back(entry.path());
+      if (name.rfind(prefix, 0) == 0 && process_gone(name, prefix)) stale.push_back(entry.path());
     }
   }
   for (const auto& entry : fs::directory_iterator(folder_, error)) {

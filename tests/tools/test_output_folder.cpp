@@ -206,6 +206,12 @@ TEST_CASE("OutputFolder cleans up after killed runs", "[output]") {
   { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
   CHECK(read_text(dir / "summary.txt") == "committed");
   CHECK(siblings(dir) == 0);
+  // One a live run has aside for a moment (between its two renames) is left alone.
+  const fs::path aside = root / (".out.c2f-retired-" + std::to_string(::getpid()) + "-99");
+  fs::rename(dir, aside);
+  { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
+  CHECK(fs::exists(aside / "summary.txt"));
+  CHECK_FALSE(fs::exists(dir));  // created by that run, given back when it failed
 }
 
 TEST_CASE("OutputFolder refuses folders it cannot replace and paths inside them", "[output]") {
