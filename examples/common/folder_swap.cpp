@@ -55,11 +55,15 @@ void carry_entry(const fs::path& from, const fs::path& to) {
 
 void check_carriable(const fs::path& folder, const KeepEntry& keep) {
   std::error_code error;
-  for (const auto& entry : fs::recursive_directory_iterator(folder, error)) {
-    const fs::path relative = fs::relative(entry.path(), folder, error);
-    if (!keep(relative.begin()->string())) continue;
-    if (!carriable(entry.symlink_status(error).type())) {
-      throw std::runtime_error("the output folder holds '" + entry.path().string() +
+  for (auto entry = fs::recursive_directory_iterator(folder, error);
+       entry != fs::recursive_directory_iterator(); entry.increment(error)) {
+    const fs::path relative = entry->path().lexically_relative(folder);
+    if (!keep(relative.begin()->string())) {
+      entry.disable_recursion_pending();  // an entry the run replaces: nothing in it is kept
+      continue;
+    }
+    if (!carriable(entry->symlink_status(error).type())) {
+      throw std::runtime_error("the output folder holds '" + entry->path().string() +
                                "', which is not a file, folder or symbolic link: a run "
                                "replaces the folder and cannot keep it; move it out");
     }

@@ -3,7 +3,6 @@
 #include <array>
 #include <filesystem>
 #include <stdexcept>
-#include <variant>
 
 #include "c2f/core/number_text.hpp"
 #include "solver_flags.hpp"
@@ -89,12 +88,9 @@ Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, 
     }
     return schedule;
   }
-  for (const LevelSpec& level : schedule.levels) {
-    if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected) {
-      throw std::invalid_argument("--schedule: level " + level.to_string() +
-                                  " needs a pixel grid; give --grid WIDTHxHEIGHT or use cp and "
-                                  "auto levels");
-    }
+  if (const std::string problem = schedule.validate_without_grid(); !problem.empty()) {
+    throw std::invalid_argument("--schedule: " + problem +
+                                "; give --grid WIDTHxHEIGHT or use cp and auto levels");
   }
   return schedule;
 }

@@ -32,12 +32,12 @@ PairwiseTerm truncated_quadratic(double truncation, int num_labels) {
 }
 
 PairwiseTerm table_term(const py::handle& object) {
-  const auto costs = float_array(object, "costs", 2, "(L, L)");
-  if (costs.shape(0) != costs.shape(1)) {
-    throw py::value_error("costs: expected a square array (L, L), got shape " + shape_text(costs));
+  FloatValues costs = float_values(object, "costs", 2, "(L, L)");
+  if (costs.shape[0] != costs.shape[1]) {
+    throw py::value_error("costs: expected a square array (L, L), got shape " +
+                          shape_text(costs.shape));
   }
-  return PairwiseTerm::table(static_cast<int>(costs.shape(0)),
-                             std::vector<double>(costs.data(), costs.data() + costs.size()));
+  return PairwiseTerm::table(static_cast<int>(costs.shape[0]), std::move(costs.values));
 }
 
 ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edges_object,
@@ -57,12 +57,12 @@ ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edg
       const std::size_t count = static_cast<std::size_t>(pairs.shape(0));
       std::vector<double> weights(count, 1.0);
       if (!weights_object.is_none()) {
-        const auto given = float_array(weights_object, "weights", 1, "(E,)");
-        if (static_cast<std::size_t>(given.shape(0)) != count) {
+        FloatValues given = float_values(weights_object, "weights", 1, "(E,)");
+        if (given.values.size() != count) {
           throw py::value_error("weights: expected shape (" + std::to_string(count) +
-                                ",), one per edge, got shape " + shape_text(given));
+                                ",), one per edge, got shape " + shape_text(given.shape));
         }
-        std::copy(given.data(), given.data() + count, weights.begin());
+        weights = std::move(given.values);
       }
       edges.reserve(count);
       for (std::size_t e = 0; e < count; ++e) {
@@ -97,21 +97,20 @@ ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term, doubl
   FloatValues unary = float_values(unary_object, "unary", 3, "(H, W, L)");
   const py::ssize_t height = unary.shape[0], width = unary.shape[1];
   const int labels = static_cast<int>(unary.shape[2]);
-  py::array_t<double, py::array::c_style> weights;
+  FloatValues weights;
   if (!weights_object.is_none()) {
     const std::string shape = "(H, W, " + std::to_string(connectivity / 2) + ")";
-    weights = float_array(weights_object, "weights", 3, shape);
-    if (weights.shape(0) != height || weights.shape(1) != width ||
-        weights.shape(2) != connectivity / 2) {
+    weights = float_values(weights_object, "weights", 3, shape);
+    if (weights.shape != std::vector<py::ssize_t>{height, width, connectivity / 2}) {
       throw py::value_error(
           "weights: expected shape (" + std::to_string(height) + ", " + std::to_string(width) +
           ", " + std::to_string(connectivity / 2) + ") for a " + std::to_string(connectivity) +
           "-connected grid (right, down" + (connectivity == 8 ? ", down-right, down-left" : "") +
-          "), got shape " + shape_text(weights));
+          "), got shape " + shape_text(weights.shape));
     }
   }
   const GridShape shape{static_cast<std::size_t>(width), static_cast<std::size_t>(height)};
-  const double* given = weights_object.is_none() ? nullptr : weights.data();
+  const double* given = weights.values.empty() ? nullptr : weights.values.data();
   const std::size_t per_pixel = static_cast<std::size_t>(connectivity / 2);
   // The edge (u, v) to the k-th neighbour of u: right, down, down-right, down-left.
   const auto edge_weight = [&](VariableIndex u, VariableIndex v) {

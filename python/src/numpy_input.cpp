@@ -4,11 +4,14 @@
 
 namespace c2f::python {
 
-std::string shape_text(const py::array& array) {
+std::string shape_text(const std::vector<py::ssize_t>& shape) {
   std::string text = "(";
-  for (py::ssize_t d = 0; d < array.ndim(); ++d)
-    text += (d ? ", " : "") + std::to_string(array.shape(d));
-  return text + (array.ndim() == 1 ? ",)" : ")");
+  for (std::size_t d = 0; d < shape.size(); ++d) text += (d ? ", " : "") + std::to_string(shape[d]);
+  return text + (shape.size() == 1 ? ",)" : ")");
+}
+
+std::string shape_text(const py::array& array) {
+  return shape_text(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()));
 }
 
 namespace {
@@ -35,27 +38,6 @@ void require_shape(const py::array& array, const std::string& name, int ndim,
 }
 
 }  // namespace
-
-py::array_t<double, py::array::c_style> float_array(const py::handle& object,
-                                                    const std::string& name, int ndim,
-                                                    const std::string& shape) {
-  const py::array array = as_numpy(object, name, "a float32 or float64 numpy array");
-  const char kind = array.dtype().kind();
-  if (kind != 'f' || (array.itemsize() != 4 && array.itemsize() != 8)) {
-    throw py::type_error(name + ": expected a float32 or float64 array, got dtype " +
-                         std::string(py::str(array.dtype())));
-  }
-  require_shape(array, name, ndim, shape);
-  auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-  const double* data = values.data();
-  for (py::ssize_t i = 0; i < values.size(); ++i) {
-    if (!std::isfinite(data[i])) {
-      throw py::value_error(name + ": every entry must be finite; entry " + std::to_string(i) +
-                            " (flat index) is " + (std::isnan(data[i]) ? "nan" : "infinite"));
-    }
-  }
-  return values;
-}
 
 namespace {
 
@@ -134,10 +116,7 @@ Labeling labeling_from(const py::handle& object, const std::string& name, std::s
   std::string expected = "(" + std::to_string(num_variables) + ",)";
   bool fits = array.ndim() == 1 && static_cast<std::size_t>(array.shape(0)) == num_variables;
   if (!shape.empty() && shape.size() > 1) {
-    std::string grid = "(";
-    for (std::size_t d = 0; d < shape.size(); ++d)
-      grid += (d ? ", " : "") + std::to_string(shape[d]);
-    expected += " or " + grid + ")";
+    expected += " or " + shape_text(shape);
     bool same = array.ndim() == static_cast<py::ssize_t>(shape.size());
     for (std::size_t d = 0; same && d < shape.size(); ++d) same = array.shape(d) == shape[d];
     fits = fits || same;

@@ -16,22 +16,16 @@ namespace c2f::python {
 
 namespace py = pybind11;
 
-/// `object` as a C-contiguous float64 array with `ndim` dimensions (copied when it is float32,
-/// non-contiguous or has negative strides). Throws TypeError naming `name` unless it is a
-/// float32 or float64 numpy array, ValueError unless it has `ndim` dimensions (described by
-/// `shape`, e.g. "(H, W, L)"), is not empty, and every entry is finite.
-py::array_t<double, py::array::c_style> float_array(const py::handle& object,
-                                                    const std::string& name, int ndim,
-                                                    const std::string& shape);
-
 /// The entries of a float array and its shape.
 struct FloatValues {
   std::vector<double> values;  ///< row-major
   std::vector<py::ssize_t> shape;
 };
 
-/// The same checks as float_array, with the entries converted to double in one pass (no
-/// intermediate array; the GIL released while it runs): what energies are built from.
+/// The entries of `object` as doubles, converted in one pass (no intermediate array; the GIL
+/// released while it runs). Throws TypeError naming `name` unless it is a float32 or float64
+/// numpy array, ValueError unless it has `ndim` dimensions (described by `shape`, e.g.
+/// "(H, W, L)"), is not empty, and every entry is finite. Strided arrays are read in order.
 FloatValues float_values(const py::handle& object, const std::string& name, int ndim,
                          const std::string& shape);
 
@@ -52,7 +46,8 @@ Labeling labeling_from(const py::handle& object, const std::string& name, std::s
 py::array_t<std::int32_t> labeling_array(const Labeling& labeling,
                                          const std::vector<py::ssize_t>& shape);
 
-/// "(3, 4, 5)".
+/// "(3, 4, 5)"; "(3,)" for one dimension.
+std::string shape_text(const std::vector<py::ssize_t>& shape);
 std::string shape_text(const py::array& array);
 
 }  // namespace c2f::python

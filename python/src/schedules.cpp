@@ -35,14 +35,10 @@ Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
   }
   if (const std::string problem = schedule.validate(model.energy.num_labels()); !problem.empty())
     throw py::value_error("schedule: " + problem);
-  if (model.shape.empty()) {
-    for (const LevelSpec& level : schedule.levels) {
-      if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected) {
-        throw py::value_error("schedule: level " + level.to_string() +
-                              " needs a pixel grid; build the energy with Energy.grid, or use cp "
-                              "and auto levels");
-      }
-    }
+  if (const std::string problem = model.shape.empty() ? schedule.validate_without_grid() : "";
+      !problem.empty()) {
+    throw py::value_error("schedule: " + problem +
+                          "; build the energy with Energy.grid, or use cp and auto levels");
   }
   return schedule;
 }

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "support/output_folders.hpp"
 #include "support/run_tool.hpp"
 #include "support/synthetic_stereo.hpp"
 
@@ -30,15 +31,6 @@ Files read_folder(const fs::path& folder) {
     files[name] = {std::istreambuf_iterator<char>(in), {}};
   }
   return files;
-}
-
-/// Entries beside `folder` that runs on it leave while they work.
-std::size_t siblings(const fs::path& folder) {
-  std::size_t count = 0;
-  const std::string prefix = "." + folder.filename().string() + ".c2f-";
-  for (const auto& entry : fs::directory_iterator(folder.parent_path()))
-    count += entry.path().filename().string().rfind(prefix, 0) == 0;
-  return count;
 }
 
 c2f::test::ToolResult run_shell(const std::string& command) {
@@ -89,7 +81,7 @@ TEST_CASE("c2f-stereo refuses a folder it does not own and leaves its files alon
                                        "' is not empty and was not written by a c2f tool"));
   CHECK(read_folder(scene.out) == before);
   CHECK_FALSE(fs::exists(scene.out / ".c2f-owner"));
-  CHECK(siblings(scene.out) == 0);
+  CHECK(c2f::test::run_leftovers(scene.out) == 0);
 }
 
 TEST_CASE("two c2f-stereo runs into one folder at once: the second is refused by name",
@@ -127,7 +119,7 @@ TEST_CASE("a run killed at any step of its commit leaves one run's folder, never
         run_stereo_injected("-e inject=renameat2:signal=KILL", scene.inputs + " --labels 12");
     CHECK(r.exit_code != 0);
     CHECK(read_folder(scene.out) == first);
-    CHECK(siblings(scene.out) == 1);  // its staging folder, removed by the next run
+    CHECK(c2f::test::run_leftovers(scene.out) == 1);  // its staging folder, removed by the next run
   }
   SECTION("killed just after the exchange: the new run's folder, whole") {
     const auto r =
@@ -163,7 +155,7 @@ TEST_CASE("a run killed at any step of its commit leaves one run's folder, never
   const auto r = c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 9");
   INFO(r.output);
   CHECK(r.exit_code == 0);
-  CHECK(siblings(scene.out) == 0);
+  CHECK(c2f::test::run_leftovers(scene.out) == 0);
 }
 
 TEST_CASE("a FIFO given as --trace is written in place while a process reads it", "[cli][commit]") {

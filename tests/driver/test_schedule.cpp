@@ -68,6 +68,16 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
                     Catch::Contains("needs superpixels"));
 }
 
+TEST_CASE("schedules say which levels need a pixel grid", "[lift][schedule]") {
+  CHECK(Schedule::parse("cp:1,1 cp:2,1 flat").validate_without_grid().empty());
+  CHECK(Schedule::parse("auto:0.1,0.5").validate_without_grid().empty());
+  CHECK(Schedule::parse("cp:1,1 cp:2,1/cc").validate_without_grid() ==
+        "level cp:2,1/cc needs a pixel grid");
+  CHECK(Schedule::parse("agg:1 cp:1,1").validate_without_grid() ==
+        "level agg:1 needs a pixel grid");
+  CHECK(Schedule::parse("flat").validate_without_grid().empty());
+}
+
 TEST_CASE("every schedule level refines the previous one", "[lift][schedule][property]") {
   Rng rng(3);
   const GridShape shape{14, 11};

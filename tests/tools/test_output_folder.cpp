@@ -17,6 +17,7 @@
 #include "output_folder.hpp"
 #include "staged_file.hpp"
 #include "staged_paths.hpp"
+#include "support/output_folders.hpp"
 
 namespace {
 
@@ -49,15 +50,6 @@ fs::path fresh(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-/// Entries beside `folder` that runs on it leave while they work.
-std::size_t siblings(const fs::path& folder) {
-  std::size_t count = 0;
-  const std::string prefix = "." + folder.filename().string() + ".c2f-";
-  for (const auto& entry : fs::directory_iterator(folder.parent_path()))
-    count += entry.path().filename().string().rfind(prefix, 0) == 0;
-  return count;
 }
 
 }  // namespace
@@ -95,7 +87,7 @@ TEST_CASE("OutputFolder replaces the folder in one step and keeps the user's fil
   REQUIRE(::stat((dir / "notes.txt").c_str(), &after) == 0);
   CHECK(after.st_ino == before.st_ino);  // the same file, linked into the new folder
   CHECK(read_text(dir / c2f::examples::FolderClaim::kMarker).rfind("c2f-test\n", 0) == 0);
-  CHECK(siblings(dir) == 0);
+  CHECK(c2f::test::run_leftovers(dir) == 0);
 }
 
 TEST_CASE("OutputFolder without a commit leaves the folder and other outputs as they were",
@@ -122,7 +114,7 @@ TEST_CASE("OutputFolder without a commit leaves the folder and other outputs as 
   CHECK(contents(dir) == before);
   CHECK(read_text(elsewhere) == "earlier trace");
   CHECK(contents(root).size() == before.size() + 2);  // out/, its files and the trace: no partial
-  CHECK(siblings(dir) == 0);
+  CHECK(c2f::test::run_leftovers(dir) == 0);
   {
     OutputFolder output(dir, "c2f-test", {});
     CHECK(output.stage("/dev/null") == fs::path("/dev/null"));  // devices are written in place
@@ -205,7 +197,7 @@ TEST_CASE("OutputFolder cleans up after killed runs", "[output]") {
   fs::rename(dir, root / ".out.c2f-retired-999999999-0");
   { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
   CHECK(read_text(dir / "summary.txt") == "committed");
-  CHECK(siblings(dir) == 0);
+  CHECK(c2f::test::run_leftovers(dir) == 0);
   // One a live run has aside for a moment (between its two renames) is left alone.
   const fs::path aside = root / (".out.c2f-retired-" + std::to_string(::getpid()) + "-99");
   fs::rename(dir, aside);

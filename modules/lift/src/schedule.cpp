@@ -168,6 +168,14 @@ std::string Schedule::validate(int num_labels) const {
   return {};
 }
 
+std::string Schedule::validate_without_grid() const {
+  for (const LevelSpec& level : levels) {
+    if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected)
+      return "level " + level.to_string() + " needs a pixel grid";
+  }
+  return {};
+}
+
 std::string Schedule::validate_image(GridShape image) const {
   const std::size_t shorter = std::min(image.width, image.height);
   for (const LevelSpec& level : levels) {

@@ -49,6 +49,10 @@ struct Schedule {
   /// Empty when every level can be built on an image of this size, else a message naming the
   /// first level that cannot (a SLIC region larger than the image's shorter side).
   [[nodiscard]] std::string validate_image(GridShape image) const;
+  /// Empty when every level can be built for an energy that is no pixel grid (colour passing,
+  /// auto levels), else "level L needs a pixel grid" for the first that cannot (an image
+  /// partition, or /cc: connected components need grid neighbours).
+  [[nodiscard]] std::string validate_without_grid() const;
 };
 
 }  // namespace c2f
