@@ -1,6 +1,6 @@
 #pragma once
-// One output file outside a run's output folder (c2f-plot's PNG, a --trace or --export-uai
-// elsewhere), replaced in one step: written beside its target and renamed over it once complete.
+// One output file outside a run's output folder (a --trace or --export-uai elsewhere), replaced
+// in one step: written beside its target and renamed over it once complete.
 
 #include <filesystem>
 

@@ -96,7 +96,9 @@ def solve(
         array of shape (N,) or the grid's (H, W)); on a coarse first level each group starts
         at the label most of its members have in it.
     callback: called after every step with a dict (time, level, step, energy, variables,
-        at_original); returning False stops the run (None or True goes on).
+        at_original, labeling: the original variables' labeling this step stands for, in the
+        result's shape, a copy made per step); returning False stops the run (None or True
+        goes on).
 
     The GIL is released while the solver runs. Ctrl-C ends the run at its next step and raises
     KeyboardInterrupt with the best result so far as its `result` attribute; an exception

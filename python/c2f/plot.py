@@ -11,6 +11,7 @@ matplotlib is needed (Debian: python3-matplotlib); it is imported when a functio
 from __future__ import annotations
 
 import csv
+import math
 import os
 import sys
 from typing import Any, Dict, Mapping, Optional, Union
@@ -24,21 +25,42 @@ TraceSource = Union[Any, Mapping[str, np.ndarray], str, os.PathLike]
 def read_trace(path: Union[str, os.PathLike]) -> Trace:
     """A tool's trace.csv (time_s,level,step,energy,num_vars[,error]) as arrays named like
     Result.trace: time, level, step, energy, variables (and error). Raises ValueError naming the
-    file when it has no rows or lacks a column."""
+    file, line, column and text when the file has no rows, lacks a column, or holds a value that
+    is not a finite number within +-1e300 (a time must also be at least 0)."""
+    name = os.fspath(path)
     with open(path, newline="") as file:
         rows = list(csv.DictReader(file))
     if not rows:
-        raise ValueError(f"trace '{os.fspath(path)}' has no rows")
+        raise ValueError(f"trace '{name}' has no rows")
     names = {"time": "time_s", "level": "level", "step": "step", "energy": "energy",
              "variables": "num_vars", "error": "error"}
     trace = {}
-    for name, column in names.items():
+    for key, column in names.items():
         if column not in rows[0]:
-            if name == "error":
+            if key == "error":
                 continue
-            raise ValueError(f"trace '{os.fspath(path)}' has no column '{column}'")
-        trace[name] = np.array([float(row[column]) for row in rows])
+            raise ValueError(f"trace '{name}' has no column '{column}'")
+        values = np.empty(len(rows))
+        for index, row in enumerate(rows):
+            values[index] = _plottable(row[column], name, index + 2, column)
+        trace[key] = values
     return trace
+
+
+def _plottable(text: Optional[str], name: str, line: int, column: str) -> float:
+    """The value of one cell, or a ValueError saying which cell and why it cannot be drawn."""
+    if text is None or not text.strip():
+        raise ValueError(f"trace '{name}', line {line}: no {column} value")
+    where = f"trace '{name}', line {line}: {column} '{text}'"
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{where} is not a number") from None
+    if not math.isfinite(value) or abs(value) > 1e300:
+        raise ValueError(f"{where} is not a finite number within +-1e300")
+    if column == "time_s" and value < 0:
+        raise ValueError(f"{where} is not a time (negative)")
+    return value
 
 
 def _trace(source: TraceSource) -> Trace:
@@ -107,6 +129,19 @@ def error_against_time(traces: Mapping[str, TraceSource], *, title: str = "error
     return figure
 
 
+def _finite(text: str) -> float:
+    """--gap-to's value: a finite number within +-1e300, or a usage error saying so."""
+    import argparse
+
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value) or abs(value) > 1e300:
+        raise argparse.ArgumentTypeError(f"expected a finite number, got '{text}'")
+    return value
+
+
 def main(argv: Optional[list] = None) -> int:
     """`python3 -m c2f.plot -o OUT.png [--column energy|error] [--gap-to E] [--title T]
     NAME=TRACE.csv ...`: the command line of this module, as scripts/demo uses it. The PNG is
@@ -118,7 +153,7 @@ def main(argv: Optional[list] = None) -> int:
                                      description="Plots traces of c2f runs against time.")
     parser.add_argument("-o", "--out", required=True, help="the PNG to write")
     parser.add_argument("--column", choices=["energy", "error"], default="energy")
-    parser.add_argument("--gap-to", type=float, default=None,
+    parser.add_argument("--gap-to", type=_finite, default=None,
                         help="plot log10(energy - this reference) instead of E / E_first")
     parser.add_argument("--title", default=None)
     parser.add_argument("traces", nargs="+", metavar="NAME=TRACE.csv")

@@ -137,7 +137,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     throw py::value_error(std::string("schedule: ") + error.what());
   }
 
-  StepRecord record(callback);
+  StepRecord record(callback, {scene.image.rows, scene.image.cols});
   Summary summary;
   std::string report;
   {
@@ -166,7 +166,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     }
     report = summary.report();
   }
-  return record.result(summary, {scene.image.rows, scene.image.cols}, report);
+  return record.result(summary, report);
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
                                            model.energy.num_labels(), model.shape);
   }
 
-  StepRecord record(callback);
+  StepRecord record(callback, model.shape);
   auto run = [&](auto& levels) {
     py::gil_scoped_release free;
     return with_chosen_solvers(choice, [&](auto&& solvers) {
@@ -112,7 +112,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
         "schedule: expected a schedule text ('flat', 'paper', 'cp:1,1 cp:2,1') or "
         "a list of partitions (integer arrays of group ids, coarsest first)");
   }
-  return record.result(summary, model.shape, report);
+  return record.result(summary, report);
 }
 
 }  // namespace

@@ -8,7 +8,8 @@ namespace c2f::python {
 
 namespace py = pybind11;
 
-StepRecord::StepRecord(py::object callback) : callback_(std::move(callback)) {}
+StepRecord::StepRecord(py::object callback, std::vector<py::ssize_t> shape)
+    : callback_(std::move(callback)), shape_(std::move(shape)) {}
 
 StepRecord::~StepRecord() {
   // Only when result() did not hand the exception back (it threw before): drop it.
@@ -34,6 +35,7 @@ ObserverDecision StepRecord::operator()(const StepEvent& event) {
     info["energy"] = event.energy;
     info["variables"] = event.num_variables;
     info["at_original"] = event.at_original;
+    info["labeling"] = labeling_array(event.ground_labeling(), shape_);
     const py::object answer = callback_(info);
     if (!answer.is_none() && !answer.cast<bool>()) return ObserverDecision::stop;
   } catch (py::error_already_set& error) {
@@ -49,10 +51,9 @@ ObserverDecision StepRecord::stop_for_python_error() {
   return ObserverDecision::stop;
 }
 
-py::dict StepRecord::result(const Summary& summary, const std::vector<py::ssize_t>& shape,
-                            const std::string& report) {
+py::dict StepRecord::result(const Summary& summary, const std::string& report) {
   py::dict result;
-  result["labeling"] = labeling_array(summary.labeling, shape);
+  result["labeling"] = labeling_array(summary.labeling, shape_);
   result["energy"] = summary.energy;
   result["reason"] = std::string(to_string(summary.reason));
   result["seconds"] = summary.seconds;

@@ -18,8 +18,10 @@ namespace c2f::python {
 class StepRecord {
  public:
   /// `callback` (None: none) is called after every step with a dict (time, level, step,
-  /// energy, variables, at_original); a False answer stops the run.
-  explicit StepRecord(pybind11::object callback);
+  /// energy, variables, at_original, labeling: the original variables' labeling this step
+  /// stands for, in `shape`, O(N) per step); a False answer stops the run. `shape` is the
+  /// labeling's array shape (empty: flat).
+  StepRecord(pybind11::object callback, std::vector<pybind11::ssize_t> shape);
   ~StepRecord();
   StepRecord(const StepRecord&) = delete;
   StepRecord& operator=(const StepRecord&) = delete;
@@ -27,11 +29,10 @@ class StepRecord {
   /// The observer; called with the GIL released (it takes it for the callback and signals).
   ObserverDecision operator()(const StepEvent& event);
 
-  /// The run's result as a dict (labeling in `shape`, empty: flat), with `report` as its
-  /// summary. Throws pybind11::error_already_set, after attaching the dict as `result`, when a
-  /// Python exception (KeyboardInterrupt, the callback's own) stopped the run. Call with the GIL.
-  pybind11::dict result(const Summary& summary, const std::vector<pybind11::ssize_t>& shape,
-                        const std::string& report);
+  /// The run's result as a dict (labeling in the shape), with `report` as its summary. Throws
+  /// pybind11::error_already_set, after attaching the dict as `result`, when a Python
+  /// exception (KeyboardInterrupt, the callback's own) stopped the run. Call with the GIL.
+  pybind11::dict result(const Summary& summary, const std::string& report);
 
  private:
   ObserverDecision stop_for_python_error();
@@ -41,6 +42,7 @@ class StepRecord {
   std::vector<long> step_;
   std::vector<std::size_t> variables_;
   pybind11::object callback_;
+  std::vector<pybind11::ssize_t> shape_;
   PyObject* error_type_ = nullptr;  ///< the fetched exception (owned references)
   PyObject* error_value_ = nullptr;
   PyObject* error_traceback_ = nullptr;

@@ -75,7 +75,22 @@ def test_limits_and_a_callback_that_stops(rng):
     result = c2f.solve(energy, callback=stop_at_three)
     assert result.reason == "observer"
     assert [s["step"] for s in seen] == [0, 1, 2, 3]
-    assert set(seen[0]) == {"time", "level", "step", "energy", "variables", "at_original"}
+    assert set(seen[0]) == {"time", "level", "step", "energy", "variables", "at_original",
+                            "labeling"}
+    assert seen[-1]["labeling"].shape == (30, 30)
+    np.testing.assert_array_equal(seen[-1]["labeling"], result.labeling)
+
+
+def test_the_callback_sees_each_steps_labeling_on_coarse_levels_too(rng):
+    """On a coarse level the step's labeling is the original variables' labeling it stands for:
+    its energy is the step's energy."""
+    energy = c2f.Energy.grid(rng.random((16, 16, 4)), c2f.Term.potts(), weight=0.4)
+    steps = []
+    c2f.solve(energy, "paper", callback=lambda step: steps.append(step))
+    assert not steps[0]["at_original"] and steps[-1]["at_original"]
+    for step in steps:
+        assert step["labeling"].shape == (16, 16)
+        assert energy.evaluate(step["labeling"]) == pytest.approx(step["energy"], rel=1e-12)
 
 
 def test_a_callback_exception_is_raised_with_the_result(rng):

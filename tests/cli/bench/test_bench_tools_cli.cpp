@@ -1,7 +1,5 @@
-// The benchmark tools and c2f-plot (built with the benchmarks): malformed arguments are an
-// error naming the option and what was expected (exit code 2, before any data is read);
-// traces holding values a plot cannot show are an error naming the file, the line and the
-// value, not a crash.
+// The benchmark tools (built with the benchmarks): malformed arguments are an error naming the
+// option and what was expected (exit code 2, before any data is read).
 
 #include <catch2/catch.hpp>
 
@@ -43,75 +41,6 @@ bool shared_data_has(const std::filesystem::path& needed, const char* what) {
 }
 
 }  // namespace
-
-TEST_CASE("c2f-plot refuses traces with non-finite or unplottable values", "[plot][cli]") {
-  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-plot";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const std::string header = "time_s,level,step,energy,num_vars\n";
-  auto trace = [&](const std::string& name, const std::string& rows) {
-    const auto path = dir / name;
-    std::ofstream(path) << header << rows;
-    return path.string();
-  };
-  const std::string good = trace("good.csv", "0.1,0,0,10,4\n0.2,0,1,8,4\n");
-  for (const auto& [name, rows, expected] :
-       {std::tuple{"nan.csv", "0.1,0,0,nan,4\n", "energy 'nan' is not a finite number"},
-        std::tuple{"inf.csv", "0.1,0,0,10,4\ninf,0,1,8,4\n", "time_s 'inf' is not a time"},
-        std::tuple{"huge.csv", "0.1,0,0,1e308,4\n0.2,0,1,-1e308,4\n",
-                   "energy '1e308' is not a finite number within +-1e300"},
-        std::tuple{"garbage.csv", "0.1,0,0,10x,4\n", "energy '10x'"}}) {
-    const auto r = c2f::test::run_tool(
-        C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + trace(name, rows));
-    INFO(name << ": " << r.output);
-    CHECK(r.exit_code != 0);
-    CHECK(r.exit_code != -1);  // not killed by a signal
-    CHECK_THAT(r.output, Catch::Contains(name) && Catch::Contains(expected));
-  }
-  const auto ok =
-      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() + " a=" + good);
-  CHECK(ok.exit_code == 0);
-  CHECK(std::filesystem::exists(dir / "plot.png"));
-  // A failed plot leaves the earlier one as it was (the PNG is staged, then moved into place);
-  // a name that is not a PNG is refused by name.
-  const auto read_file = [](const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-  };
-  const std::string earlier = read_file(dir / "plot.png");
-  const auto failed =
-      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.png").string() +
-                                               " a=" + trace("nan.csv", "0.1,0,0,nan,4\n"));
-  CHECK(failed.exit_code != 0);
-  CHECK(read_file(dir / "plot.png") == earlier);
-  // A write that fails part way (a file-size limit of 512 bytes) is an error, and the earlier
-  // plot survives it too (c2f-plot wrote in place before, so such a failure truncated it).
-  const auto cut =
-      c2f::test::run_tool("sh", "-c 'ulimit -f 1; exec " + std::string(C2F_PLOT_BINARY) + " -o " +
-                                    (dir / "plot.png").string() + " a=" + good + "'");
-  INFO(cut.output);
-  CHECK(cut.exit_code == 1);
-  CHECK_THAT(cut.output, Catch::Contains("c2f-plot: error:") && Catch::Contains("plot.png"));
-  CHECK(read_file(dir / "plot.png") == earlier);
-  const auto not_png =
-      c2f::test::run_tool(C2F_PLOT_BINARY, "-o " + (dir / "plot.txt").string() + " a=" + good);
-  CHECK(not_png.exit_code == 2);
-  CHECK_THAT(not_png.output, Catch::Contains("plot.txt': expected a file name ending in .png"));
-  // The gap view: a finite reference is drawn (values below it sit on the floor), any other
-  // text is refused by name.
-  const auto gap = c2f::test::run_tool(
-      C2F_PLOT_BINARY, "-o " + (dir / "gap.png").string() + " --gap-to 9 a=" + good);
-  CHECK(gap.exit_code == 0);
-  CHECK(std::filesystem::exists(dir / "gap.png"));
-  for (const char* bad : {"nan", "1e400", "low"}) {
-    const auto r = c2f::test::run_tool(
-        C2F_PLOT_BINARY, "-o " + (dir / "bad.png").string() + " --gap-to " + bad + " a=" + good);
-    CHECK(r.exit_code == 2);
-    CHECK_THAT(r.output, Catch::Contains(std::string("--gap-to: expected a finite number, got '") +
-                                         bad + "'"));
-  }
-  CHECK_FALSE(std::filesystem::exists(dir / "bad.png"));
-}
 
 TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli][malformed]") {
   const std::string bench = C2F_BENCH_DIR;
@@ -162,9 +91,6 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-segment", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
       {"c2f-bench-expansion", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
       {"c2f-bench-crossval", "summarize /dev/null", "'/dev/null' is not a c2f-bench-crossval rows"},
-      {"c2f-plot", "-o plot.png", "need -o PLOT.png and at least one NAME=TRACE.csv"},
-      {"c2f-plot", "-o plot.png =trace.csv", "unexpected argument '=trace.csv'"},
-      {"c2f-plot", "-o plot.png --column", "the required argument for option '--column'"},
   };
   for (const auto& [tool, arguments, expected] : cases) {
     const auto r = c2f::test::run_tool(bench + "/" + tool, arguments);
