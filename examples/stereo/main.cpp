@@ -42,8 +42,9 @@ void check_paths(const examples::StereoCommand& command) {
        {"--mask", command.pair.mask}});
 }
 
-/// The scene the command names, downscaled, with the schedule checked against its size.
-StereoScene load_input(const examples::StereoCommand& command) {
+/// The scene the command names, downscaled, with the label count set (--labels or the scene's
+/// range) and the schedule checked against both.
+StereoScene load_input(examples::StereoCommand& command) {
   StereoScene scene;
   if (command.scene.empty()) {
     scene = downscale(load_stereo_pair(command.pair), command.downscale);
@@ -56,6 +57,7 @@ StereoScene load_input(const examples::StereoCommand& command) {
   }
   if (const std::string problem = command.schedule.validate_image(scene.shape()); !problem.empty())
     throw std::invalid_argument("--schedule: " + command.schedule.to_string() + ": " + problem);
+  examples::set_labels_from_scene(command, scene);
   return scene;
 }
 
@@ -101,7 +103,7 @@ std::string near_and_shift_moves_text(const SolverChoice& solver) {
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
                    const ScheduleProvider& levels, const Summary& summary,
-                   const std::optional<BadPixelRates>& rates,
+                   const std::optional<BadPixelRates>& rates, const std::string& dataset_error,
                    const examples::InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
   std::ofstream report((out / "summary.txt").string());
@@ -113,6 +115,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << "TSGO step 1: " << problem.seconds
          << " s (not on the run clock, same for every schedule)\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
+  if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {
     report << rates->brief() << "\nnon-occluded pixels from: " << scene.nonoccluded_source
            << "\nreference variant (bad>1 over all pixels): " << 100 * rates->reference_variant
@@ -129,10 +132,19 @@ void announce(const examples::StereoCommand& command, const StereoScene& scene) 
                std::string(to_string(command.solver.kind)).c_str());
 }
 
-/// The run's last lines on stderr: the bad-pixel rates (with GT), then the common end.
+/// The dataset's own error line for the labeling ("D1 ...: all 4.56%"), or "" for a scene
+/// scored by the default bad 1 or without GT (write_disparity_outputs' rates cover those).
+std::string dataset_error_line(const StereoScene& scene, std::span<const Label> labeling) {
+  if (scene.gt.empty() || scene.measure == ErrorMeasure{}) return {};
+  return scene_errors(labels_to_disparity(labeling, scene.shape()), scene).brief(scene.measure);
+}
+
+/// The run's last lines on stderr: the error rates (with GT), then the common end.
 void report_end(const examples::StereoCommand& command, const Summary& summary,
-                const std::optional<BadPixelRates>& rates,
+                const std::optional<BadPixelRates>& rates, const std::string& dataset_error,
                 const examples::InterruptWatch& interrupts) {
+  if (!dataset_error.empty() && !command.quiet)
+    std::fprintf(stderr, "c2f-stereo: %s\n", dataset_error.c_str());
   if (rates && !command.quiet) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
   examples::print_run_end("c2f-stereo", summary, interrupts, command.out_dir, command.quiet);
 }
@@ -145,7 +157,7 @@ int main(int argc, char** argv) {
   return examples::run_tool("c2f-stereo", [&] {
     const auto parsed = examples::parse_stereo_command(argc, argv);
     if (!parsed) return 0;
-    const examples::StereoCommand& command = *parsed;
+    examples::StereoCommand command = *parsed;
 
     check_paths(command);
     const StereoScene scene = load_input(command);
@@ -168,10 +180,12 @@ int main(int argc, char** argv) {
 
     const auto rates = write_disparity_outputs(record.staging().string(), summary.labeling, scene,
                                                command.tsgo.labels);
-    write_summary(record.staging(), command, scene, problem, levels, summary, rates, interrupts);
+    const std::string dataset_error = dataset_error_line(scene, summary.labeling);
+    write_summary(record.staging(), command, scene, problem, levels, summary, rates, dataset_error,
+                  interrupts);
     partitions.write(record.staging().string(), scene.shape());
     record.commit();
-    report_end(command, summary, rates, interrupts);
+    report_end(command, summary, rates, dataset_error, interrupts);
     return interrupts.exit_code();
   });
 }

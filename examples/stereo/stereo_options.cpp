@@ -25,10 +25,14 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       "summary.txt and, with ground truth, error.png. Progress goes to stderr.\n\nOptions");
   command.data = "../shared/data";
   options.path("out,o", &command.out_dir, "output directory (created)")
-      .text("scene", &command.scene, "scene name from DATA/scenes.csv (loads views, GT and masks)")
+      .text("scene", &command.scene,
+            "scene name from DATA/scenes.csv, or middlebury2014/NAME or kitti2015/ID (loads "
+            "views, GT and masks; scored by the dataset's own measure)")
       .path("data", &command.data, "data root for --scene")
-      .integer("labels", &command.tsgo.labels, {2, 256},
-               "number of disparity labels (disparity.png holds disparities below 256)")
+      .integer("labels", &command.labels, {0, 256},
+               "number of disparity labels, 2-256 (0: the scene's own range, ndisp of a Middlebury "
+               "2014 calib.txt or 128 for KITTI, else 85; disparity.png holds disparities below "
+               "256)")
       .text("schedule", &schedule,
             "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic "
             "(the same three levels with another partition kind), paper-cc (split into connected "
@@ -81,14 +85,31 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
   command.schedule =
       with_flag("--schedule", [&] { return vision::parse_stereo_schedule(schedule); });
-  if (const std::string problem = command.schedule.validate(command.tsgo.labels);
-      !problem.empty()) {
-    throw std::invalid_argument("--schedule: " + problem + " (--labels " +
-                                std::to_string(command.tsgo.labels) + ")");
-  }
+  if (command.labels == 1) throw std::invalid_argument("--labels: expected 0 or 2-256, got 1");
+  // A pair of files has no range of its own: its label count is known before anything is read.
+  if (command.labels != 0 || command.scene.empty())
+    set_labels(command, command.labels != 0 ? command.labels : kDefaultLabels);
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
+}
+
+void set_labels(StereoCommand& command, int labels) {
+  command.tsgo.labels = labels;
+  if (const std::string problem = command.schedule.validate(labels); !problem.empty()) {
+    throw std::invalid_argument("--schedule: " + problem + " (--labels " + std::to_string(labels) +
+                                ")");
+  }
+}
+
+void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene) {
+  if (command.labels != 0 || command.scene.empty()) return;
+  if (scene.disparity_range > 256) {
+    throw std::invalid_argument("--scene " + command.scene + ": its disparity range is " +
+                                std::to_string(scene.disparity_range) +
+                                " labels, more than 256: give --labels (or --downscale)");
+  }
+  set_labels(command, scene.disparity_range >= 2 ? scene.disparity_range : kDefaultLabels);
 }
 
 Options run_options(const StereoCommand& command) {

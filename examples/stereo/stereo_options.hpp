@@ -18,7 +18,8 @@ struct StereoCommand {
   std::string scene, data;       ///< scene mode: a scenes.csv row name and the data root
   std::string out_dir;
   int downscale = 1;
-  vision::TsgoOptions tsgo;
+  int labels = 0;            ///< --labels as given; 0: the scene's range (set_labels_from_scene)
+  vision::TsgoOptions tsgo;  ///< tsgo.labels: the label count the run uses
   Schedule schedule;
   bool allow_non_refining = false;
   SolverChoice solver;
@@ -32,6 +33,18 @@ struct StereoCommand {
 /// Parses argv. Returns std::nullopt after printing --help. Throws std::invalid_argument with a
 /// message naming the flag for anything invalid (missing files included).
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv);
+
+/// The label count of a run without --labels or of a scene without a range of its own.
+inline constexpr int kDefaultLabels = 85;
+
+/// Sets tsgo.labels and checks the schedule against it. Throws std::invalid_argument naming
+/// --schedule when a level needs more labels.
+void set_labels(StereoCommand& command, int labels);
+
+/// Without --labels: the loaded scene's disparity range (Middlebury 2014 ndisp, KITTI's 128)
+/// when it has one, else kDefaultLabels; then set_labels. Throws std::invalid_argument naming
+/// the scene when its range is above 256.
+void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene);
 
 /// The driver options the command asks for: the plateau rules (on the original problem one
 /// sweep of the solver unless --final-plateau says otherwise), limits and level transfer.

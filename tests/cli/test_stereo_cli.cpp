@@ -280,3 +280,39 @@ TEST_CASE("c2f-stereo stopped while it exports a large model writes nothing and 
   CHECK_FALSE(std::filesystem::exists(dir / "model.uai.c2f-partial"));
   CHECK_FALSE(std::filesystem::exists(dir / "out" / "summary.txt"));
 }
+
+TEST_CASE("c2f-stereo reads Middlebury 2014 and KITTI scenes and scores them their way",
+          "[stereo][cli][data]") {
+  const std::string data = C2F_SHARED_DATA_DIR;
+  if (!std::filesystem::exists(data + "/middlebury2014")) {
+    WARN("no shared data at " << data << ": Middlebury 2014 and KITTI runs not checked");
+    return;
+  }
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-datasets";
+  std::filesystem::remove_all(dir);
+  const auto summary_of = [&](const std::string& name) {
+    std::ifstream in(dir / name / "summary.txt");
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  // Quarter-size Adirondack shrunk 4 more times: ndisp 73 becomes 19 labels, bad 2.0 at full
+  // size becomes 0.125 px.
+  auto r = run("--scene middlebury2014/Adirondack --data " + data + " --downscale 4 -o " +
+               (dir / "adirondack").string() + " --schedule flat --max-steps 3");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(summary_of("adirondack"),
+             Catch::Contains("scene middlebury2014/Adirondack 179x124, 19 labels") &&
+                 Catch::Contains("bad 2.0 (full size) (> 0.125 px here): nonocc ") &&
+                 Catch::Contains("non-occluded pixels from: official mask"));
+  r = run("--scene kitti2015/000000_10 --data " + data + " --downscale 6 --labels 24 -o " +
+          (dir / "kitti").string() + " --schedule flat --max-steps 3");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(summary_of("kitti"), Catch::Contains("scene kitti2015/000000_10 207x62, 24 labels") &&
+                                      Catch::Contains("D1 (> 0.5 px and > 5% here): all "));
+  // A schedule that needs more labels than the scene's range is named after loading it.
+  r = run("--scene middlebury2014/Adirondack --data " + data + " --downscale 8 -o " +
+          (dir / "few").string() + " --schedule cp:20,1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--schedule: ") && Catch::Contains("(--labels 10)"));
+}

@@ -68,12 +68,59 @@ BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
   return rates;
 }
 
+std::string SceneErrors::brief(const ErrorMeasure& measure) const {
+  char bound[80] = "";
+  if (measure.relative > 0.0) {
+    std::snprintf(bound, sizeof bound, " (> %g px and > %g%% here)", measure.absolute,
+                  100 * measure.relative);
+  } else if (measure.follows_downscale) {
+    std::snprintf(bound, sizeof bound, " (> %g px here)", measure.absolute);
+  }
+  char text[240];
+  if (nonoccluded_pixels == 0) {
+    std::snprintf(text, sizeof text, "%s%s: all %.2f%%", measure.name.c_str(), bound, 100 * all);
+  } else {
+    std::snprintf(text, sizeof text, "%s%s: nonocc %.2f%%, all %.2f%%", measure.name.c_str(), bound,
+                  100 * nonoccluded, 100 * all);
+  }
+  return text;
+}
+
+SceneErrors scene_errors(const cv::Mat& disparity, const StereoScene& scene) {
+  if (scene.gt.empty()) throw std::invalid_argument("scene_errors: the scene has no GT");
+  if (disparity.type() != CV_32F || disparity.size() != scene.gt.size())
+    throw std::invalid_argument("scene_errors: the disparity must be CV_32F of the GT's size");
+  const bool masked = !scene.nonoccluded.empty();
+  SceneErrors errors;
+  std::size_t bad_all = 0, bad_nonoccluded = 0;
+  for (int y = 0; y < scene.gt.rows; ++y) {
+    const float* truth = scene.gt.ptr<float>(y);
+    const float* d = disparity.ptr<float>(y);
+    const uchar* mask = masked ? scene.nonoccluded.ptr<uchar>(y) : nullptr;
+    for (int x = 0; x < scene.gt.cols; ++x) {
+      if (std::isnan(truth[x])) continue;
+      const bool bad = scene.measure.is_bad(d[x], truth[x]);
+      const bool nonoccluded = masked && mask[x] == 255;
+      ++errors.known_pixels;
+      errors.nonoccluded_pixels += nonoccluded;
+      bad_all += bad;
+      bad_nonoccluded += bad && nonoccluded;
+    }
+  }
+  const auto rate = [](std::size_t bad, std::size_t pixels) {
+    return pixels ? static_cast<double>(bad) / static_cast<double>(pixels)
+                  : std::numeric_limits<double>::quiet_NaN();
+  };
+  errors.all = rate(bad_all, errors.known_pixels);
+  errors.nonoccluded = rate(bad_nonoccluded, errors.nonoccluded_pixels);
+  return errors;
+}
+
 std::function<double(std::span<const Label>)> bad_pixel_error(const StereoScene& scene) {
   if (scene.gt.empty()) throw std::invalid_argument("bad_pixel_error: the scene has no GT");
   return [&scene, shape = scene.shape()](std::span<const Label> labeling) {
-    const BadPixelRates rates =
-        bad_pixel_rates(labels_to_disparity(labeling, shape), scene.gt, scene.nonoccluded);
-    return scene.nonoccluded.empty() ? rates.all[1] : rates.nonoccluded[1];
+    const SceneErrors errors = scene_errors(labels_to_disparity(labeling, shape), scene);
+    return scene.nonoccluded.empty() ? errors.all : errors.nonoccluded;
   };
 }
 

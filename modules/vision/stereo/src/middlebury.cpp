@@ -14,6 +14,8 @@
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
+#include "c2f/vision/stereo/kitti2015.hpp"
+#include "c2f/vision/stereo/middlebury2014.hpp"
 
 namespace c2f::vision {
 
@@ -199,6 +201,19 @@ StereoScene load_scene(const SceneRow& row, const std::string& data_root) {
 }
 
 StereoScene load_named_scene(const std::string& data_root, const std::string& name) {
+  const std::filesystem::path root(data_root);
+  for (const std::string_view dataset : {"middlebury2014/", "kitti2015/"}) {
+    if (!name.starts_with(dataset)) continue;
+    const std::string rest = name.substr(dataset.size());
+    if (rest.empty() || rest.find('/') != std::string::npos || rest == "." || rest == "..")
+      throw std::invalid_argument("scene '" + name + "': expected " + std::string(dataset) +
+                                  "NAME");
+    StereoScene scene = dataset == "kitti2015/"
+                            ? load_kitti2015_pair((root / "kitti2015").string(), rest)
+                            : load_middlebury2014_scene((root / name).string());
+    scene.name = name;
+    return scene;
+  }
   const std::string table = (std::filesystem::path(data_root) / "scenes.csv").string();
   const std::vector<SceneRow> rows = read_scene_table(table);
   for (const SceneRow& row : rows) {

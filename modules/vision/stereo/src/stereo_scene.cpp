@@ -2,6 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -17,6 +18,12 @@ std::string size_text(const cv::Mat& image) {
 }
 
 }  // namespace
+
+bool ErrorMeasure::is_bad(double disparity, double truth) const noexcept {
+  const double error = std::abs(disparity - truth);
+  // Written as "not within" so that a NaN disparity counts as bad.
+  return !(error <= absolute) && (relative <= 0.0 || !(error <= relative * truth));
+}
 
 StereoScene load_stereo_pair(const StereoPairFiles& files) {
   if ((!files.gt_right.empty() || !files.mask.empty()) && files.gt.empty())
@@ -65,6 +72,8 @@ StereoScene downscale(StereoScene scene, int factor) {
   }
   if (!scene.nonoccluded.empty())
     cv::resize(scene.nonoccluded, scene.nonoccluded, size, 0, 0, cv::INTER_NEAREST);
+  if (scene.measure.follows_downscale) scene.measure.absolute /= factor;
+  scene.disparity_range = (scene.disparity_range + factor - 1) / factor;
   return scene;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Bad-pixel rates of a disparity map against Middlebury ground truth.
+// Error rates of a disparity map against ground truth: the fixed bad 0.5/1/2 table, and the
+// scene's own measure (Middlebury 2014's bad 2.0 at full size, KITTI's D1).
 
 #include <array>
 #include <functional>
@@ -34,10 +35,25 @@ struct BadPixelRates {
 BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
                               const cv::Mat& nonoccluded);
 
-/// The error a trace records for a labeling of `scene` (labels = disparities): the bad-pixel
-/// rate (|d - gt| > 1) over the non-occluded pixels when the scene has a mask, else over all
-/// pixels with known GT. Serves TraceWriter's error column and the benchmarks' deadlines.
-/// Throws std::invalid_argument when the scene has no GT.
+/// The scene's measure (scene.measure) over its non-occluded and over all pixels with GT.
+struct SceneErrors {
+  double nonoccluded = 0.0;  ///< NaN without a mask
+  double all = 0.0;
+  std::size_t nonoccluded_pixels = 0, known_pixels = 0;
+
+  /// "D1: all 4.56%" or "bad 2.0 (full size) (> 0.5 px here): nonocc 1.23%, all 4.56%".
+  [[nodiscard]] std::string brief(const ErrorMeasure& measure) const;
+};
+
+/// Scores `disparity` (CV_32F) by the scene's measure. Throws std::invalid_argument when the
+/// scene has no GT or the sizes differ.
+SceneErrors scene_errors(const cv::Mat& disparity, const StereoScene& scene);
+
+/// The error a trace records for a labeling of `scene` (labels = disparities): the rate of bad
+/// pixels by the scene's measure (bad 1 unless the dataset has its own) over the non-occluded
+/// pixels when the scene has a mask, else over all pixels with known GT. Serves TraceWriter's
+/// error column and the benchmarks' deadlines. Throws std::invalid_argument when the scene has
+/// no GT.
 std::function<double(std::span<const Label>)> bad_pixel_error(const StereoScene& scene);
 
 }  // namespace c2f::vision

@@ -52,6 +52,8 @@ cv::Mat load_mask(const std::string& path);
 /// disp_right.png is present. Throws naming the missing file.
 StereoScene load_scene(const SceneRow& row, const std::string& data_root);
 
+/// The scene called `name` under DATA_ROOT: "middlebury2014/SCENE" (a quarter-size MiddEval3
+/// folder, middlebury2014.hpp), "kitti2015/ID" (a KITTI 2015 training pair, kitti2015.hpp), else
 /// load_scene for the row of DATA_ROOT/scenes.csv named `name`. Throws std::invalid_argument
 /// naming the scene, the table and the names it has when there is no such row.
 StereoScene load_named_scene(const std::string& data_root, const std::string& name);

@@ -9,12 +9,28 @@
 
 namespace c2f::vision {
 
+/// How a dataset scores a disparity map, in its own convention. A pixel with known GT g is bad
+/// when |d - g| > absolute and, when relative > 0, also |d - g| > relative * g.
+struct ErrorMeasure {
+  std::string name = "bad 1";  ///< what reports call it: "bad 1", "bad 2.0 (full size)", "D1"
+  double absolute = 1.0;       ///< pixels at the scene's size
+  double relative = 0.0;       ///< a fraction of the true disparity (KITTI: 0.05); 0 = none
+  /// True when the threshold is defined at the dataset's own size, so that downscale() divides
+  /// it too (Middlebury 2014, KITTI); false for "bad 1 at the size solved" (2001-2006).
+  bool follows_downscale = false;
+
+  [[nodiscard]] bool is_bad(double disparity, double truth) const noexcept;
+  bool operator==(const ErrorMeasure&) const = default;
+};
+
 struct StereoScene {
   std::string name;
   cv::Mat left, right;  ///< 8-bit BGR
   cv::Mat gt;           ///< CV_32F left-view disparity, NaN = unknown; empty without GT
   cv::Mat nonoccluded;  ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
   std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
+  ErrorMeasure measure;            ///< the dataset's error convention (default: bad 1)
+  int disparity_range = 0;         ///< the dataset's label count (calib.txt ndisp); 0: unknown
 
   /// The pixel grid of the views.
   [[nodiscard]] GridShape shape() const noexcept {
@@ -38,7 +54,8 @@ struct StereoPairFiles {
 StereoScene load_stereo_pair(const StereoPairFiles& files);
 
 /// The scene shrunk by an integer factor: views by area averaging, GT and mask by nearest
-/// neighbour, GT disparities divided by the factor. Factor 1 returns the scene unchanged.
+/// neighbour, GT disparities divided by the factor, the disparity range too (rounded up), and
+/// the measure's threshold when it follows the downscale. Factor 1 returns the scene unchanged.
 /// Throws std::invalid_argument for a factor < 1 or views that would be smaller than 2x2.
 StereoScene downscale(StereoScene scene, int factor);
 
