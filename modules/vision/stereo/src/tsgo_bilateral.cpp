@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <span>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -72,33 +74,98 @@ struct Splat {
   double fx, fy;
 };
 
-void blur(Grid& grid, std::vector<double>& scratch) {
+/// The clusters each grid node can hold, sorted, at the three stages of one filtering: after the
+/// splat (`splatted`: the clusters of the pixels whose splat reaches the node, which are also
+/// the entries interpolate() reads), after the blur along y (`blurred_y`: the union over the
+/// node's column window of +-2 nodes) and after the blur along x (`blurred`: the union of
+/// `blurred_y` over the row window). Every other entry of a node is exactly zero at that stage,
+/// so the passes below compute only these entries, each with the same terms in the same order
+/// as the dense filter: the results are bit for bit the dense filter's.
+struct ActiveClusters {
+  std::vector<std::vector<std::size_t>> splatted, blurred_y, blurred;
+};
+
+std::vector<std::size_t> merged(const std::vector<std::vector<std::size_t>>& lists,
+                                std::span<const std::size_t> nodes) {
+  std::vector<std::size_t> all;
+  for (const std::size_t n : nodes) all.insert(all.end(), lists[n].begin(), lists[n].end());
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+ActiveClusters active_clusters(std::size_t gw, std::size_t gh, const std::vector<Splat>& splats,
+                               const std::vector<int>& cluster_of) {
+  ActiveClusters active;
+  active.splatted.resize(gw * gh);
+  for (std::size_t p = 0; p < splats.size(); ++p) {
+    const Splat& s = splats[p];
+    const auto q = static_cast<std::size_t>(cluster_of[p]);
+    for (const std::size_t node : {s.gy * gw + s.gx, s.gy * gw + s.gx + 1,
+                                   (s.gy + 1) * gw + s.gx, (s.gy + 1) * gw + s.gx + 1})
+      active.splatted[node].push_back(q);
+  }
+  for (auto& list : active.splatted) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  const auto window = [](std::size_t centre, std::size_t size) {
+    return std::pair{centre >= 2 ? centre - 2 : 0, std::min(centre + 2, size - 1)};
+  };
+  active.blurred_y.resize(gw * gh);
+  active.blurred.resize(gw * gh);
+  std::vector<std::size_t> nodes;
+  for (std::size_t gy = 0; gy < gh; ++gy) {
+    for (std::size_t gx = 0; gx < gw; ++gx) {
+      nodes.clear();
+      const auto [first, last] = window(gy, gh);
+      for (std::size_t sy = first; sy <= last; ++sy) nodes.push_back(sy * gw + gx);
+      active.blurred_y[gy * gw + gx] = merged(active.splatted, nodes);
+    }
+  }
+  for (std::size_t gy = 0; gy < gh; ++gy) {
+    for (std::size_t gx = 0; gx < gw; ++gx) {
+      nodes.clear();
+      const auto [first, last] = window(gx, gw);
+      for (std::size_t sx = first; sx <= last; ++sx) nodes.push_back(gy * gw + sx);
+      active.blurred[gy * gw + gx] = merged(active.blurred_y, nodes);
+    }
+  }
+  return active;
+}
+
+/// The separable 5-tap Gaussian over the nodes (along y into `scratch`, then along x back into
+/// the grid), on the active entries only. `scratch` has the grid's size and is zero outside
+/// the blurred_y entries (it stays so: only those are ever written).
+void blur(Grid& grid, std::vector<double>& scratch, const ActiveClusters& active) {
   static const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5),
                                  std::exp(-2.0)};
   const std::size_t q = grid.clusters;
-  scratch.assign(grid.value.size(), 0.0);
   for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along y
-    for (int k = -2; k <= 2; ++k) {
-      const long sy = static_cast<long>(gy) + k;
-      if (sy < 0 || sy >= static_cast<long>(grid.gh)) continue;
-      const double tap = taps[k + 2];
-      for (std::size_t gx = 0; gx < grid.gw; ++gx) {
-        const double* in = &grid.value[(static_cast<std::size_t>(sy) * grid.gw + gx) * q];
-        double* out = &scratch[(gy * grid.gw + gx) * q];
-        for (std::size_t c = 0; c < q; ++c) out[c] += tap * in[c];
+    for (std::size_t gx = 0; gx < grid.gw; ++gx) {
+      double* out = &scratch[(gy * grid.gw + gx) * q];
+      for (const std::size_t c : active.blurred_y[gy * grid.gw + gx]) {
+        double sum = 0.0;
+        for (int k = -2; k <= 2; ++k) {
+          const long sy = static_cast<long>(gy) + k;
+          if (sy < 0 || sy >= static_cast<long>(grid.gh)) continue;
+          sum += taps[k + 2] * grid.value[(static_cast<std::size_t>(sy) * grid.gw + gx) * q + c];
+        }
+        out[c] = sum;
       }
     }
   }
-  std::fill(grid.value.begin(), grid.value.end(), 0.0);
   for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along x
     for (std::size_t gx = 0; gx < grid.gw; ++gx) {
       double* out = &grid.value[(gy * grid.gw + gx) * q];
-      for (int k = -2; k <= 2; ++k) {
-        const long sx = static_cast<long>(gx) + k;
-        if (sx < 0 || sx >= static_cast<long>(grid.gw)) continue;
-        const double tap = taps[k + 2];
-        const double* in = &scratch[(gy * grid.gw + static_cast<std::size_t>(sx)) * q];
-        for (std::size_t c = 0; c < q; ++c) out[c] += tap * in[c];
+      for (const std::size_t c : active.blurred[gy * grid.gw + gx]) {
+        double sum = 0.0;
+        for (int k = -2; k <= 2; ++k) {
+          const long sx = static_cast<long>(gx) + k;
+          if (sx < 0 || sx >= static_cast<long>(grid.gw)) continue;
+          sum += taps[k + 2] * scratch[(gy * grid.gw + static_cast<std::size_t>(sx)) * q + c];
+        }
+        out[c] = sum;
       }
     }
   }
@@ -109,18 +176,29 @@ struct RangeNeighbour {
   double weight;
 };
 
+/// Each node's splatted entries become the range-weighted sum of the node's blurred clusters
+/// (the only entries interpolate() reads). `node` is a zero buffer of q values between calls.
 void mix_clusters(Grid& grid, const std::vector<std::vector<RangeNeighbour>>& neighbours,
-                  std::vector<double>& node) {
+                  const ActiveClusters& active, std::vector<double>& node) {
   const std::size_t q = grid.clusters;
-  node.resize(q);
+  node.resize(q, 0.0);
   for (std::size_t n = 0; n < grid.gw * grid.gh; ++n) {
     double* values = &grid.value[n * q];
-    std::copy(values, values + q, node.begin());
-    for (std::size_t c = 0; c < q; ++c) {
+    for (const std::size_t c : active.blurred[n]) node[c] = values[c];
+    for (const std::size_t c : active.splatted[n]) {
       double sum = 0.0;
       for (const RangeNeighbour& other : neighbours[c]) sum += other.weight * node[other.cluster];
       values[c] = sum;
     }
+    for (const std::size_t c : active.blurred[n]) node[c] = 0.0;
+  }
+}
+
+/// Zeroes every entry the last filtering may have written (the blurred ones).
+void clear(Grid& grid, const ActiveClusters& active) {
+  for (std::size_t n = 0; n < grid.gw * grid.gh; ++n) {
+    double* values = &grid.value[n * grid.clusters];
+    for (const std::size_t c : active.blurred[n]) values[c] = 0.0;
   }
 }
 
@@ -180,12 +258,13 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
       splats[y * w + x] = {gx, gy, sx - static_cast<double>(gx), sy - static_cast<double>(gy)};
     }
   }
-  std::vector<double> scratch, node;
+  const ActiveClusters active = active_clusters(gw, gh, splats, clusters.cluster_of);
+  std::vector<double> scratch(gw * gh * q, 0.0), node;
   Grid weights{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
   for (std::size_t p = 0; p < w * h; ++p)
     splat(weights, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]), 1.0);
-  blur(weights, scratch);
-  mix_clusters(weights, neighbours, node);
+  blur(weights, scratch, active);
+  mix_clusters(weights, neighbours, active, node);
   std::vector<double> denominator(w * h);
   for (std::size_t p = 0; p < w * h; ++p) {
     denominator[p] =
@@ -193,13 +272,13 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
   }
   Grid values{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
   for (int d = 0; d < volume.labels(); ++d) {
-    std::fill(values.value.begin(), values.value.end(), 0.0);
+    if (d > 0) clear(values, active);
     for (std::size_t p = 0; p < w * h; ++p) {
       splat(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]),
             volume.at(p % w, p / w, d));
     }
-    blur(values, scratch);
-    mix_clusters(values, neighbours, node);
+    blur(values, scratch, active);
+    mix_clusters(values, neighbours, active, node);
     for (std::size_t p = 0; p < w * h; ++p) {
       volume.at(p % w, p / w, d) =
           interpolate(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p])) /
