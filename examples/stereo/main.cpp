@@ -83,7 +83,8 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
   }();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet)
-    std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s\n", seconds);
+    std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s on %u threads\n", seconds,
+                 resolved_threads(command.tsgo.threads));
   return {std::move(problem), seconds};
 }
 
@@ -112,8 +113,8 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
          << ", solver " << to_string(command.solver.kind) << ", max-flow "
          << to_string(command.solver.maxflow) << near_and_shift_moves_text(command.solver) << "\n"
-         << "TSGO step 1: " << problem.seconds
-         << " s (not on the run clock, same for every schedule)\n";
+         << "TSGO step 1: " << problem.seconds << " s on " << resolved_threads(command.tsgo.threads)
+         << " threads (not on the run clock, same for every schedule)\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {

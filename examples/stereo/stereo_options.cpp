@@ -55,6 +55,9 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .file("gt-right", &command.pair.gt_right,
             "right-view GT PNG, for a left-right occlusion mask")
       .file("mask", &command.pair.mask, "non-occluded mask PNG (255 = evaluate)")
+      .integer("threads", &command.tsgo.threads, {0, 1024},
+               "threads preparing the data (0: the machine's cores); the result is the same for "
+               "every count")
       .integer("downscale", &command.downscale, {1, 1024},
                "shrink images by this integer factor (GT divided by it)")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")

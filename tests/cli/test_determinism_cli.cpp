@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -64,20 +65,34 @@ std::map<std::string, std::string> outputs(const fs::path& folder) {
   return files;
 }
 
-/// Runs `binary arguments -o FOLDER` into two folders and checks that they hold the same
-/// files with the same bytes (timings masked) and that the printed reports agree too.
+/// Text with the thread counts the tools report ("on 2 threads") masked.
+std::string without_thread_counts(const std::string& text) {
+  static const std::regex threads(R"(on [0-9]+ threads)");
+  return std::regex_replace(text, threads, "on <n> threads");
+}
+
+/// Runs `binary arguments extra[i] -o FOLDER` into two folders and checks that they hold the
+/// same files with the same bytes (timings masked, and the thread counts when the runs' extra
+/// arguments differ) and that the printed reports agree too.
 void check_two_runs_agree(const std::string& binary, const std::string& arguments,
-                          const fs::path& dir) {
+                          const fs::path& dir, const std::array<std::string, 2>& extra = {"", ""}) {
+  const auto masked = [&](std::string text) {
+    return extra[0] == extra[1] ? text : without_thread_counts(text);
+  };
   std::string printed[2];
   for (int run = 0; run < 2; ++run) {
     const fs::path out = dir / ("run" + std::to_string(run));
     fs::remove_all(out);
-    const auto r = c2f::test::run_tool(binary, arguments + " -o " + out.string());
+    const auto r = c2f::test::run_tool(
+        binary, arguments + " " + extra[static_cast<std::size_t>(run)] + " -o " + out.string());
     INFO(arguments << "\n" << r.output);
     REQUIRE(r.exit_code == 0);
-    printed[run] = printed_report(r.output);
+    printed[run] = masked(printed_report(r.output));
   }
-  const auto first = outputs(dir / "run0"), second = outputs(dir / "run1");
+  auto first = outputs(dir / "run0"), second = outputs(dir / "run1");
+  for (auto* files : {&first, &second}) {
+    if (files->count("summary.txt") != 0) (*files)["summary.txt"] = masked((*files)["summary.txt"]);
+  }
   INFO(arguments);
   REQUIRE(first.size() >= 3);
   CHECK(first.size() == second.size());
@@ -114,6 +129,19 @@ TEST_CASE("c2f-stereo writes the same bytes twice", "[cli][determinism][stereo]"
                        dir / "swap");
   check_two_runs_agree(C2F_STEREO_BINARY, inputs + " --schedule flat --solver lbp --max-steps 8",
                        dir / "lbp");
+}
+
+TEST_CASE("c2f-stereo writes the same bytes on one thread and on several",
+          "[cli][determinism][stereo][threads]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-threads";
+  fs::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 96, 64, 2, 12, 5);
+  const std::string inputs = (dir / "left.png").string() + " " + (dir / "right.png").string() +
+                             " --gt " + (dir / "gt.png").string() + " --gt-divisor 4 --labels 20";
+  check_two_runs_agree(C2F_STEREO_BINARY, inputs + " --schedule paper", dir / "paper",
+                       {"--threads 1", "--threads 2"});
+  check_two_runs_agree(C2F_STEREO_BINARY, inputs + " --schedule flat --max-steps 10", dir / "flat",
+                       {"--threads 1", "--threads 3"});
 }
 
 TEST_CASE("c2f-segment writes the same bytes twice", "[cli][determinism][segment]") {

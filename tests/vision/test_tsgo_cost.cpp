@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "c2f/vision/stereo/tsgo_bilateral.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
@@ -176,4 +178,30 @@ TEST_CASE("the TSGO energy uses colour weight classes and the chosen smoothness"
   CHECK(linear.terms()[0].kind() == TermKind::truncated_linear);
   options.labels = 1;
   CHECK_THAT(options.validate(), Catch::Contains("labels must be >= 2, got 1"));
+}
+
+TEST_CASE("TSGO step 1 gives the same volume, bit for bit, on any number of threads",
+          "[stereo][tsgo][threads]") {
+  // 37 labels: five label blocks of the bilateral filter, the last one short.
+  cv::Mat left(40, 64, CV_8UC3), right(40, 64, CV_8UC3);
+  cv::RNG random(11);
+  random.fill(left, cv::RNG::UNIFORM, 0, 256);
+  random.fill(right, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(left, left, cv::Size(5, 5), 1.5);
+  cv::GaussianBlur(right, right, cv::Size(5, 5), 1.5);
+  c2f::vision::TsgoOptions options;
+  options.labels = 37;
+  options.bilateral.cell = 6;
+  options.threads = 1;
+  const auto one = c2f::vision::tsgo_cost(left, right, options).volume.data();
+  for (const int threads : {2, 3, 8, 0}) {
+    options.threads = threads;
+    const auto many = c2f::vision::tsgo_cost(left, right, options).volume.data();
+    INFO(threads << " threads");
+    REQUIRE(many.size() == one.size());
+    CHECK(std::memcmp(many.data(), one.data(), one.size() * sizeof(double)) == 0);
+  }
+  options.threads = -1;
+  CHECK_THROWS_WITH(c2f::vision::tsgo_cost(left, right, options),
+                    Catch::Contains("threads must be >= 0"));
 }

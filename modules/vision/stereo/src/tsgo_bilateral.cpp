@@ -4,9 +4,11 @@
 #include <cmath>
 #include <numeric>
 #include <span>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "c2f/core/parallel_for.hpp"
 
 namespace c2f::vision {
 
@@ -101,8 +103,8 @@ ActiveClusters active_clusters(std::size_t gw, std::size_t gh, const std::vector
   for (std::size_t p = 0; p < splats.size(); ++p) {
     const Splat& s = splats[p];
     const auto q = static_cast<std::size_t>(cluster_of[p]);
-    for (const std::size_t node : {s.gy * gw + s.gx, s.gy * gw + s.gx + 1,
-                                   (s.gy + 1) * gw + s.gx, (s.gy + 1) * gw + s.gx + 1})
+    for (const std::size_t node : {s.gy * gw + s.gx, s.gy * gw + s.gx + 1, (s.gy + 1) * gw + s.gx,
+                                   (s.gy + 1) * gw + s.gx + 1})
       active.splatted[node].push_back(q);
   }
   for (auto& list : active.splatted) {
@@ -202,11 +204,13 @@ void clear(Grid& grid, const ActiveClusters& active) {
   }
 }
 
-double interpolate(Grid& grid, const Splat& s, std::size_t q) {
-  return (1 - s.fx) * (1 - s.fy) * grid.at(s.gx, s.gy, q) +
-         s.fx * (1 - s.fy) * grid.at(s.gx + 1, s.gy, q) +
-         (1 - s.fx) * s.fy * grid.at(s.gx, s.gy + 1, q) +
-         s.fx * s.fy * grid.at(s.gx + 1, s.gy + 1, q);
+double interpolate(const Grid& grid, const Splat& s, std::size_t q) {
+  const std::size_t node = s.gy * grid.gw + s.gx, below = node + grid.gw;
+  const std::vector<double>& v = grid.value;
+  return (1 - s.fx) * (1 - s.fy) * v[node * grid.clusters + q] +
+         s.fx * (1 - s.fy) * v[(node + 1) * grid.clusters + q] +
+         (1 - s.fx) * s.fy * v[below * grid.clusters + q] +
+         s.fx * s.fy * v[(below + 1) * grid.clusters + q];
 }
 
 void splat(Grid& grid, const Splat& s, std::size_t q, double value) {
@@ -215,6 +219,77 @@ void splat(Grid& grid, const Splat& s, std::size_t q, double value) {
   grid.at(s.gx, s.gy + 1, q) += (1 - s.fx) * s.fy * value;
   grid.at(s.gx + 1, s.gy + 1, q) += s.fx * s.fy * value;
 }
+
+/// One thread's memory for smoothing slices: the grid, the blur's scratch and the mixing
+/// buffer (each as the passes above expect it between slices).
+struct Workspace {
+  Grid grid;
+  std::vector<double> scratch, node;
+  bool used = false;  ///< whether the grid holds a slice (clear() before the next)
+};
+
+/// Splat, blur and mix of one image-sized slice, with everything that does not depend on the
+/// slice computed once.
+class SliceSmoother {
+ public:
+  SliceSmoother(const ColourClusters& clusters, std::vector<std::vector<RangeNeighbour>> neighbours,
+                std::size_t width, std::size_t height, int cell)
+      : cluster_of_(clusters.cluster_of),
+        neighbours_(std::move(neighbours)),
+        gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
+        gh_((height - 1) / static_cast<std::size_t>(cell) + 2),
+        clusters_(clusters.means.size()) {
+    splats_.resize(width * height);
+    const auto size = static_cast<double>(cell);
+    for (std::size_t y = 0; y < height; ++y) {
+      for (std::size_t x = 0; x < width; ++x) {
+        const double sx = static_cast<double>(x) / size, sy = static_cast<double>(y) / size;
+        const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
+        splats_[y * width + x] = {gx, gy, sx - static_cast<double>(gx),
+                                  sy - static_cast<double>(gy)};
+      }
+    }
+    active_ = active_clusters(gw_, gh_, splats_, cluster_of_);
+  }
+
+  [[nodiscard]] Workspace workspace() const {
+    const std::size_t size = gw_ * gh_ * clusters_;
+    return {{gw_, gh_, clusters_, std::vector<double>(size, 0.0)},
+            std::vector<double>(size, 0.0),
+            {},
+            false};
+  }
+
+  /// Leaves the smoothed slice in `space` (read() reads it).
+  void smooth(std::span<const double> slice, Workspace& space) const {
+    if (space.used) clear(space.grid, active_);
+    space.used = true;
+    for (std::size_t p = 0; p < splats_.size(); ++p)
+      splat(space.grid, splats_[p], cluster(p), slice[p]);
+    blur(space.grid, space.scratch, active_);
+    mix_clusters(space.grid, neighbours_, active_, space.node);
+  }
+
+  /// Pixel p's value of the smoothed slice: its cluster's bilinear interpolation.
+  [[nodiscard]] double read(const Workspace& space, std::size_t p) const {
+    return interpolate(space.grid, splats_[p], cluster(p));
+  }
+
+ private:
+  [[nodiscard]] std::size_t cluster(std::size_t p) const {
+    return static_cast<std::size_t>(cluster_of_[p]);
+  }
+
+  const std::vector<int>& cluster_of_;
+  std::vector<std::vector<RangeNeighbour>> neighbours_;
+  std::size_t gw_, gh_, clusters_;
+  std::vector<Splat> splats_;
+  ActiveClusters active_;
+};
+
+/// Labels filtered per gather: one pass over the pixel-major volume moves this many labels of
+/// every pixel (a cache line of doubles) into slices, and one pass moves them back.
+constexpr int kLabelBlock = 8;
 
 }  // namespace
 
@@ -246,45 +321,45 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
           {b, std::exp(-r * r / (2.0 * options.colour_sigma * options.colour_sigma))});
     }
   }
-  const auto cell = static_cast<double>(options.cell);
-  const std::size_t w = volume.width(), h = volume.height();
-  const std::size_t gw = (w - 1) / static_cast<std::size_t>(options.cell) + 2;
-  const std::size_t gh = (h - 1) / static_cast<std::size_t>(options.cell) + 2;
-  std::vector<Splat> splats(w * h);
-  for (std::size_t y = 0; y < h; ++y) {
-    for (std::size_t x = 0; x < w; ++x) {
-      const double sx = static_cast<double>(x) / cell, sy = static_cast<double>(y) / cell;
-      const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
-      splats[y * w + x] = {gx, gy, sx - static_cast<double>(gx), sy - static_cast<double>(gy)};
-    }
+  const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
+  const SliceSmoother smoother(clusters, std::move(neighbours), w, h, options.cell);
+  std::vector<double> denominator(pixels);
+  {
+    Workspace space = smoother.workspace();
+    smoother.smooth(std::vector<double>(pixels, 1.0), space);
+    for (std::size_t p = 0; p < pixels; ++p) denominator[p] = smoother.read(space, p);
   }
-  const ActiveClusters active = active_clusters(gw, gh, splats, clusters.cluster_of);
-  std::vector<double> scratch(gw * gh * q, 0.0), node;
-  Grid weights{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
-  for (std::size_t p = 0; p < w * h; ++p)
-    splat(weights, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]), 1.0);
-  blur(weights, scratch, active);
-  mix_clusters(weights, neighbours, active, node);
-  std::vector<double> denominator(w * h);
-  for (std::size_t p = 0; p < w * h; ++p) {
-    denominator[p] =
-        interpolate(weights, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]));
-  }
-  Grid values{gw, gh, q, std::vector<double>(gw * gh * q, 0.0)};
-  for (int d = 0; d < volume.labels(); ++d) {
-    if (d > 0) clear(values, active);
-    for (std::size_t p = 0; p < w * h; ++p) {
-      splat(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p]),
-            volume.at(p % w, p / w, d));
-    }
-    blur(values, scratch, active);
-    mix_clusters(values, neighbours, active, node);
-    for (std::size_t p = 0; p < w * h; ++p) {
-      volume.at(p % w, p / w, d) =
-          interpolate(values, splats[p], static_cast<std::size_t>(clusters.cluster_of[p])) /
-          denominator[p];
-    }
-  }
+  // Blocks of labels, each filtered by one thread; every label's arithmetic is the same
+  // whatever thread runs it, so the volume does not depend on the thread count.
+  const auto labels = static_cast<std::size_t>(volume.labels());
+  const std::size_t blocks = (labels + kLabelBlock - 1) / kLabelBlock;
+  const std::size_t threads = std::min<std::size_t>(resolved_threads(options.threads), blocks);
+  const std::span<double> costs = volume.values();
+  parallel_for(
+      threads,
+      [&](std::size_t thread) {
+        Workspace space = smoother.workspace();
+        std::vector<double> slices(kLabelBlock * pixels);
+        for (std::size_t block = thread; block < blocks; block += threads) {
+          const std::size_t first = block * kLabelBlock;
+          const std::size_t count = std::min<std::size_t>(kLabelBlock, labels - first);
+          for (std::size_t p = 0; p < pixels; ++p) {
+            for (std::size_t k = 0; k < count; ++k)
+              slices[k * pixels + p] = costs[p * labels + first + k];
+          }
+          for (std::size_t k = 0; k < count; ++k) {
+            const std::span<double> slice(slices.data() + k * pixels, pixels);
+            smoother.smooth(slice, space);
+            for (std::size_t p = 0; p < pixels; ++p)
+              slice[p] = smoother.read(space, p) / denominator[p];
+          }
+          for (std::size_t p = 0; p < pixels; ++p) {
+            for (std::size_t k = 0; k < count; ++k)
+              costs[p * labels + first + k] = slices[k * pixels + p];
+          }
+        }
+      },
+      static_cast<int>(threads));
 }
 
 }  // namespace c2f::vision

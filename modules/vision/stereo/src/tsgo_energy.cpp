@@ -30,6 +30,8 @@ std::string TsgoOptions::validate() const {
   if (!(cost_truncation > 0.0)) return "cost_truncation must be > 0";
   if (!(transform_threshold > 0.0)) return "transform_threshold must be > 0";
   if (bilateral.cell < 1) return "bilateral.cell must be >= 1";
+  if (threads < 0)
+    return "threads must be >= 0 (0: the machine's cores), got " + std::to_string(threads);
   if (!(bilateral.colour_sigma > 0.0)) return "bilateral.colour_sigma must be > 0";
   if (!(truncation > 0.0) || !std::isfinite(truncation)) return "truncation must be finite and > 0";
   return {};
@@ -65,6 +67,7 @@ TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions&
   fill_left_border(volume);
   BilateralOptions bilateral = options.bilateral;
   if (options.cluster_levels_from_labels) bilateral.cluster_levels = options.labels < 30 ? 11 : 12;
+  bilateral.threads = options.threads;
   cross_bilateral_filter(volume, pair.left, bilateral);
   return TsgoCost{std::move(volume), pair.left, pair.applied};
 }

@@ -5,6 +5,7 @@
 // d <= x.
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace c2f::vision {
@@ -30,6 +31,8 @@ class CostVolume {
                  static_cast<std::size_t>(d)];
   }
   [[nodiscard]] const std::vector<double>& data() const noexcept { return data_; }
+  /// The costs, pixel-major, for passes over the whole volume.
+  [[nodiscard]] std::span<double> values() noexcept { return data_; }
   /// Moves the costs out (for PairwiseEnergy); the volume is empty afterwards.
   std::vector<double> release() noexcept { return std::move(data_); }
 

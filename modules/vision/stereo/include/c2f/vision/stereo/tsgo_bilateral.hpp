@@ -29,6 +29,8 @@ struct BilateralOptions {
   double colour_sigma = 0.75;  ///< in 8-bit colour units
   double cutoff_sigmas = 3.0;  ///< clusters farther apart than cutoff * sigma do not mix
   int cluster_levels = 12;     ///< 2^12 = 4096 clusters (the reference's 4000 rounded up)
+  int threads = 0;             ///< threads filtering labels (0: the machine's cores); the
+                               ///< result is the same for every count
 };
 
 /// Filters every cost slice in place: each pixel splats its cost (and a unit weight)
@@ -37,7 +39,9 @@ struct BilateralOptions {
 /// gathers the clusters q' with |mu_q - mu_q'| <= cutoff * sigma with weight
 /// exp(-r^2 / (2 sigma^2)), r = round(|mu_q - mu_q'|); each pixel then reads its cluster's
 /// bilinear interpolation back and divides by the interpolated weight. A constant slice stays
-/// constant. Throws std::invalid_argument when the guide does not match the volume.
+/// constant. Labels are filtered in blocks, on options.threads threads (each thread holds one
+/// grid and its blur scratch, 2 x 8 x cells x clusters bytes). Throws std::invalid_argument
+/// when the guide does not match the volume.
 void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
                             const BilateralOptions& options = {});
 

@@ -32,6 +32,9 @@ struct TsgoOptions {
   bool cluster_levels_from_labels = true;  ///< 12 levels (4096 clusters), 11 when labels < 30
   StereoSmoothness smoothness = StereoSmoothness::tsgo_step;
   double truncation = 2.0;  ///< for truncated_linear
+  /// Threads of the data preparation (0: the machine's cores; sets bilateral.threads). The
+  /// energy is the same, bit for bit, for every count.
+  int threads = 0;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
