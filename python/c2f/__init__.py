@@ -112,13 +112,15 @@ def solve(
 
 
 def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
-           *, smoothness: str = "tsgo_step", truncation: float = 2.0, **options: Any) -> Result:
+           *, smoothness: str = "tsgo_step", truncation: float = 2.0, threads: int = 0,
+           **options: Any) -> Result:
     """TSGO stereo of two RGB uint8 views (H, W, 3), coarse to fine: the disparities 0..labels-1
     of the left view are result.labeling ((H, W)). `schedule` takes the stereo presets ('paper',
     'paper-slic', 'regions', 'aggregated', ...) besides every schedule text; `options` are
-    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, ...). The same energy
-    and run as `c2f-stereo LEFT RIGHT --labels L --schedule S`."""
-    energy = stereo_energy(left, right, labels, smoothness, truncation)
+    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, ...); `threads` the
+    data preparation's cores (0: all). The same energy and run as `c2f-stereo LEFT RIGHT
+    --labels L --schedule S`."""
+    energy = stereo_energy(left, right, labels, smoothness, truncation, threads)
     return solve(energy, schedule, **options)
 
 

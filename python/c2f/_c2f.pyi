@@ -107,9 +107,11 @@ def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 1.
     non-occluded; None without one), all shrunk by `downscale`."""
 
 def stereo_energy(left: npt.ArrayLike, right: npt.ArrayLike, labels: int = 85,
-                  smoothness: str = "tsgo_step", truncation: float = 2.0) -> Energy:
+                  smoothness: str = "tsgo_step", truncation: float = 2.0,
+                  threads: int = 0) -> Energy:
     """The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 of the
-    left view on a 4-connected grid; its schedules include the stereo presets and slic:S."""
+    left view on a 4-connected grid; its schedules include the stereo presets and slic:S.
+    threads: cores preparing the data (0: all); the energy is the same for every count."""
 
 def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
                     mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:

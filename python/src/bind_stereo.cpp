@@ -72,9 +72,10 @@ py::dict read_stereo_pair(const std::string& left, const std::string& right, con
 }
 
 ModelEnergy stereo_energy(const py::handle& left, const py::handle& right, int labels,
-                          const std::string& smoothness, double truncation) {
+                          const std::string& smoothness, double truncation, int threads) {
   vision::TsgoOptions options;
   options.labels = labels;
+  options.threads = threads;
   try {
     options.smoothness = vision::stereo_smoothness_from_string(smoothness);
   } catch (const std::invalid_argument& error) {
@@ -137,10 +138,12 @@ void bind_stereo(py::module_& module) {
              "`downscale` (views by area, GT by nearest neighbour divided by the factor).");
   module.def("stereo_energy", &stereo_energy, py::arg("left"), py::arg("right"),
              py::arg("labels") = 85, py::arg("smoothness") = "tsgo_step",
-             py::arg("truncation") = 2.0,
+             py::arg("truncation") = 2.0, py::arg("threads") = 0,
              "The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 "
              "of the left view, a 4-connected grid. Its schedules include the stereo presets "
-             "(paper, paper-slic, regions, aggregated, ...) and slic:S levels on the left view.");
+             "(paper, paper-slic, regions, aggregated, ...) and slic:S levels on the left view. "
+             "threads: cores preparing the data (0: all); the energy is the same for every "
+             "count.");
   module.def("bad_pixel_rates", &bad_pixel_rates, py::arg("disparity"), py::arg("gt"),
              py::arg("mask") = py::none(),
              "Fractions of pixels with |disparity - gt| above 0.5, 1 and 2, over all pixels of "

@@ -74,3 +74,15 @@ def test_stereo_inputs_are_checked(rng):
         c2f.solve(general, "paper-slic")
     with pytest.raises(ValueError):
         c2f.read_image("/nonexistent.png")
+
+
+def test_the_stereo_energy_is_the_same_on_any_number_of_threads(rng):
+    left = rng.integers(0, 255, (30, 48, 3), dtype=np.uint8)
+    right = np.roll(left, -3, axis=1)
+    one = c2f.stereo_energy(left, right, labels=20, threads=1)
+    labelings = [rng.integers(0, 20, (30, 48)) for _ in range(3)]
+    for threads in (2, 3, 0):
+        many = c2f.stereo_energy(left, right, labels=20, threads=threads)
+        assert [many.evaluate(y) for y in labelings] == [one.evaluate(y) for y in labelings]
+    with pytest.raises(ValueError, match="threads must be >= 0"):
+        c2f.stereo_energy(left, right, labels=20, threads=-1)

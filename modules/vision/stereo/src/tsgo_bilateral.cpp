@@ -1,7 +1,10 @@
 #include "c2f/vision/stereo/tsgo_bilateral.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -62,229 +65,228 @@ ColourClusters median_cut_clusters(const cv::Mat& image, int levels) {
 
 namespace {
 
-/// Grid storage: value[(node * clusters) + q], nodes row-major over gw x gh.
-struct Grid {
-  std::size_t gw, gh, clusters;
-  std::vector<double> value;
-  double& at(std::size_t gx, std::size_t gy, std::size_t q) {
-    return value[(gy * gw + gx) * clusters + q];
-  }
-};
-
 struct Splat {
   std::size_t gx, gy;
   double fx, fy;
 };
-
-/// The clusters each grid node can hold, sorted, at the three stages of one filtering: after the
-/// splat (`splatted`: the clusters of the pixels whose splat reaches the node, which are also
-/// the entries interpolate() reads), after the blur along y (`blurred_y`: the union over the
-/// node's column window of +-2 nodes) and after the blur along x (`blurred`: the union of
-/// `blurred_y` over the row window). Every other entry of a node is exactly zero at that stage,
-/// so the passes below compute only these entries, each with the same terms in the same order
-/// as the dense filter: the results are bit for bit the dense filter's.
-struct ActiveClusters {
-  std::vector<std::vector<std::size_t>> splatted, blurred_y, blurred;
-};
-
-std::vector<std::size_t> merged(const std::vector<std::vector<std::size_t>>& lists,
-                                std::span<const std::size_t> nodes) {
-  std::vector<std::size_t> all;
-  for (const std::size_t n : nodes) all.insert(all.end(), lists[n].begin(), lists[n].end());
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
-}
-
-ActiveClusters active_clusters(std::size_t gw, std::size_t gh, const std::vector<Splat>& splats,
-                               const std::vector<int>& cluster_of) {
-  ActiveClusters active;
-  active.splatted.resize(gw * gh);
-  for (std::size_t p = 0; p < splats.size(); ++p) {
-    const Splat& s = splats[p];
-    const auto q = static_cast<std::size_t>(cluster_of[p]);
-    for (const std::size_t node : {s.gy * gw + s.gx, s.gy * gw + s.gx + 1, (s.gy + 1) * gw + s.gx,
-                                   (s.gy + 1) * gw + s.gx + 1})
-      active.splatted[node].push_back(q);
-  }
-  for (auto& list : active.splatted) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
-  const auto window = [](std::size_t centre, std::size_t size) {
-    return std::pair{centre >= 2 ? centre - 2 : 0, std::min(centre + 2, size - 1)};
-  };
-  active.blurred_y.resize(gw * gh);
-  active.blurred.resize(gw * gh);
-  std::vector<std::size_t> nodes;
-  for (std::size_t gy = 0; gy < gh; ++gy) {
-    for (std::size_t gx = 0; gx < gw; ++gx) {
-      nodes.clear();
-      const auto [first, last] = window(gy, gh);
-      for (std::size_t sy = first; sy <= last; ++sy) nodes.push_back(sy * gw + gx);
-      active.blurred_y[gy * gw + gx] = merged(active.splatted, nodes);
-    }
-  }
-  for (std::size_t gy = 0; gy < gh; ++gy) {
-    for (std::size_t gx = 0; gx < gw; ++gx) {
-      nodes.clear();
-      const auto [first, last] = window(gx, gw);
-      for (std::size_t sx = first; sx <= last; ++sx) nodes.push_back(gy * gw + sx);
-      active.blurred[gy * gw + gx] = merged(active.blurred_y, nodes);
-    }
-  }
-  return active;
-}
-
-/// The separable 5-tap Gaussian over the nodes (along y into `scratch`, then along x back into
-/// the grid), on the active entries only. `scratch` has the grid's size and is zero outside
-/// the blurred_y entries (it stays so: only those are ever written).
-void blur(Grid& grid, std::vector<double>& scratch, const ActiveClusters& active) {
-  static const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5),
-                                 std::exp(-2.0)};
-  const std::size_t q = grid.clusters;
-  for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along y
-    for (std::size_t gx = 0; gx < grid.gw; ++gx) {
-      double* out = &scratch[(gy * grid.gw + gx) * q];
-      for (const std::size_t c : active.blurred_y[gy * grid.gw + gx]) {
-        double sum = 0.0;
-        for (int k = -2; k <= 2; ++k) {
-          const long sy = static_cast<long>(gy) + k;
-          if (sy < 0 || sy >= static_cast<long>(grid.gh)) continue;
-          sum += taps[k + 2] * grid.value[(static_cast<std::size_t>(sy) * grid.gw + gx) * q + c];
-        }
-        out[c] = sum;
-      }
-    }
-  }
-  for (std::size_t gy = 0; gy < grid.gh; ++gy) {  // along x
-    for (std::size_t gx = 0; gx < grid.gw; ++gx) {
-      double* out = &grid.value[(gy * grid.gw + gx) * q];
-      for (const std::size_t c : active.blurred[gy * grid.gw + gx]) {
-        double sum = 0.0;
-        for (int k = -2; k <= 2; ++k) {
-          const long sx = static_cast<long>(gx) + k;
-          if (sx < 0 || sx >= static_cast<long>(grid.gw)) continue;
-          sum += taps[k + 2] * scratch[(gy * grid.gw + static_cast<std::size_t>(sx)) * q + c];
-        }
-        out[c] = sum;
-      }
-    }
-  }
-}
 
 struct RangeNeighbour {
   std::size_t cluster;
   double weight;
 };
 
-/// Each node's splatted entries become the range-weighted sum of the node's blurred clusters
-/// (the only entries interpolate() reads). `node` is a zero buffer of q values between calls.
-void mix_clusters(Grid& grid, const std::vector<std::vector<RangeNeighbour>>& neighbours,
-                  const ActiveClusters& active, std::vector<double>& node) {
-  const std::size_t q = grid.clusters;
-  node.resize(q, 0.0);
-  for (std::size_t n = 0; n < grid.gw * grid.gh; ++n) {
-    double* values = &grid.value[n * q];
-    for (const std::size_t c : active.blurred[n]) node[c] = values[c];
-    for (const std::size_t c : active.splatted[n]) {
-      double sum = 0.0;
-      for (const RangeNeighbour& other : neighbours[c]) sum += other.weight * node[other.cluster];
-      values[c] = sum;
-    }
-    for (const std::size_t c : active.blurred[n]) node[c] = 0.0;
+/// Sorted lists of cluster ids, one per grid node, stored end to end: node n's list is
+/// ids[offset[n] .. offset[n + 1]). An entry's index in `ids` is its slot.
+struct NodeLists {
+  std::vector<std::size_t> offset;
+  std::vector<std::size_t> ids;
+
+  [[nodiscard]] std::size_t size() const { return ids.size(); }
+  /// The slot of cluster c in node n's list (c must be in it).
+  [[nodiscard]] std::size_t slot(std::size_t n, std::size_t c) const {
+    const auto first = ids.begin() + static_cast<std::ptrdiff_t>(offset[n]);
+    const auto last = ids.begin() + static_cast<std::ptrdiff_t>(offset[n + 1]);
+    return static_cast<std::size_t>(std::lower_bound(first, last, c) - ids.begin());
   }
-}
-
-/// Zeroes every entry the last filtering may have written (the blurred ones).
-void clear(Grid& grid, const ActiveClusters& active) {
-  for (std::size_t n = 0; n < grid.gw * grid.gh; ++n) {
-    double* values = &grid.value[n * grid.clusters];
-    for (const std::size_t c : active.blurred[n]) values[c] = 0.0;
-  }
-}
-
-double interpolate(const Grid& grid, const Splat& s, std::size_t q) {
-  const std::size_t node = s.gy * grid.gw + s.gx, below = node + grid.gw;
-  const std::vector<double>& v = grid.value;
-  return (1 - s.fx) * (1 - s.fy) * v[node * grid.clusters + q] +
-         s.fx * (1 - s.fy) * v[(node + 1) * grid.clusters + q] +
-         (1 - s.fx) * s.fy * v[below * grid.clusters + q] +
-         s.fx * s.fy * v[(below + 1) * grid.clusters + q];
-}
-
-void splat(Grid& grid, const Splat& s, std::size_t q, double value) {
-  grid.at(s.gx, s.gy, q) += (1 - s.fx) * (1 - s.fy) * value;
-  grid.at(s.gx + 1, s.gy, q) += s.fx * (1 - s.fy) * value;
-  grid.at(s.gx, s.gy + 1, q) += (1 - s.fx) * s.fy * value;
-  grid.at(s.gx + 1, s.gy + 1, q) += s.fx * s.fy * value;
-}
-
-/// One thread's memory for smoothing slices: the grid, the blur's scratch and the mixing
-/// buffer (each as the passes above expect it between slices).
-struct Workspace {
-  Grid grid;
-  std::vector<double> scratch, node;
-  bool used = false;  ///< whether the grid holds a slice (clear() before the next)
 };
 
-/// Splat, blur and mix of one image-sized slice, with everything that does not depend on the
-/// slice computed once.
+NodeLists flattened(std::vector<std::vector<std::size_t>> lists) {
+  NodeLists flat;
+  flat.offset.reserve(lists.size() + 1);
+  flat.offset.push_back(0);
+  for (auto& list : lists) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    flat.ids.insert(flat.ids.end(), list.begin(), list.end());
+    flat.offset.push_back(flat.ids.size());
+  }
+  return flat;
+}
+
+/// Each node's window list: the union of `lists` over the nodes `step` apart within +-2 of it
+/// (step gw: the column window of the blur along y; step 1: the row window along x).
+NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, bool along_y) {
+  std::vector<std::vector<std::size_t>> unions(gw * gh);
+  for (std::size_t gy = 0; gy < gh; ++gy) {
+    for (std::size_t gx = 0; gx < gw; ++gx) {
+      const std::size_t centre = along_y ? gy : gx, size = along_y ? gh : gw;
+      auto& list = unions[gy * gw + gx];
+      for (std::size_t t = centre >= 2 ? centre - 2 : 0; t <= std::min(centre + 2, size - 1); ++t) {
+        const std::size_t n = along_y ? t * gw + gx : gy * gw + t;
+        list.insert(list.end(), lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]),
+                    lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]));
+      }
+    }
+  }
+  return flattened(std::move(unions));
+}
+
+/// For every entry of `from` (node n, cluster c) and each of the 5 taps j (the node at offset
+/// j - 2 along the axis): the slot of c in that node's `to` list, or kNone off the grid.
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+std::vector<std::array<std::uint32_t, 5>> tap_targets(const NodeLists& from, const NodeLists& to,
+                                                      std::size_t gw, std::size_t gh,
+                                                      bool along_y) {
+  std::vector<std::array<std::uint32_t, 5>> targets(from.size());
+  for (std::size_t gy = 0; gy < gh; ++gy) {
+    for (std::size_t gx = 0; gx < gw; ++gx) {
+      const std::size_t n = gy * gw + gx;
+      for (std::size_t e = from.offset[n]; e < from.offset[n + 1]; ++e) {
+        for (int j = 0; j < 5; ++j) {
+          const long tx = static_cast<long>(gx) + (along_y ? 0 : j - 2);
+          const long ty = static_cast<long>(gy) + (along_y ? j - 2 : 0);
+          targets[e][static_cast<std::size_t>(j)] =
+              tx < 0 || ty < 0 || tx >= static_cast<long>(gw) || ty >= static_cast<long>(gh)
+                  ? kNone
+                  : static_cast<std::uint32_t>(
+                        to.slot(static_cast<std::size_t>(ty) * gw + static_cast<std::size_t>(tx),
+                                from.ids[e]));
+        }
+      }
+    }
+  }
+  return targets;
+}
+
+/// One thread's memory for smoothing slices: the grid's entries that can be non-zero after
+/// each pass (splatted, blurred along y, blurred along x, mixed), stored compactly, and a
+/// buffer of one value per cluster (zero between uses).
+struct Workspace {
+  std::vector<double> splatted, blurred_y, blurred, mixed, node;
+};
+
+/// The cross-bilateral smoothing of image-sized slices, with everything that does not depend on
+/// the slice computed once. The grid has one entry per node and cluster, but an entry can only
+/// be non-zero after a pass when a pixel of that cluster splats near the node: per node, the
+/// clusters splatted there, then their unions over the blur windows along y and along x. Only
+/// those entries are stored and computed. Each is the sum of the same terms, in the same order,
+/// as the dense grid's (the terms left out are products with exact zeros, and every value is
+/// >= 0, so leaving them out changes no bit).
 class SliceSmoother {
  public:
   SliceSmoother(const ColourClusters& clusters, std::vector<std::vector<RangeNeighbour>> neighbours,
                 std::size_t width, std::size_t height, int cell)
-      : cluster_of_(clusters.cluster_of),
-        neighbours_(std::move(neighbours)),
+      : neighbours_(std::move(neighbours)),
         gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
         gh_((height - 1) / static_cast<std::size_t>(cell) + 2),
         clusters_(clusters.means.size()) {
-    splats_.resize(width * height);
+    std::vector<Splat> splats(width * height);
     const auto size = static_cast<double>(cell);
     for (std::size_t y = 0; y < height; ++y) {
       for (std::size_t x = 0; x < width; ++x) {
         const double sx = static_cast<double>(x) / size, sy = static_cast<double>(y) / size;
         const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
-        splats_[y * width + x] = {gx, gy, sx - static_cast<double>(gx),
-                                  sy - static_cast<double>(gy)};
+        splats[y * width + x] = {gx, gy, sx - static_cast<double>(gx),
+                                 sy - static_cast<double>(gy)};
       }
     }
-    active_ = active_clusters(gw_, gh_, splats_, cluster_of_);
+    const auto corners = [&](const Splat& s) {
+      return std::array<std::size_t, 4>{s.gy * gw_ + s.gx, s.gy * gw_ + s.gx + 1,
+                                        (s.gy + 1) * gw_ + s.gx, (s.gy + 1) * gw_ + s.gx + 1};
+    };
+    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    for (std::size_t p = 0; p < splats.size(); ++p) {
+      for (const std::size_t n : corners(splats[p]))
+        lists[n].push_back(static_cast<std::size_t>(clusters.cluster_of[p]));
+    }
+    splatted_ = flattened(std::move(lists));
+    blurred_y_ = window_union(splatted_, gw_, gh_, true);
+    blurred_ = window_union(blurred_y_, gw_, gh_, false);
+    y_targets_ = tap_targets(splatted_, blurred_y_, gw_, gh_, true);
+    x_targets_ = tap_targets(blurred_y_, blurred_, gw_, gh_, false);
+    pixels_.resize(splats.size());
+    for (std::size_t p = 0; p < splats.size(); ++p) {
+      const Splat& s = splats[p];
+      const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
+      const auto nodes = corners(s);
+      PixelSplat& pixel = pixels_[p];
+      for (std::size_t k = 0; k < 4; ++k)
+        pixel.slot[k] = static_cast<std::uint32_t>(splatted_.slot(nodes[k], c));
+      pixel.weight = {(1 - s.fx) * (1 - s.fy), s.fx * (1 - s.fy), (1 - s.fx) * s.fy, s.fx * s.fy};
+    }
   }
 
   [[nodiscard]] Workspace workspace() const {
-    const std::size_t size = gw_ * gh_ * clusters_;
-    return {{gw_, gh_, clusters_, std::vector<double>(size, 0.0)},
-            std::vector<double>(size, 0.0),
-            {},
-            false};
+    return {std::vector<double>(splatted_.size()), std::vector<double>(blurred_y_.size()),
+            std::vector<double>(blurred_.size()), std::vector<double>(splatted_.size()),
+            std::vector<double>(clusters_, 0.0)};
   }
 
   /// Leaves the smoothed slice in `space` (read() reads it).
   void smooth(std::span<const double> slice, Workspace& space) const {
-    if (space.used) clear(space.grid, active_);
-    space.used = true;
-    for (std::size_t p = 0; p < splats_.size(); ++p)
-      splat(space.grid, splats_[p], cluster(p), slice[p]);
-    blur(space.grid, space.scratch, active_);
-    mix_clusters(space.grid, neighbours_, active_, space.node);
+    // Splat: each pixel's value into its cluster at the 4 surrounding nodes, pixels in order.
+    std::fill(space.splatted.begin(), space.splatted.end(), 0.0);
+    for (std::size_t p = 0; p < pixels_.size(); ++p) {
+      const PixelSplat& pixel = pixels_[p];
+      for (std::size_t k = 0; k < 4; ++k)
+        space.splatted[pixel.slot[k]] += pixel.weight[k] * slice[p];
+    }
+    blur_pass(space.splatted, splatted_, y_targets_, gw_, space.blurred_y);
+    blur_pass(space.blurred_y, blurred_y_, x_targets_, 1, space.blurred);
+    // Mix: each splatted entry gathers its range neighbours among the node's blurred entries.
+    for (std::size_t n = 0; n < gw_ * gh_; ++n) {
+      for (std::size_t e = blurred_.offset[n]; e < blurred_.offset[n + 1]; ++e)
+        space.node[blurred_.ids[e]] = space.blurred[e];
+      for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
+        double sum = 0.0;
+        for (const RangeNeighbour& other : neighbours_[splatted_.ids[e]])
+          sum += other.weight * space.node[other.cluster];
+        space.mixed[e] = sum;
+      }
+      for (std::size_t e = blurred_.offset[n]; e < blurred_.offset[n + 1]; ++e)
+        space.node[blurred_.ids[e]] = 0.0;
+    }
   }
 
   /// Pixel p's value of the smoothed slice: its cluster's bilinear interpolation.
   [[nodiscard]] double read(const Workspace& space, std::size_t p) const {
-    return interpolate(space.grid, splats_[p], cluster(p));
+    const PixelSplat& pixel = pixels_[p];
+    return pixel.weight[0] * space.mixed[pixel.slot[0]] +
+           pixel.weight[1] * space.mixed[pixel.slot[1]] +
+           pixel.weight[2] * space.mixed[pixel.slot[2]] +
+           pixel.weight[3] * space.mixed[pixel.slot[3]];
   }
 
  private:
-  [[nodiscard]] std::size_t cluster(std::size_t p) const {
-    return static_cast<std::size_t>(cluster_of_[p]);
+  /// A pixel's 4 corner entries (slots of its cluster in the corner nodes' splatted lists, in
+  /// the order top-left, top-right, bottom-left, bottom-right) and their bilinear weights.
+  struct PixelSplat {
+    std::array<std::uint32_t, 4> slot;
+    std::array<double, 4> weight;
+  };
+
+  /// One blur pass with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2] along an axis (`stride` 1: x, gw:
+  /// y): out[node] = sum over t = -2..2 of tap[t] * in[node + t * stride], the terms of each
+  /// entry added in the order of t.
+  void blur_pass(const std::vector<double>& in, const NodeLists& from,
+                 const std::vector<std::array<std::uint32_t, 5>>& targets, std::size_t stride,
+                 std::vector<double>& out) const {
+    static const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5),
+                                   std::exp(-2.0)};
+    std::fill(out.begin(), out.end(), 0.0);
+    // Output node n takes source node n + t * stride for t = -2..2 in turn; the source's
+    // entry lands in n's list at the target of tap j = 2 - t (n is at offset -t from it).
+    for (std::size_t n = 0; n < gw_ * gh_; ++n) {
+      const std::size_t gx = n % gw_, gy = n / gw_;
+      for (int t = -2; t <= 2; ++t) {
+        const long along = stride == 1 ? static_cast<long>(gx) + t : static_cast<long>(gy) + t;
+        if (along < 0 || along >= static_cast<long>(stride == 1 ? gw_ : gh_)) continue;
+        const std::size_t source = stride == 1 ? gy * gw_ + static_cast<std::size_t>(along)
+                                               : static_cast<std::size_t>(along) * gw_ + gx;
+        const double tap = taps[t + 2];
+        const auto j = static_cast<std::size_t>(2 - t);
+        for (std::size_t e = from.offset[source]; e < from.offset[source + 1]; ++e)
+          out[targets[e][j]] += tap * in[e];
+      }
+    }
   }
 
-  const std::vector<int>& cluster_of_;
   std::vector<std::vector<RangeNeighbour>> neighbours_;
   std::size_t gw_, gh_, clusters_;
-  std::vector<Splat> splats_;
-  ActiveClusters active_;
+  NodeLists splatted_, blurred_y_, blurred_;
+  std::vector<std::array<std::uint32_t, 5>> y_targets_, x_targets_;
+  std::vector<PixelSplat> pixels_;
 };
 
 /// Labels filtered per gather: one pass over the pixel-major volume moves this many labels of
