@@ -205,3 +205,110 @@ TEST_CASE("TSGO step 1 gives the same volume, bit for bit, on any number of thre
   CHECK_THROWS_WITH(c2f::vision::tsgo_cost(left, right, options),
                     Catch::Contains("threads must be >= 0"));
 }
+
+namespace {
+
+/// The cross-bilateral filter as its contract states it, on a dense grid of every node and
+/// cluster: the oracle for the filter's sparse storage.
+void dense_cross_bilateral_filter(c2f::vision::CostVolume& volume, const cv::Mat& guide,
+                                  const c2f::vision::BilateralOptions& options) {
+  const auto clusters = c2f::vision::median_cut_clusters(guide, options.cluster_levels);
+  const std::size_t q = clusters.means.size(), w = volume.width(), h = volume.height();
+  const auto cell = static_cast<std::size_t>(options.cell);
+  const std::size_t gw = (w - 1) / cell + 2, gh = (h - 1) / cell + 2;
+  const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5), std::exp(-2.0)};
+  const double cutoff = options.cutoff_sigmas * options.colour_sigma;
+  const auto smooth = [&](const std::vector<double>& slice) {
+    std::vector<double> grid(gw * gh * q, 0.0), pass(gw * gh * q, 0.0);
+    const auto at = [&](std::vector<double>& g, std::size_t x, std::size_t y,
+                        std::size_t c) -> double& { return g[(y * gw + x) * q + c]; };
+    for (std::size_t p = 0; p < w * h; ++p) {
+      const double sx = static_cast<double>(p % w) / static_cast<double>(cell);
+      const double sy = static_cast<double>(p / w) / static_cast<double>(cell);
+      const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
+      const double fx = sx - static_cast<double>(gx), fy = sy - static_cast<double>(gy);
+      const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
+      at(grid, gx, gy, c) += (1 - fx) * (1 - fy) * slice[p];
+      at(grid, gx + 1, gy, c) += fx * (1 - fy) * slice[p];
+      at(grid, gx, gy + 1, c) += (1 - fx) * fy * slice[p];
+      at(grid, gx + 1, gy + 1, c) += fx * fy * slice[p];
+    }
+    for (int axis = 0; axis < 2; ++axis) {  // y, then x
+      std::fill(pass.begin(), pass.end(), 0.0);
+      for (std::size_t y = 0; y < gh; ++y)
+        for (std::size_t x = 0; x < gw; ++x)
+          for (std::size_t c = 0; c < q; ++c)
+            for (int t = -2; t <= 2; ++t) {
+              const long sx = static_cast<long>(x) + (axis == 1 ? t : 0);
+              const long sy = static_cast<long>(y) + (axis == 0 ? t : 0);
+              if (sx < 0 || sy < 0 || sx >= static_cast<long>(gw) || sy >= static_cast<long>(gh))
+                continue;
+              at(pass, x, y, c) += taps[t + 2] * at(grid, static_cast<std::size_t>(sx),
+                                                    static_cast<std::size_t>(sy), c);
+            }
+      grid.swap(pass);
+    }
+    std::vector<double> mixed(grid.size(), 0.0);
+    for (std::size_t n = 0; n < gw * gh; ++n)
+      for (std::size_t a = 0; a < q; ++a) {
+        if (clusters.sizes[a] == 0) continue;
+        double sum = 0.0;
+        for (std::size_t b = 0; b < q; ++b) {
+          if (clusters.sizes[b] == 0) continue;
+          const double distance = cv::norm(clusters.means[a] - clusters.means[b]);
+          if (distance > cutoff) continue;
+          const double r = std::round(distance);
+          sum += std::exp(-r * r / (2.0 * options.colour_sigma * options.colour_sigma)) *
+                 grid[n * q + b];
+        }
+        mixed[n * q + a] = sum;
+      }
+    std::vector<double> out(w * h);
+    for (std::size_t p = 0; p < w * h; ++p) {
+      const double sx = static_cast<double>(p % w) / static_cast<double>(cell);
+      const double sy = static_cast<double>(p / w) / static_cast<double>(cell);
+      const auto gx = static_cast<std::size_t>(sx), gy = static_cast<std::size_t>(sy);
+      const double fx = sx - static_cast<double>(gx), fy = sy - static_cast<double>(gy);
+      const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
+      out[p] = (1 - fx) * (1 - fy) * at(mixed, gx, gy, c) +
+               fx * (1 - fy) * at(mixed, gx + 1, gy, c) + (1 - fx) * fy * at(mixed, gx, gy + 1, c) +
+               fx * fy * at(mixed, gx + 1, gy + 1, c);
+    }
+    return out;
+  };
+  const std::vector<double> denominator = smooth(std::vector<double>(w * h, 1.0));
+  for (int d = 0; d < volume.labels(); ++d) {
+    std::vector<double> slice(w * h);
+    for (std::size_t p = 0; p < w * h; ++p) slice[p] = volume.at(p % w, p / w, d);
+    const std::vector<double> out = smooth(slice);
+    for (std::size_t p = 0; p < w * h; ++p) volume.at(p % w, p / w, d) = out[p] / denominator[p];
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the bilateral filter's sparse grid gives the dense grid's volume, bit for bit",
+          "[stereo][tsgo][bilateral]") {
+  cv::Mat guide(30, 44, CV_8UC3);
+  cv::RNG random(5);
+  random.fill(guide, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(guide, guide, cv::Size(7, 7), 2.0);  // clusters with range neighbours
+  c2f::vision::CostVolume volume(44, 30, 11);
+  for (std::size_t y = 0; y < 30; ++y)
+    for (std::size_t x = 0; x < 44; ++x)
+      for (int d = 0; d < 11; ++d) volume.at(x, y, d) = random.uniform(0.0, 1.0);
+  c2f::vision::BilateralOptions options;
+  options.cell = 5;
+  options.cluster_levels = 7;
+  options.colour_sigma = 4.0;  // several neighbours per cluster
+  for (const int threads : {1, 2}) {
+    options.threads = threads;
+    c2f::vision::CostVolume sparse = volume, dense = volume;
+    c2f::vision::cross_bilateral_filter(sparse, guide, options);
+    dense_cross_bilateral_filter(dense, guide, options);
+    INFO(threads << " threads");
+    CHECK(std::memcmp(sparse.data().data(), dense.data().data(),
+                      dense.data().size() * sizeof(double)) == 0);
+    CHECK(sparse.data() != volume.data());  // it did filter
+  }
+}
