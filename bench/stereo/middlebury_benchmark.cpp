@@ -6,7 +6,8 @@
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
 //                    [--flat-near-radius R] [--c2f-near-radius R] [--flat-shift-moves]
 //                    [--c2f-shift-moves] [--near-levels original|all]
-//       Solves SCENE (a scenes.csv row) flat and coarse to fine from the same TSGO cost volume,
+//       Solves SCENE (a scenes.csv row, middlebury2014/NAME or kitti2015/ID) flat and coarse to
+//       fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
 //       backend, default dynamic; near moves of radius R, ExpansionOptions::near_radius, and shift
 //       moves, ExpansionOptions::shift_moves, in either run on request, on the original problem
@@ -15,12 +16,15 @@
 //       tab-separated result row (header with --header). Coarse levels are refined after 4
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
 //       original problem, in both runs, ends after a whole sweep without decrease (three
-//       sweeps with near moves). Traces go to OUT/SCENE-{flat,c2f}.csv.
+//       sweeps with near moves). Traces go to OUT/SCENE-{flat,c2f}.csv ('/' in SCENE as '-').
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
-// Error = bad-pixel rate (|d - gt| > 1) over non-occluded pixels (official masks for 2003,
-// left-right check for 2005/2006). Deadlines: 20 times drawn uniformly (fixed seed) in
+// Error = the scene's own measure (StereoScene::measure): bad 1 for 2001-2006 (|d - gt| > 1),
+// bad 2.0 at full size for Middlebury 2014, D1 for KITTI; the deadline errors over the
+// non-occluded pixels when the scene has a mask (official masks for 2003 and 2014, left-right
+// check for 2005/2006), else over all pixels with GT. Labels: --labels, else the scene's range
+// (Middlebury 2014 ndisp, KITTI 128), else 85. Deadlines: 20 times drawn uniformly (fixed seed) in
 // [0, the slower run's convergence time]; at a deadline each method shows the labeling of its
 // latest step before it.
 
@@ -64,7 +68,7 @@ namespace {
 struct Run {
   std::vector<bench::TracePoint> trace;
   Summary summary;
-  BadPixelRates rates;
+  SceneErrors errors;  ///< of the final labeling, by the scene's measure
 };
 
 const char* kColumns[] = {"scene",
@@ -86,7 +90,10 @@ const char* kColumns[] = {"scene",
                           "sgbm_bad_all",
                           "sgbm_seconds",
                           "flat_reason",
-                          "c2f_reason"};
+                          "c2f_reason",
+                          "labels",
+                          "prep_seconds",
+                          "threads"};
 
 struct Settings {
   std::string schedule = "paper";
@@ -94,12 +101,13 @@ struct Settings {
   VisitOrder label_order = VisitOrder::sequential;
   double coarse_tolerance = 0.0;
   MaxFlowKind maxflow = MaxFlowKind::dynamic;
-  int downscale = 1;  ///< shrink the views by this factor (the scaling study)
-  int labels = 85;
-  int flat_near_radius = 0;                       ///< ExpansionOptions::near_radius of the flat run
-  int c2f_near_radius = 0;                        ///< and of the coarse-to-fine run
-  bool flat_shift_moves = false;                  ///< ExpansionOptions::shift_moves of the flat run
-  bool c2f_shift_moves = false;                   ///< and of the coarse-to-fine run
+  int downscale = 1;              ///< shrink the views by this factor (the scaling study)
+  int labels = 0;                 ///< 0: the scene's range, else 85
+  int threads = 0;                ///< data preparation threads (0: the machine's cores)
+  int flat_near_radius = 0;       ///< ExpansionOptions::near_radius of the flat run
+  int c2f_near_radius = 0;        ///< and of the coarse-to-fine run
+  bool flat_shift_moves = false;  ///< ExpansionOptions::shift_moves of the flat run
+  bool c2f_shift_moves = false;   ///< and of the coarse-to-fine run
   NearLevels near_levels = NearLevels::original;  ///< where near and shift moves are made
 };
 
@@ -130,8 +138,7 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
         return ObserverDecision::continue_run;
       });
   close_checked(file, trace_path);
-  run.rates = bad_pixel_rates(labels_to_disparity(run.summary.labeling, scene.shape()), scene.gt,
-                              scene.nonoccluded);
+  run.errors = scene_errors(labels_to_disparity(run.summary.labeling, scene.shape()), scene);
   return run;
 }
 
@@ -140,11 +147,23 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   const StereoScene scene = downscale(load_named_scene(data, name), settings.downscale);
   const GridShape shape = scene.shape();
   TsgoOptions tsgo;
-  tsgo.labels = settings.labels;
+  tsgo.labels = settings.labels != 0 ? settings.labels : label_count(scene, 85);
+  tsgo.threads = settings.threads;
+  if (const std::string problem = parse_stereo_schedule(settings.schedule).validate(tsgo.labels);
+      !problem.empty()) {
+    throw std::invalid_argument("--schedule: " + problem + " (" + std::to_string(tsgo.labels) +
+                                " labels)");
+  }
+  const auto prep_start = std::chrono::steady_clock::now();
   const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
+  const double prep_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - prep_start).count();
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
-  examples::OutputFolder output(out, "c2f-bench-stereo", {name + "-flat.csv", name + "-c2f.csv"},
+  // Trace files are named by the scene, its dataset prefix joined by '-' (kitti2015-000000_10).
+  std::string stem = name;
+  std::replace(stem.begin(), stem.end(), '/', '-');
+  examples::OutputFolder output(out, "c2f-bench-stereo", {stem + "-flat.csv", stem + "-c2f.csv"},
                                 examples::OutputFolder::Sharing::by_files);
   auto solve_with = [&](const std::string& schedule, int near_radius, bool shift_moves,
                         const std::string& trace) {
@@ -152,9 +171,9 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
                  (output.staging() / trace).string());
   };
   const Run flat =
-      solve_with("flat", settings.flat_near_radius, settings.flat_shift_moves, name + "-flat.csv");
+      solve_with("flat", settings.flat_near_radius, settings.flat_shift_moves, stem + "-flat.csv");
   const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, settings.c2f_shift_moves,
-                             name + "-c2f.csv");
+                             stem + "-c2f.csv");
 
   const bench::AnytimeComparison anytime =
       bench::compare_anytime({flat.trace, flat.summary.energy, flat.summary.seconds},
@@ -182,7 +201,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
       sgbm_disparity.at<float>(y, x) = v < 0 ? std::numeric_limits<float>::quiet_NaN() : v / 16.0F;
     }
   }
-  const BadPixelRates sgbm_rates = bad_pixel_rates(sgbm_disparity, scene.gt, scene.nonoccluded);
+  const SceneErrors sgbm_errors = scene_errors(sgbm_disparity, scene);
 
   if (header) {
     for (std::size_t i = 0; i < std::size(kColumns); ++i)
@@ -191,14 +210,14 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   }
   std::printf(
       "%s\t%zu\t%.6f\t%.6f\t%.5f\t%.5f\t%.5f\t%.5f\t%.3f\t%.3f\t%.3f\t%.4f\t%.5f\t%.5f\t%.4f\t%."
-      "5f\t%.5f\t%.3f\t%s\t%s\n",
-      name.c_str(), shape.size(), flat.summary.energy, c2f.summary.energy,
-      flat.rates.nonoccluded[1], c2f.rates.nonoccluded[1], flat.rates.all[1], c2f.rates.all[1],
-      flat.summary.seconds, c2f.summary.seconds, anytime.reach_seconds, anytime.reach_ratio,
-      anytime.flat_error, anytime.run_error, 1.0 - anytime.run_error / anytime.flat_error,
-      sgbm_rates.nonoccluded[1], sgbm_rates.all[1], sgbm_seconds,
-      std::string(to_string(flat.summary.reason)).c_str(),
-      std::string(to_string(c2f.summary.reason)).c_str());
+      "5f\t%.5f\t%.3f\t%s\t%s\t%d\t%.3f\t%u\n",
+      name.c_str(), shape.size(), flat.summary.energy, c2f.summary.energy, flat.errors.nonoccluded,
+      c2f.errors.nonoccluded, flat.errors.all, c2f.errors.all, flat.summary.seconds,
+      c2f.summary.seconds, anytime.reach_seconds, anytime.reach_ratio, anytime.flat_error,
+      anytime.run_error, 1.0 - anytime.run_error / anytime.flat_error, sgbm_errors.nonoccluded,
+      sgbm_errors.all, sgbm_seconds, std::string(to_string(flat.summary.reason)).c_str(),
+      std::string(to_string(c2f.summary.reason)).c_str(), tsgo.labels, prep_seconds,
+      resolved_threads(tsgo.threads));
   output.commit();
   return 0;
 }
@@ -211,11 +230,12 @@ int summarize(const std::string& path) {
   std::printf(
       "| scene | flat E | C2F E | flat bad nonocc / all | C2F bad nonocc / all | flat s | C2F s | "
       "C2F reaches flat E (s) | ratio | deadline error flat / C2F | reduction | SGBM bad nonocc / "
-      "all | SGBM s |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "all | SGBM s | labels | data prep s (threads) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> columns(std::size(kColumns));
   for (const auto& r : rows) {
     for (std::size_t c = 1; c < 18; ++c) columns[c].push_back(number(r[c]));
+    columns[21].push_back(number(r[21]));
     // A run that never reaches flat's final energy is a loss: infinite time, not a missing value.
     if (std::isnan(number(r[10]))) {
       columns[10].back() = std::numeric_limits<double>::infinity();
@@ -224,12 +244,12 @@ int summarize(const std::string& path) {
     const double reach = number(r[10]);
     std::printf(
         "| %s | %.1f | %.1f | %.2f%% / %.2f%% | %.2f%% / %.2f%% | %.1f | %.1f | %s | %s | %.2f%% / "
-        "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f |\n",
+        "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f | %s | %.2f (%s) |\n",
         r[0].c_str(), number(r[2]), number(r[3]), 100 * number(r[4]), 100 * number(r[6]),
         100 * number(r[5]), 100 * number(r[7]), number(r[8]), number(r[9]),
         std::isnan(reach) ? "never" : r[10].c_str(), std::isnan(reach) ? "-" : r[11].c_str(),
         100 * number(r[12]), 100 * number(r[13]), 100 * number(r[14]), 100 * number(r[15]),
-        100 * number(r[16]), number(r[17]));
+        100 * number(r[16]), number(r[17]), r[20].c_str(), number(r[21]), r[22].c_str());
   }
   std::size_t never = 0, wins = 0;
   for (const auto& r : rows) {
@@ -238,13 +258,13 @@ int summarize(const std::string& path) {
   }
   std::printf(
       "| **median** | | | %.2f%% / %.2f%% | %.2f%% / %.2f%% | %.1f | %.1f | %.1f | %.3f | %.2f%% / "
-      "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f |\n",
+      "%.2f%% | %.1f%% | %.2f%% / %.2f%% | %.2f | | %.2f |\n",
       100 * bench::median(columns[4]), 100 * bench::median(columns[6]),
       100 * bench::median(columns[5]), 100 * bench::median(columns[7]), bench::median(columns[8]),
       bench::median(columns[9]), bench::median(columns[10]), bench::median(columns[11]),
       100 * bench::median(columns[12]), 100 * bench::median(columns[13]),
       100 * bench::median(columns[14]), 100 * bench::median(columns[15]),
-      100 * bench::median(columns[16]), bench::median(columns[17]));
+      100 * bench::median(columns[16]), bench::median(columns[17]), bench::median(columns[21]));
   std::printf(
       "\n%zu scenes; C2F never reached flat's final energy on %zu (counted as infinite time in the "
       "medians); "
@@ -274,7 +294,11 @@ int main(int argc, char** argv) {
               "plateau tolerance on coarse levels")
         .text("maxflow", &maxflow, "dynamic, boost or kolmogorov")
         .integer("downscale", &settings.downscale, {1, 16}, "shrink the views by this factor")
-        .integer("labels", &settings.labels, {2, 256}, "disparity labels")
+        .integer("labels", &settings.labels, {0, 256},
+                 "disparity labels (0: the scene's range, Middlebury 2014 ndisp or 128 for KITTI, "
+                 "else 85)")
+        .integer("threads", &settings.threads, {0, 1024},
+                 "threads preparing the data (0: the machine's cores; the energy is the same)")
         .integer("flat-near-radius", &settings.flat_near_radius, {0, 1000000},
                  "near moves of this radius in the flat run (0: whole moves only)")
         .integer("c2f-near-radius", &settings.c2f_near_radius, {0, 1000000},
@@ -303,6 +327,7 @@ int main(int argc, char** argv) {
             "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves");
       }
     }
+    if (settings.labels == 1) throw std::invalid_argument("--labels: expected 0 or 2-256, got 1");
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",
                              [&] { return parse_stereo_schedule(settings.schedule); });

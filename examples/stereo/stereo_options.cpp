@@ -112,7 +112,7 @@ void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& sc
                                 std::to_string(scene.disparity_range) +
                                 " labels, more than 256: give --labels (or --downscale)");
   }
-  set_labels(command, scene.disparity_range >= 2 ? scene.disparity_range : kDefaultLabels);
+  set_labels(command, vision::label_count(scene, kDefaultLabels));
 }
 
 Options run_options(const StereoCommand& command) {

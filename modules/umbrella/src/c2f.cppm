@@ -226,6 +226,7 @@ using c2f::vision::KMeansStart;
 using c2f::vision::kNoLabel;
 using c2f::vision::kTsgoWeightBounds;
 using c2f::vision::kTsgoWeights;
+using c2f::vision::label_count;
 using c2f::vision::label_image;
 using c2f::vision::labels_by_colour;
 using c2f::vision::labels_to_disparity;

@@ -223,7 +223,31 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
   REQUIRE(run.exit_code == 0);
   CHECK(std::filesystem::exists(out / "rows" / "Teddy-c2f.csv"));
   // The C2F row ends on the original problem, converged like the flat one.
-  CHECK_THAT(run.output, Catch::Contains("Teddy\t") && Catch::EndsWith("converged\tconverged\n"));
+  CHECK_THAT(run.output,
+             Catch::Contains("Teddy\t") && Catch::Contains("converged\tconverged\t28\t"));
+
+  // A Middlebury 2014 scene: its own label count (ndisp 73 shrunk by 4) and measure, and the
+  // data preparation's time and threads in the row; the summary reads such rows.
+  const auto scene2014 = c2f::test::run_tool(
+      bench + "/c2f-bench-stereo",
+      "run middlebury2014/Adirondack --schedule aggregated --downscale 4 --threads 1 --header "
+      "--out " +
+          (out / "rows2014").string() + " --data " + data.string());
+  INFO(scene2014.output);
+  REQUIRE(scene2014.exit_code == 0);
+  CHECK_THAT(scene2014.output, Catch::Contains("labels\tprep_seconds\tthreads\n") &&
+                                   Catch::Contains("middlebury2014/Adirondack\t22196\t") &&
+                                   Catch::Contains("\t19\t") && Catch::EndsWith("\t1\n"));
+  {
+    std::ofstream(out / "rows2014.tsv")
+        << scene2014.output.substr(scene2014.output.find("scene\t"));
+  }
+  const auto table = c2f::test::run_tool(bench + "/c2f-bench-stereo",
+                                         "summarize " + (out / "rows2014.tsv").string());
+  INFO(table.output);
+  CHECK(table.exit_code == 0);
+  CHECK_THAT(table.output, Catch::Contains("| middlebury2014/Adirondack |") &&
+                               Catch::Contains("| 19 | ") && Catch::Contains(" (1) |"));
 
   const auto levels = c2f::test::run_tool(
       bench + "/c2f-bench-levels", "Teddy --schedule \"slic:16 slic:8\" --data " + data.string());

@@ -25,6 +25,10 @@ bool ErrorMeasure::is_bad(double disparity, double truth) const noexcept {
   return !(error <= absolute) && (relative <= 0.0 || !(error <= relative * truth));
 }
 
+int label_count(const StereoScene& scene, int fallback) noexcept {
+  return scene.disparity_range >= 2 ? scene.disparity_range : fallback;
+}
+
 StereoScene load_stereo_pair(const StereoPairFiles& files) {
   if ((!files.gt_right.empty() || !files.mask.empty()) && files.gt.empty())
     throw std::invalid_argument("a right-view GT or a mask needs the left-view GT");

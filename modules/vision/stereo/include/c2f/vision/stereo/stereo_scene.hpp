@@ -47,6 +47,10 @@ struct StereoPairFiles {
   std::string mask;         ///< official non-occluded mask (255 = evaluate); wins over gt_right
 };
 
+/// The label count a run of `scene` uses without a count of its own: the scene's disparity
+/// range when it has one (>= 2), else `fallback`.
+[[nodiscard]] int label_count(const StereoScene& scene, int fallback) noexcept;
+
 /// Loads a pair: the views (named by the file stem of `left`), the GT and the non-occluded mask
 /// (official mask, else the left-right check when gt_right is given). Throws
 /// std::invalid_argument naming the input when sizes differ or a mask comes without GT, and
