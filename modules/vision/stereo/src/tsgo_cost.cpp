@@ -1,5 +1,6 @@
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
+#include "c2f/core/parallel_for.hpp"
 #include "stereo_pair_checks.hpp"
 
 #include <algorithm>
@@ -108,7 +109,7 @@ std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul) {
 
 CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
                                   const std::array<cv::Mat, 6>& right, int labels,
-                                  double truncation) {
+                                  double truncation, int threads) {
   for (std::size_t p = 0; p < 6; ++p) {
     if (left[p].type() != CV_8U || right[p].type() != CV_8U || left[p].size() != left[0].size() ||
         right[p].size() != left[0].size()) {
@@ -117,18 +118,21 @@ CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
   }
   const auto w = static_cast<std::size_t>(left[0].cols), h = static_cast<std::size_t>(left[0].rows);
   CostVolume volume(w, h, labels, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t y = 0; y < h; ++y) {
-    for (std::size_t x = 0; x < w; ++x) {
-      for (int d = 0; d < labels && volume.valid(x, d); ++d) {
-        int sum = 0;
-        for (std::size_t p = 0; p < 6; ++p) {
-          sum += std::abs(left[p].at<uchar>(static_cast<int>(y), static_cast<int>(x)) -
-                          right[p].at<uchar>(static_cast<int>(y), static_cast<int>(x) - d));
+  parallel_for(
+      h,
+      [&](std::size_t y) {
+        for (std::size_t x = 0; x < w; ++x) {
+          for (int d = 0; d < labels && volume.valid(x, d); ++d) {
+            int sum = 0;
+            for (std::size_t p = 0; p < 6; ++p) {
+              sum += std::abs(left[p].at<uchar>(static_cast<int>(y), static_cast<int>(x)) -
+                              right[p].at<uchar>(static_cast<int>(y), static_cast<int>(x) - d));
+            }
+            volume.at(x, y, d) = std::min(static_cast<double>(sum), truncation);
+          }
         }
-        volume.at(x, y, d) = std::min(static_cast<double>(sum), truncation);
-      }
-    }
-  }
+      },
+      threads);
   return volume;
 }
 
@@ -142,7 +146,7 @@ double erf_approximation(double x) {
   return sign * y;
 }
 
-RobustTransformParameters robust_transform(CostVolume& volume, double threshold) {
+RobustTransformParameters robust_transform(CostVolume& volume, double threshold, int threads) {
   const std::size_t pixels = volume.width() * volume.height();
   double sum_minimum = 0.0, sum_excess = 0.0;
   std::size_t valid_cells = 0;
@@ -171,14 +175,17 @@ RobustTransformParameters robust_transform(CostVolume& volume, double threshold)
   parameters.slope = threshold * spread * spread;
   if (parameters.slope > 2.5) parameters.slope *= 0.91;
   const double mm = parameters.mean_minimum;
-  for (std::size_t y = 0; y < volume.height(); ++y) {
-    for (std::size_t x = 0; x < volume.width(); ++x) {
-      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
-        double& cost = volume.at(x, y, d);
-        cost = (1.0 + erf_approximation(parameters.slope * (cost - mm) / mm)) / 2.0;
-      }
-    }
-  }
+  parallel_for(
+      volume.height(),
+      [&](std::size_t y) {
+        for (std::size_t x = 0; x < volume.width(); ++x) {
+          for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
+            double& cost = volume.at(x, y, d);
+            cost = (1.0 + erf_approximation(parameters.slope * (cost - mm) / mm)) / 2.0;
+          }
+        }
+      },
+      threads);
   return parameters;
 }
 

@@ -62,8 +62,8 @@ TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions&
   const double mul = gradient_scale(pair.left);
   CostVolume volume =
       gradient_matching_cost(gradient_planes(pair.left, mul), gradient_planes(pair.right, mul),
-                             options.labels, options.cost_truncation);
-  robust_transform(volume, options.transform_threshold);
+                             options.labels, options.cost_truncation, options.threads);
+  robust_transform(volume, options.transform_threshold, options.threads);
   fill_left_border(volume);
   BilateralOptions bilateral = options.bilateral;
   if (options.cluster_levels_from_labels) bilateral.cluster_levels = options.labels < 30 ? 11 : 12;

@@ -47,10 +47,11 @@ double gradient_scale(const cv::Mat& image);
 std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul);
 
 /// C0(x, y, d) = min(sum over the 6 planes of |left(x, y) - right(x - d, y)|, truncation) for
-/// valid (x, d); invalid cells are set to NaN (fill_left_border replaces them).
+/// valid (x, d); invalid cells are set to NaN (fill_left_border replaces them). Rows are
+/// computed on `threads` threads (0: the machine's cores); each cell is the same for any count.
 CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
                                   const std::array<cv::Mat, 6>& right, int labels,
-                                  double truncation = 360.0);
+                                  double truncation = 360.0, int threads = 1);
 
 /// The Abramowitz-Stegun 7.1.26 approximation of erf (absolute error < 1.5e-7), as TSGO uses.
 double erf_approximation(double x);
@@ -64,8 +65,10 @@ struct RobustTransformParameters {
 /// Replaces every valid cell by C1 = (1 + erf(t (C0 - mm) / mm)) / 2, in (0, 1), with the data-
 /// driven parameters above (threshold 0.00095). Invalid (NaN) cells stay NaN. Throws
 /// std::invalid_argument when mm is 0 (every pixel has a perfect match), where the transform is
-/// undefined.
-RobustTransformParameters robust_transform(CostVolume& volume, double threshold = 0.00095);
+/// undefined. The parameters' sums run in one thread in raster order; the cells are transformed
+/// on `threads` threads (0: the machine's cores), each the same for any count.
+RobustTransformParameters robust_transform(CostVolume& volume, double threshold = 0.00095,
+                                           int threads = 1);
 
 /// For d > x (the match leaves the right image) copies the cost of the first pixel of the row
 /// where d is valid: cost(x, y, d) = cost(d, y, d); when d >= width, no pixel has d valid and
