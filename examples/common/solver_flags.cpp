@@ -3,6 +3,9 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "c2f/core/memory_need.hpp"
+#include "c2f/core/number_text.hpp"
+
 namespace c2f::examples {
 
 void SolverFlags::declare(ToolOptions& options) {
@@ -14,9 +17,14 @@ void SolverFlags::declare(ToolOptions& options) {
             "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move "
             "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
             "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
-      .real("graph-memory", &graph_memory_gib_, {0.0, 65536.0},
-            "GiB the dynamic backend may keep in per-label move graphs (beyond it, moves share a "
-            "graph solved from zero flow; 0: no recycling)")
+      .real("memory", &memory_gib_, {0.0, 65536.0},
+            "GiB the whole run may take: the energy and the levels' reduced energies first, what "
+            "they leave for the move graphs the dynamic backend recycles per label (0: half of "
+            "this machine's memory, at most what is available; a run whose energy does not fit "
+            "is refused before it allocates)")
+      .text("graph-memory", &graph_memory_text_,
+            "at most this many GiB of the budget for recycled move graphs (0: no recycling; "
+            "default: all the budget leaves)")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "
@@ -64,9 +72,28 @@ SolverChoice SolverFlags::choice() const {
                                 ": not in this build (configure with "
                                 "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
   }
-  choice.graph_memory_limit =
-      static_cast<std::size_t>(graph_memory_gib_ * static_cast<double>(std::size_t{1} << 30));
+  if (!graph_memory_text_.empty()) {
+    const double gib = parse_real_option("--graph-memory", graph_memory_text_, {0.0, 65536.0});
+    choice.graph_memory_limit =
+        static_cast<std::size_t>(gib * static_cast<double>(std::size_t{1} << 30));
+  } else {
+    choice.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
+  }
   return choice;
+}
+
+MemoryBudget SolverFlags::budget() const {
+  if (memory_gib_ == 0.0) return default_memory_budget();
+  return memory_budget_of_gib(memory_gib_, "--memory " + format_real(memory_gib_));
+}
+
+std::string memory_line(const MemoryBudget& budget, const SolverChoice& choice) {
+  std::string line = "memory budget " + budget.describe();
+  if (choice.kind == SolverKind::expansion || choice.kind == SolverKind::swap) {
+    line += ", recycled move graphs up to " +
+            format_bytes(static_cast<double>(choice.graph_memory_limit));
+  }
+  return line;
 }
 
 void RunRuleFlags::declare(ToolOptions& options) {

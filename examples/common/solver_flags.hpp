@@ -1,12 +1,13 @@
 #pragma once
 // The options that choose a solver and end its run, shared by the tools that offer every
-// solver (c2f-stereo, c2f-solve): --solver, --maxflow, --graph-memory, --near-radius,
+// solver (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --near-radius,
 // --shift-moves, --near-levels, --label-order, and
 // --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau; and the run with
 // the solver they choose.
 
 #include <string>
 
+#include "c2f/adapters/run_memory.hpp"
 #include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/observer.hpp"
 #include "c2f/core/pairwise_energy.hpp"
@@ -18,21 +19,28 @@ namespace c2f::examples {
 
 class SolverFlags {
  public:
-  /// Declares the seven options in `options` (this object receives their values, so it must
+  /// Declares the eight options in `options` (this object receives their values, so it must
   /// outlive options.parse()).
   void declare(ToolOptions& options);
 
   /// The solver the parsed options choose. Throws std::invalid_argument naming the option for
   /// an unknown name, a visit order the solver does not take, or a backend not in this build.
   [[nodiscard]] SolverChoice choice() const;
+  /// The run's memory budget: --memory, else the machine's default (default_memory_budget).
+  [[nodiscard]] MemoryBudget budget() const;
 
  private:
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
-              near_levels_;  // empty: not given (SolverChoice's default)
-  double graph_memory_gib_ = static_cast<double>(MoveOptions{}.graph_memory_limit) / (1 << 30);
+              near_levels_;        // empty: not given (SolverChoice's default)
+  std::string graph_memory_text_;  // empty: what the budget leaves
+  double memory_gib_ = 0.0;        // 0: default_memory_budget()
   int near_radius_ = 0;
   bool shift_moves_ = false;
 };
+
+/// "memory budget 11.7 GiB (half of this machine's 23.5 GiB), recycled move graphs up to 10.2
+/// GiB" (the second part for expansion and swap): the budget line of a tool's summary.
+[[nodiscard]] std::string memory_line(const MemoryBudget& budget, const SolverChoice& choice);
 
 /// The options that end levels and the run; the values are public (defaults as shown).
 struct RunRuleFlags {

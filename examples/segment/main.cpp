@@ -31,6 +31,10 @@ struct TimedProblem {
 
 TimedProblem build_problem(const SegmentationScene& scene,
                            const examples::SegmentCommand& command) {
+  command.memory.require("segmenting " + std::to_string(scene.image.cols) + "x" +
+                             std::to_string(scene.image.rows) + " pixels into " +
+                             std::to_string(scene.num_labels()) + " labels",
+                         segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
   const auto start = Clock::now();
   SegmentationProblem problem =
       segmentation_problem(scene, command.parameters, command.preparation);
@@ -77,7 +81,12 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
               ScheduleProvider& levels, const Observer& observer) {
   const int num_labels = problem.coop.num_labels();
   if (command.method == examples::SegmentMethod::potts) {
-    ExpansionSolver<> solver;
+    // Its recycled move graphs get what the budget leaves.
+    SolverChoice choice;
+    choice.graph_memory_limit = static_cast<std::size_t>(-1);
+    choice = fit_to_budget(choice, problem_size(problem.potts, levels.schedule().levels.size() > 0),
+                           command.memory, "the Potts energy");
+    ExpansionSolver<> solver(choice.expansion_options());
     const Options options =
         examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));
     return coarse_to_fine(problem.potts, levels, solver, options, observer);
@@ -114,7 +123,8 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << " edge classes, k-means " << kmeans_text(command.preparation.gmm_kmeans) << ", seeds "
          << command.preparation.gmm_kmeans.seed << " (GMMs) and "
          << command.preparation.edge_kmeans.seed << " (edge classes)\n"
-         << "data preparation: " << built.seconds << " s (not on the run clock)\n";
+         << "data preparation: " << built.seconds << " s (not on the run clock)\nmemory budget "
+         << command.memory.describe() << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "
          << built.problem.coop.evaluate(summary.labeling)

@@ -3,6 +3,8 @@
 #include "coop_flags.hpp"
 #include "tool_options.hpp"
 
+#include "c2f/core/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -28,6 +30,7 @@ SegmentMethod segment_method_from_string(std::string_view text) {
 
 std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   SegmentCommand command;
+  double memory_gib = 0.0;  // 0: default_memory_budget()
   std::string method = "coop", aux = "mm", start = "zero", plateau = "auto";
   bool labels_from_gt = false, binary = false;
   ToolOptions options(
@@ -79,6 +82,10 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
             "also write the Potts energy of the same data (the alpha-expansion baseline; a "
             "cooperative cut is not pairwise) as a UAI MARKOV model, for c2f-solve or toulbar2")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
+      .real("memory", &memory_gib, {0.0, 65536.0},
+            "GiB the whole run may take (0: half of this machine's memory, at most what is "
+            "available); the Potts method's recycled move graphs get what the data leave, and a "
+            "run whose data do not fit is refused before it allocates")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
   const auto parsed = options.parse(argc, argv, {"IMAGE SEEDS", 2});
   if (!parsed) return std::nullopt;
@@ -115,6 +122,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   with_flag("--schedule", [&] { return vision::parse_segmentation_schedule(command.schedule, 2); });
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
+  command.memory = memory_gib == 0.0
+                       ? default_memory_budget()
+                       : memory_budget_of_gib(memory_gib, "--memory " + format_real(memory_gib));
   return command;
 }
 

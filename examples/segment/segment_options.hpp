@@ -7,6 +7,7 @@
 
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/cooperative/coop_energy.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
@@ -35,6 +36,7 @@ struct SegmentCommand {
   /// reference's window) or one sweep when that is shorter; -1 = one whole sweep.
   int plateau = 0;
   int final_plateau = 0;  ///< 0: one sweep of the solver
+  MemoryBudget memory;    ///< --memory, else the machine's default
   std::string trace;
   std::string export_uai;  ///< --export-uai: the Potts energy of the same data, as UAI
   bool save_partitions = false;

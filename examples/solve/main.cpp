@@ -39,7 +39,7 @@ TimedModel read_model(const examples::SolveCommand& command) {
 }
 
 void write_summary(const std::filesystem::path& folder, const examples::SolveCommand& command,
-                   const TimedModel& model, const Schedule& schedule,
+                   const SolverChoice& solver, const TimedModel& model, const Schedule& schedule,
                    const ScheduleProvider& levels, const Summary& summary,
                    const examples::InterruptWatch& interrupts) {
   std::ofstream report(folder / "summary.txt");
@@ -48,7 +48,8 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
          << " pairwise factors\n"
          << "schedule " << schedule.to_string() << ", solver " << to_string(command.solver.kind)
          << "\n"
-         << "reading the model: " << model.seconds << " s (not on the run clock)\n";
+         << "reading the model: " << model.seconds << " s (not on the run clock)\n"
+         << examples::memory_line(command.memory, solver) << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "energy = sum of -ln(potential) over the factors; log10 of the unnormalised "
          << "probability: " << -summary.energy / std::log(10.0) << "\n";
@@ -72,16 +73,25 @@ int main(int argc, char** argv) {
     const TimedModel model = read_model(command);
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
-    // Outputs are staged and moved into place together at the end.
-    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-solve", command.quiet);
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
+    // The model and the run's floor must fit the budget; recycled move graphs get the rest.
+    const bool coarse = !schedule.levels.empty() || !schedule.auto_fractions.empty();
+    const SolverChoice solver = fit_to_budget(
+        command.solver, problem_size(model.energy, coarse), command.memory,
+        "MODEL '" + command.model + "' solved by " + std::string(to_string(command.solver.kind)));
+    if (!command.quiet) {
+      std::fprintf(stderr, "c2f-solve: %s\n",
+                   examples::memory_line(command.memory, solver).c_str());
+    }
+    // Outputs are staged and moved into place together at the end.
+    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-solve", command.quiet);
     const Summary summary =
-        examples::run_chosen_solver(model.energy, levels, command.solver, command.rules.options(),
+        examples::run_chosen_solver(model.energy, levels, solver, command.rules.options(),
                                     record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
     write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());
-    write_summary(record.staging(), command, model, schedule, levels, summary, interrupts);
+    write_summary(record.staging(), command, solver, model, schedule, levels, summary, interrupts);
     record.commit();
     examples::print_run_end("c2f-solve", summary, interrupts, command.out_dir, command.quiet);
     return interrupts.exit_code();

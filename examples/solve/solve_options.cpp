@@ -66,6 +66,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
     throw std::invalid_argument("-o/--out: an output directory is required");
   if (!grid.empty()) command.grid = parse_grid(grid);
   command.solver = solver.choice();
+  command.memory = solver.budget();
   // The grammar now; the label count and the grid once the model is read.
   with_flag("--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
   if (command.trace.empty())

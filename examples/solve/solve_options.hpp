@@ -18,7 +18,8 @@ struct SolveCommand {
   std::string schedule_text = "flat";  ///< checked against the model once it is read
   std::optional<GridShape> grid;       ///< --grid WxH: the variables are a row-major grid
   SolverChoice solver;
-  RunRuleFlags rules;  ///< plateaus and limits
+  MemoryBudget memory;  ///< --memory, else the machine's default
+  RunRuleFlags rules;   ///< plateaus and limits
   std::string trace;
   bool quiet = false;
 };

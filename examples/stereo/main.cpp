@@ -61,6 +61,31 @@ StereoScene load_input(examples::StereoCommand& command) {
   return scene;
 }
 
+/// Whether the run has coarse levels (reduced energies beside the original one).
+bool has_coarse_levels(const Schedule& schedule) {
+  return !schedule.levels.empty() || !schedule.auto_fractions.empty();
+}
+
+/// Before anything is allocated: TSGO step 1 and the run's floor (run_memory_floor) must fit the
+/// budget and the machine, else "needs N GiB".
+void require_memory_for(const examples::StereoCommand& command, const StereoScene& scene) {
+  const GridShape shape = scene.shape();
+  const std::string what = "the TSGO energy of " + std::to_string(shape.width) + "x" +
+                           std::to_string(shape.height) + " pixels and " +
+                           std::to_string(command.tsgo.labels) + " labels solved by " +
+                           std::string(to_string(command.solver.kind));
+  const std::optional<std::size_t> step1 =
+      tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels, command.tsgo.threads);
+  const std::optional<ProblemSize> size = grid_problem_size(
+      shape.width, shape.height, command.tsgo.labels, has_coarse_levels(command.schedule));
+  std::optional<std::size_t> floor = size ? run_memory_floor(command.solver, *size) : std::nullopt;
+  if (step1 && floor) floor = std::max(*step1, *floor);
+  command.memory.require((command.scene.empty() ? "LEFT '" + command.pair.left + "': "
+                                                : "--scene " + command.scene + ": ") +
+                             what,
+                         step1 ? floor : step1);
+}
+
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
 /// the same for flat and coarse-to-fine runs.
 struct StereoProblem {
@@ -114,7 +139,8 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << ", solver " << to_string(command.solver.kind) << ", max-flow "
          << to_string(command.solver.maxflow) << near_and_shift_moves_text(command.solver) << "\n"
          << "TSGO step 1: " << problem.seconds << " s on " << resolved_threads(command.tsgo.threads)
-         << " threads (not on the run clock, same for every schedule)\n";
+         << " threads (not on the run clock, same for every schedule)\n"
+         << examples::memory_line(command.memory, command.solver) << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {
@@ -127,10 +153,11 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
 
 void announce(const examples::StereoCommand& command, const StereoScene& scene) {
   if (command.quiet) return;
-  std::fprintf(stderr, "c2f-stereo: %s %zux%zu, %d labels, schedule %s, solver %s\n",
-               scene.name.c_str(), scene.shape().width, scene.shape().height, command.tsgo.labels,
-               command.schedule.to_string().c_str(),
-               std::string(to_string(command.solver.kind)).c_str());
+  std::fprintf(
+      stderr, "c2f-stereo: %s %zux%zu, %d labels, schedule %s, solver %s, memory budget %s\n",
+      scene.name.c_str(), scene.shape().width, scene.shape().height, command.tsgo.labels,
+      command.schedule.to_string().c_str(), std::string(to_string(command.solver.kind)).c_str(),
+      command.memory.describe().c_str());
 }
 
 /// The dataset's own error line for the labeling ("D1 ...: all 4.56%"), or "" for a scene
@@ -167,7 +194,12 @@ int main(int argc, char** argv) {
     examples::RunRecord record(command.out_dir, kOutputs, command.trace, "c2f-stereo",
                                command.quiet);
     announce(command, scene);
+    require_memory_for(command, scene);
     const StereoProblem problem = build_problem(command, scene);
+    // The recycled move graphs get what the budget leaves.
+    command.solver = fit_to_budget(
+        command.solver, problem_size(problem.tsgo.energy, has_coarse_levels(command.schedule)),
+        command.memory, "the run on the TSGO energy");
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();

@@ -84,6 +84,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   command.solver = solver.choice();
+  command.memory = solver.budget();
   command.tsgo.smoothness =
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
   command.schedule =

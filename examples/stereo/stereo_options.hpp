@@ -23,7 +23,8 @@ struct StereoCommand {
   Schedule schedule;
   bool allow_non_refining = false;
   SolverChoice solver;
-  RunRuleFlags rules;  ///< plateaus and limits
+  MemoryBudget memory;  ///< --memory, else the machine's default
+  RunRuleFlags rules;   ///< plateaus and limits
   std::string trace;
   std::string export_uai;  ///< --export-uai: the model, written in the UAI format
   bool save_partitions = false;

@@ -112,6 +112,9 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
            {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
+           {grid + out + " --memory 0.01",
+            "grid.uai' solved by expansion needs 128.0 MiB, more than the run's memory budget of "
+            "10.2 MiB (--memory 0.01)"},
            // An output over the model, or over one of the run's own outputs (was exit 0).
            {grid + out + " --trace " + grid, "--trace '" + grid + "' is the same file as MODEL"},
            {grid + out + " --trace " + (dir / "out" / "labeling.mpe").string(),

@@ -316,3 +316,38 @@ TEST_CASE("c2f-stereo reads Middlebury 2014 and KITTI scenes and scores them the
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--schedule: ") && Catch::Contains("(--labels 10)"));
 }
+
+TEST_CASE("c2f-stereo stays within its memory budget: recycled move graphs get what is left",
+          "[stereo][cli][memory]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-memory";
+  std::filesystem::remove_all(dir);
+  c2f::test::write_synthetic_pair(dir, 320, 240, 4, 20, 13);
+  const std::string pair = (dir / "left.png").string() + " " + (dir / "right.png").string();
+  const auto solve = [&](const std::string& name, const std::string& memory) {
+    const auto r = c2f::test::run_tool_measured(
+        C2F_STEREO_BINARY, pair + " -o " + (dir / name).string() +
+                               " --labels 48 --schedule flat --max-steps 150 -q" + memory);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    std::ifstream in(dir / name / "summary.txt");
+    std::string line;
+    while (std::getline(in, line) && line.rfind("memory budget ", 0) != 0) {
+    }
+    return std::pair{r.peak_kib, line};
+  };
+  // Every label's graphs fit in the default budget; in 0.25 GiB the energy and the run's floor
+  // leave room for some of them only.
+  const auto [unbounded_kib, unbounded_line] = solve("default", "");
+  const auto [bounded_kib, bounded_line] = solve("bounded", " --memory 0.25");
+  INFO(unbounded_line << "\n" << bounded_line);
+  CHECK_THAT(bounded_line, Catch::StartsWith("memory budget 256.0 MiB (--memory 0.25), recycled "
+                                             "move graphs up to "));
+  CHECK(bounded_kib <= 256 * 1024);
+  CHECK(unbounded_kib > 256 * 1024);
+  const cv::Mat unbounded =
+      cv::imread((dir / "default/disparity.png").string(), cv::IMREAD_UNCHANGED);
+  const cv::Mat bounded =
+      cv::imread((dir / "bounded/disparity.png").string(), cv::IMREAD_UNCHANGED);
+  REQUIRE_FALSE(bounded.empty());
+  CHECK(cv::countNonZero(unbounded != bounded) == 0);
+}

@@ -265,6 +265,47 @@ TEST_CASE("the graph memory limit bounds how many labels recycle their graphs",
   }
 }
 
+TEST_CASE("a full graph budget evicts only graphs idle since the requesting key's last move",
+          "[recycling]") {
+  using Graphs = detail::MoveGraphs<DynamicMaxFlow>;
+  using detail::GraphKind;
+  Graphs graphs;
+  graphs.clear();
+  graphs.recycle(4, 200);  // room for two graphs of 100 bytes
+  bool recycled = false;
+  // The key's own graph when it has one, else the shared graph of its kind.
+  const auto owns = [&](std::size_t key, GraphKind kind = GraphKind::plain) {
+    graphs.acquire(key, kind, 100, recycled);
+    return recycled;
+  };
+  // A repeating order over three keys with room for two: keys 0 and 1 keep their graphs and
+  // key 2 never evicts them (each was used after key 2's previous move).
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    CHECK(owns(0) == (sweep >= 2));  // first move shared, second move copies, then recycled
+    CHECK(owns(1) == (sweep >= 2));
+    CHECK_FALSE(owns(2));
+  }
+  CHECK(graphs.evictions() == 0);
+  CHECK(graphs.owned_bytes() == 200);
+  // Key 0 stops being used: key 2's next move comes after a move of its own since key 0's
+  // last, so key 0's graph is evicted and key 2 gets a copy; from then on key 2 recycles.
+  CHECK(owns(1));
+  CHECK_FALSE(owns(2));
+  CHECK(graphs.evictions() == 1);
+  CHECK(owns(2));
+  CHECK(owns(1));
+  CHECK_FALSE(owns(0));  // both graphs were used since key 0's last move: nothing evicted
+  CHECK(graphs.evictions() == 1);
+  CHECK(graphs.owned_bytes() == 200);
+  // A graph of a kind its key no longer uses is idle too: key 1's moves turn QPBO.
+  CHECK_FALSE(owns(1, GraphKind::qpbo));  // its first QPBO move: shared
+  CHECK(owns(2));
+  CHECK_FALSE(owns(1, GraphKind::qpbo));  // evicts its own plain graph, copies
+  CHECK(graphs.evictions() == 2);
+  CHECK(owns(1, GraphKind::qpbo));
+  CHECK(owns(2));
+}
+
 TEST_CASE("patched expansion problems are bitwise the problems computed in full",
           "[expansion][recycling]") {
   Rng rng(17);

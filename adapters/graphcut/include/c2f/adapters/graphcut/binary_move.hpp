@@ -18,8 +18,9 @@
 // the move costs in proportion to what changed since that key's last move. A key's first move
 // uses a shared graph, re-solved from whatever move it solved before (a better start than zero
 // flow even for another label); from its second move on it has a graph of its own (a copy of
-// the graph solved last) while such graphs fit in a memory limit. Other backends solve every move
-// from zero flow.
+// the graph solved last) while such graphs fit in a memory limit; when one does not, graphs
+// idle since before that key's previous move are evicted, least recently used first
+// (detail::MoveGraphs). Other backends solve every move from zero flow.
 
 #include <algorithm>
 #include <chrono>
@@ -87,6 +88,8 @@ class BinaryMoveSolver {
 
   /// Bytes of the graphs the keys own so far.
   [[nodiscard]] std::size_t recycled_bytes() const noexcept { return graphs_.owned_bytes(); }
+  /// Graphs evicted to make room for others since recycle() (detail::MoveGraphs).
+  [[nodiscard]] std::size_t evicted_graphs() const noexcept { return graphs_.evictions(); }
 
   /// Minimises the problem above. With every p[e] >= 0 one max-flow gives an exact minimiser
   /// and every variable is labelled. Otherwise QPBO (Kolmogorov and Rother 2007) on the doubled

@@ -2,9 +2,12 @@
 // Internal to BinaryMoveSolver: which max-flow graph solves each move (the recycling policy
 // that binary_move.hpp describes). Installed only because the solver templates include it.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
@@ -27,6 +30,12 @@ struct MoveGraph {
 
 /// One shared graph per kind, and for a reusing backend (ReusingMaxFlow) graphs of their own
 /// for the keys 0..num_keys-1 from their second move on, while those fit in a memory limit.
+/// When a key's graph does not fit, the graphs idle longest are evicted to make room, but only
+/// those idle since before the key's own previous move: under a repeating order of keys (a
+/// sweep over the labels) every other graph was used more recently, so a full budget keeps
+/// the graphs it has rather than trading one miss for another at every move; what it evicts
+/// is what stopped being used (a key's graph of the kind its moves no longer need, keys a
+/// visit order skips).
 template <MaxFlow Backend>
 class MoveGraphs {
  public:
@@ -39,6 +48,8 @@ class MoveGraphs {
     own_.clear();
     last_key_[0] = last_key_[1] = kNoKey;
     owned_bytes_ = 0;
+    clock_ = 0;
+    evictions_ = 0;
   }
 
   /// Keys 0..num_keys-1 may own graphs while all owned graphs take at most memory_limit bytes.
@@ -47,32 +58,38 @@ class MoveGraphs {
     own_.resize(num_keys);
     memory_limit_ = memory_limit;
     owned_bytes_ = 0;
+    evictions_ = 0;
   }
 
   [[nodiscard]] std::size_t owned_bytes() const noexcept { return owned_bytes_; }
+  /// Graphs evicted to make room since recycle().
+  [[nodiscard]] std::size_t evictions() const noexcept { return evictions_; }
 
   /// The graph for a move of this key and kind (graph_bytes: what one such graph with its
   /// problem takes). A key with a graph of its own gets it back (recycled = true). A key seen
-  /// before without one gets one when it fits: a copy of the graph of this kind solved last.
-  /// Otherwise, and on a key's first move, which has nothing to recycle, the shared graph.
-  /// The graph may still need building (built == false).
+  /// before without one gets one when it fits, after evicting graphs idle since before its
+  /// previous move if needed: a copy of the graph of this kind solved last. Otherwise, and on
+  /// a key's first move, which has nothing to recycle, the shared graph. The graph may still
+  /// need building (built == false).
   MoveGraph<Backend>& acquire(std::size_t key, GraphKind kind, std::size_t graph_bytes,
                               bool& recycled) {
     const auto k = static_cast<std::size_t>(kind);
     recycled = false;
+    ++clock_;
     MoveGraph<Backend>* graph = nullptr;
     if constexpr (ReusingMaxFlow<Backend>) {
       if (key < own_.size()) {
         Owned& own = own_[key];
         std::unique_ptr<MoveGraph<Backend>>& mine = own.graphs[k];
-        const bool seen = own.seen[k];
-        own.seen[k] = true;
+        const std::uint64_t previous_use = own.last_use[k];  // 0: never
+        own.last_use[k] = clock_;
         if (mine) {
           recycled = true;
-        } else if (seen && owned_bytes_ + graph_bytes <= memory_limit_) {
+        } else if (previous_use > 0 && make_room(graph_bytes, previous_use)) {
           const MoveGraph<Backend>* last = last_graph(kind);
           mine = last != nullptr ? std::make_unique<MoveGraph<Backend>>(*last)
                                  : std::make_unique<MoveGraph<Backend>>();
+          own.bytes[k] = graph_bytes;
           owned_bytes_ += graph_bytes;
         }
         graph = mine.get();
@@ -86,8 +103,40 @@ class MoveGraphs {
  private:
   struct Owned {  // by GraphKind
     std::array<std::unique_ptr<MoveGraph<Backend>>, 2> graphs;
-    std::array<bool, 2> seen = {false, false};
+    std::array<std::size_t, 2> bytes = {0, 0};
+    std::array<std::uint64_t, 2> last_use = {0, 0};  // acquire() count at the last move; 0: none
   };
+
+  /// Evicts owned graphs last used before `before`, least recently used first, until `bytes`
+  /// more fit in the limit; false when they cannot (then nothing is evicted). The graphs that
+  /// solved last (last_key_) are never evicted: they were used after any such key.
+  bool make_room(std::size_t bytes, std::uint64_t before) {
+    if (bytes > memory_limit_) return false;
+    std::size_t freeable = 0;
+    std::vector<std::pair<std::uint64_t, std::pair<std::size_t, std::size_t>>> idle;
+    if (owned_bytes_ + bytes > memory_limit_) {
+      for (std::size_t key = 0; key < own_.size(); ++key) {
+        for (std::size_t k = 0; k < 2; ++k) {
+          if (own_[key].graphs[k] && own_[key].last_use[k] < before) {
+            idle.push_back({own_[key].last_use[k], {key, k}});
+            freeable += own_[key].bytes[k];
+          }
+        }
+      }
+      if (owned_bytes_ - freeable + bytes > memory_limit_) return false;
+      std::sort(idle.begin(), idle.end());
+    }
+    for (std::size_t i = 0; owned_bytes_ + bytes > memory_limit_; ++i) {
+      Owned& own = own_[idle[i].second.first];
+      const std::size_t k = idle[i].second.second;
+      own.graphs[k].reset();
+      if (last_key_[k] == idle[i].second.first) last_key_[k] = kNoKey;
+      owned_bytes_ -= own.bytes[k];
+      own.bytes[k] = 0;
+      ++evictions_;
+    }
+    return true;
+  }
 
   /// The graph of this kind that solved last (null before the first such solve).
   const MoveGraph<Backend>* last_graph(GraphKind kind) const {
@@ -101,6 +150,8 @@ class MoveGraphs {
   std::size_t last_key_[2] = {kNoKey, kNoKey};  // whose graph of each kind solved last
   std::size_t memory_limit_ = 0;
   std::size_t owned_bytes_ = 0;
+  std::uint64_t clock_ = 0;  // acquire() calls since clear()
+  std::size_t evictions_ = 0;
 };
 
 }  // namespace c2f::detail

@@ -46,11 +46,13 @@ struct TsgoCost {
   bool equalised;     ///< whether photometric equalisation changed the images
 };
 
-/// A lower estimate of the bytes a TSGO run of width x height pixels and `labels` labels needs
-/// besides its recycled move graphs (MoveOptions::graph_memory_limit): the cost volume, which
-/// becomes the unaries, a filtering copy of it, each label's patched move coefficients and one
-/// QPBO move graph. std::nullopt when the count overflows.
-std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels);
+/// An estimate of the bytes TSGO step 1 takes at its peak for width x height pixels and
+/// `labels` labels on `threads` threads (0: the machine's cores): the cost volume, which
+/// becomes the energy's unaries, the images and their features, and each thread's filter
+/// workspace. A run's solver needs more (run_memory_floor). std::nullopt when the count
+/// overflows.
+std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels,
+                                                int threads = 1);
 
 /// TSGO step 1 for the left view: equalisation, gradient features, matching cost, robust
 /// transform, border fill and the cross-bilateral filter. Throws std::invalid_argument for

@@ -1,0 +1,47 @@
+#pragma once
+// A run's memory budget (c2f/core/memory_budget.hpp) split between what a run of a chosen
+// solver cannot do without (its floor) and what its solver may keep to go faster: the recycled
+// move graphs and kept move problems of expansion and swap (MoveOptions::graph_memory_limit).
+
+#include <cstddef>
+#include <optional>
+
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/memory_budget.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f {
+
+/// The sizes of a problem that its memory depends on, known before the energy is built.
+struct ProblemSize {
+  std::size_t variables = 0;
+  int labels = 0;
+  std::size_t edges = 0;
+  std::size_t energy_bytes = 0;  ///< what the energy's arrays take (energy_memory_bytes)
+  bool coarse_levels = true;     ///< false for a flat run (no reduced energies)
+};
+
+/// The sizes of `energy`, solved coarse to fine when coarse_levels.
+[[nodiscard]] ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels);
+
+/// The sizes of a 4-connected width x height grid energy with `labels` labels and one L x L
+/// table term, before it is built. std::nullopt when they overflow.
+[[nodiscard]] std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height,
+                                                           int labels, bool coarse_levels);
+
+/// An upper estimate of the bytes a run of `choice` on a problem of this size takes besides the
+/// solver's optional memory: the process and its images (128 MiB), the energy, one level's
+/// reduced energy (at most as large; only with coarse levels), labelings and partitions (64
+/// bytes per variable), and the solver's working memory (graph cuts: the shared plain and QPBO
+/// move graphs, the move's problem and, with near moves, a second solver; belief propagation:
+/// its messages). std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> run_memory_floor(const SolverChoice& choice,
+                                                          const ProblemSize& size);
+
+/// `choice` with graph_memory_limit lowered to what `budget` leaves above run_memory_floor (a
+/// smaller limit already in `choice` stays). Throws std::invalid_argument "<what> needs N,
+/// more than the run's memory budget of M" (MemoryBudget::require) when the floor does not fit.
+[[nodiscard]] SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size,
+                                         const MemoryBudget& budget, const std::string& what);
+
+}  // namespace c2f

@@ -1,0 +1,85 @@
+#include "c2f/adapters/run_memory.hpp"
+
+#include <algorithm>
+
+#include "c2f/core/memory_need.hpp"
+
+namespace c2f {
+
+namespace {
+
+constexpr std::size_t kProcessBytes = std::size_t{128} << 20;
+constexpr std::size_t kPerVariableBytes = 64;
+
+/// One graph-cut solver's working memory: per variable and per edge, for the plain and the
+/// doubled QPBO graph with their capacities and problems, the move's d and p and its outputs
+/// (300 and 240 bytes: a flat Teddy run without recycling peaks at 344 MiB, which this floor
+/// puts at 380; Boost's adjacency lists are counted at twice that, 453 MiB against 505).
+std::optional<std::size_t> graph_cut_bytes(MaxFlowKind backend, const ProblemSize& size) {
+  const std::size_t scale = backend == MaxFlowKind::boost ? 2 : 1;
+  const auto nodes = checked_product({size.variables, 300 * scale});
+  const auto arcs = checked_product({size.edges, 240 * scale});
+  if (!nodes || !arcs) return std::nullopt;
+  return *nodes + *arcs;
+}
+
+std::optional<std::size_t> solver_bytes(const SolverChoice& choice, const ProblemSize& size) {
+  switch (choice.kind) {
+    case SolverKind::expansion: {
+      const auto one = graph_cut_bytes(choice.maxflow, size);
+      const bool second = choice.near_radius > 0 || choice.shift_moves;
+      return one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;
+    }
+    case SolverKind::swap:
+      return graph_cut_bytes(choice.maxflow, size);
+    case SolverKind::lbp:  // two message arrays of 2 per edge and label, beliefs and scratch
+      return checked_product({size.edges * 4 + size.variables * 3,
+                              static_cast<std::size_t>(std::max(size.labels, 1)), sizeof(double)});
+    case SolverKind::icm:
+      return checked_product({size.variables, 16});
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels) {
+  return {energy.num_variables(), energy.num_labels(), energy.edges().size(),
+          energy_memory_bytes(energy), coarse_levels};
+}
+
+std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height, int labels,
+                                             bool coarse_levels) {
+  const auto variables = checked_product({width, height});
+  const auto l = static_cast<std::size_t>(std::max(labels, 0));
+  const auto unaries = variables ? checked_product({*variables, l, sizeof(double)}) : variables;
+  const auto edge_bytes = variables ? checked_product({*variables, 2, sizeof(Edge)}) : variables;
+  const auto table = checked_product({l, l, sizeof(double)});
+  if (!unaries || !edge_bytes || !table || *unaries > static_cast<std::size_t>(-1) / 2)
+    return std::nullopt;
+  const std::size_t edges = width > 0 && height > 0 ? 2 * *variables - width - height : 0;
+  return ProblemSize{*variables, labels, edges, *unaries + *edge_bytes + *table, coarse_levels};
+}
+
+std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const ProblemSize& size) {
+  const auto per_variable = checked_product({size.variables, kPerVariableBytes});
+  const auto solver = solver_bytes(choice, size);
+  if (!per_variable || !solver) return std::nullopt;
+  std::size_t total = kProcessBytes;
+  for (const std::size_t part :
+       {size.energy_bytes, size.coarse_levels ? size.energy_bytes : 0, *per_variable, *solver}) {
+    if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
+    total += part;
+  }
+  return total;
+}
+
+SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size, const MemoryBudget& budget,
+                           const std::string& what) {
+  const std::optional<std::size_t> floor = run_memory_floor(choice, size);
+  budget.require_within(what, floor);
+  choice.graph_memory_limit = std::min(choice.graph_memory_limit, budget.bytes - *floor);
+  return choice;
+}
+
+}  // namespace c2f

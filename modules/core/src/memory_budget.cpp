@@ -1,0 +1,69 @@
+#include "c2f/core/memory_budget.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "c2f/core/memory_need.hpp"
+
+namespace c2f {
+
+namespace {
+
+constexpr double kGib = 1024.0 * 1024.0 * 1024.0;
+
+std::optional<std::size_t> physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return std::nullopt;
+  return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size);
+}
+
+}  // namespace
+
+std::string MemoryBudget::describe() const {
+  return format_bytes(static_cast<double>(bytes)) + (origin.empty() ? "" : " (" + origin + ")");
+}
+
+void MemoryBudget::require_within(const std::string& what, std::optional<std::size_t> need) const {
+  if (need && *need <= bytes) return;
+  const std::string text =
+      need ? format_bytes(static_cast<double>(*need)) : std::string("more than 16 EiB");
+  throw std::invalid_argument(what + " needs " + text + ", more than the run's memory budget of " +
+                              describe());
+}
+
+void MemoryBudget::require(const std::string& what, std::optional<std::size_t> need) const {
+  require_within(what, need);
+  require_memory(what, need);
+}
+
+MemoryBudget default_memory_budget() {
+  const std::optional<std::size_t> physical = physical_memory_bytes();
+  const std::optional<std::size_t> available = available_memory_bytes();
+  if (!physical && !available) return {std::size_t{4} << 30, "this machine's memory is unknown"};
+  if (!physical) return {*available / 2, "half of the memory available"};
+  const std::size_t half = *physical / 2;
+  const std::string share =
+      "half of this machine's " + format_bytes(static_cast<double>(*physical));
+  if (available && *available < half) return {*available, "all that is available"};
+  return {half, share};
+}
+
+MemoryBudget memory_budget_of_gib(double gib, const std::string& origin) {
+  if (!std::isfinite(gib) || !(gib > 0.0) || gib * kGib >= 1.8e19) {
+    throw std::invalid_argument(origin + ": the memory budget must be a finite number of GiB > 0");
+  }
+  return {static_cast<std::size_t>(gib * kGib), origin};
+}
+
+std::size_t energy_memory_bytes(const PairwiseEnergy& energy) {
+  std::size_t bytes =
+      energy.unaries().size() * sizeof(double) + energy.edges().size() * sizeof(Edge);
+  for (const PairwiseTerm& term : energy.terms())
+    bytes += sizeof(PairwiseTerm) + term.table_costs().size() * sizeof(double);
+  return bytes;
+}
+
+}  // namespace c2f

@@ -1,0 +1,72 @@
+// A run's memory budget: how it is chosen and reported, and how it is split between the run's
+// floor and the recycled move graphs.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "c2f/adapters/run_memory.hpp"
+#include "c2f/core/memory_budget.hpp"
+#include "c2f/core/memory_need.hpp"
+#include "support/random_models.hpp"
+
+using namespace c2f;
+
+TEST_CASE("the default budget is half the machine's memory, at most what is available",
+          "[memory]") {
+  const MemoryBudget budget = default_memory_budget();
+  const auto available = available_memory_bytes();
+  REQUIRE(available.has_value());
+  CHECK(budget.bytes > 0);
+  CHECK(budget.bytes <= *available);
+  CHECK_THAT(budget.describe(), Catch::Contains(" GiB (") || Catch::Contains(" MiB ("));
+  const MemoryBudget two = memory_budget_of_gib(2.0, "--memory 2");
+  CHECK(two.bytes == std::size_t{2} << 30);
+  CHECK(two.describe() == "2.0 GiB (--memory 2)");
+  for (const double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    CHECK_THROWS_WITH(memory_budget_of_gib(bad, "--memory x"),
+                      Catch::StartsWith("--memory x: the memory budget must be"));
+  }
+  CHECK_THROWS_WITH(two.require_within("a big run", std::size_t{3} << 30),
+                    "a big run needs 3.0 GiB, more than the run's memory budget of 2.0 GiB "
+                    "(--memory 2)");
+  CHECK_THROWS_WITH(two.require_within("an overflowing run", std::nullopt),
+                    Catch::Contains("needs more than 16 EiB"));
+  CHECK_NOTHROW(two.require("a small run", std::size_t{1} << 20));
+}
+
+TEST_CASE("the recycled graphs get what the budget leaves above the run's floor", "[memory]") {
+  test::Rng rng(8);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
+  CHECK(energy_memory_bytes(energy) >=
+        energy.unaries().size() * sizeof(double) + energy.edges().size() * sizeof(Edge));
+  SolverChoice choice;
+  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
+  const ProblemSize flat = problem_size(energy, false), coarse = problem_size(energy, true);
+  const auto flat_floor = run_memory_floor(choice, flat);
+  const auto coarse_floor = run_memory_floor(choice, coarse);
+  REQUIRE(flat_floor.has_value());
+  REQUIRE(coarse_floor.has_value());
+  // Coarse levels add one reduced energy at most as large as the original.
+  CHECK(*coarse_floor == *flat_floor + flat.energy_bytes);
+  // Near and shift moves add a second solver's working memory; lbp its messages.
+  SolverChoice near = choice;
+  near.near_radius = 3;
+  CHECK(*run_memory_floor(near, flat) > *flat_floor);
+  // The grid estimate before building matches the built energy's sizes.
+  const auto predicted = grid_problem_size(30, 20, 6, false);
+  REQUIRE(predicted.has_value());
+  CHECK(predicted->variables == flat.variables);
+  CHECK(predicted->edges == flat.edges);
+  CHECK_FALSE(grid_problem_size(std::size_t{1} << 40, std::size_t{1} << 30, 256, true));
+
+  const MemoryBudget budget{*flat_floor + 12345, "a test"};
+  CHECK(fit_to_budget(choice, flat, budget, "the run").graph_memory_limit == 12345);
+  choice.graph_memory_limit = 100;  // a smaller limit given stays
+  CHECK(fit_to_budget(choice, flat, budget, "the run").graph_memory_limit == 100);
+  CHECK_THROWS_WITH(
+      fit_to_budget(choice, coarse, budget, "the run"),
+      Catch::StartsWith("the run needs ") &&
+          Catch::EndsWith("more than the run's memory budget of " + budget.describe()));
+}
