@@ -120,7 +120,10 @@ int run(const RunCommand& command) {
                       [&] { return parse_segmentation_schedule(command.schedule, 2); });
   if (command.plateau != "auto" && command.plateau != "sweep")
     throw std::invalid_argument("--plateau: expected auto or sweep, got '" + command.plateau + "'");
-  const DataPreparation preparation = command.preparation.resolved();
+  // The images are prepared in parallel (--threads); each preparation on one thread.
+  examples::PreparationFlags flags = command.preparation;
+  flags.threads = 1;
+  const DataPreparation preparation = flags.resolved();
   const auto lambdas = bench::number_list("--lambdas", command.lambdas, examples::kLambdaRange);
   const bool potts = command.method == "potts";
   // Potts reads lambda only; its rows carry the example's theta and alpha.

@@ -36,15 +36,20 @@ struct PreparationFlags {
   std::string kmeans = "plusplus";
   std::uint64_t gmm_seed = 27;
   std::uint64_t edge_seed = 27;
+  /// Threads of both k-means runs and of the labels' colour models (0: the machine's cores;
+  /// the result is the same for every count). Declared by the tools that have --threads.
+  int threads = 0;
 
   /// Throws std::invalid_argument naming --kmeans for a variant it does not know.
   [[nodiscard]] vision::DataPreparation resolved() const {
     const auto options = [&](std::uint64_t seed) {
-      return with_flag("--kmeans", [&] {
+      vision::KMeansOptions chosen = with_flag("--kmeans", [&] {
         if (kmeans == "reference") return vision::reference_kmeans(seed);
         if (kmeans == "plusplus") return vision::plus_plus_kmeans(seed);
         throw std::invalid_argument("expected reference or plusplus, got '" + kmeans + "'");
       });
+      chosen.threads = threads;
+      return chosen;
     };
     return {classes, options(gmm_seed), options(edge_seed)};
   }

@@ -82,6 +82,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
             "also write the Potts energy of the same data (the alpha-expansion baseline; a "
             "cooperative cut is not pairwise) as a UAI MARKOV model, for c2f-solve or toulbar2")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
+      .integer("threads", &preparation.threads, {0, 1024},
+               "threads preparing the data: the labels' colour models and the edge classes' "
+               "k-means (0: the machine's cores); the result is the same for every count")
       .real("memory", &memory_gib, {0.0, 65536.0},
             "GiB the whole run may take (0: half of this machine's memory, at most what is "
             "available); the Potts method's recycled move graphs get what the data leave, and a "

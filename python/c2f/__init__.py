@@ -140,7 +140,7 @@ def _result(call: Callable[[], Dict[str, Any]]) -> Result:
 def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels", *,
             method: str = "coop", aux: str = "mm", start: str = "zero", lambda_: float = 0.5,
             theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
-            kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27,
+            kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27, threads: int = 0,
             time_limit: float = 0.0, max_steps: int = 0, plateau: int = 0,
             callback: Optional[Callback] = None) -> Result:
     """Interactive multi-label segmentation by cooperative cuts, as c2f-segment runs it.
@@ -153,10 +153,11 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     variables are found: 'mm' (majorise-minimise), 'greedy' (with `start`: 'zero' or
     'current') or 'ceres' (a continuous relaxation). schedule: 'superpixels', 'paper', 'flat' or
     any schedule text (slic:S levels segment the image). kmeans, gmm_seed, edge_seed: the data
-    preparation's clustering. plateau: steps without decrease that end a coarse level (0: the
+    preparation's clustering; threads: the cores it runs on (0: all; the result is the same for
+    every count). plateau: steps without decrease that end a coarse level (0: the
     number of labels or one sweep when shorter; -1: one sweep). result.labeling is (H, W).
     """
     return _result(lambda: _segment(image, seeds, method, aux, start, schedule, float(lambda_),
                                     float(theta), float(alpha), int(classes), kmeans,
-                                    int(gmm_seed), int(edge_seed), float(time_limit),
+                                    int(gmm_seed), int(edge_seed), int(threads), float(time_limit),
                                     int(max_steps), int(plateau), callback))

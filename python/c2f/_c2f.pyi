@@ -126,8 +126,8 @@ def read_segmentation(image: str, seeds: str, gt: str = "", convention: str = "c
 
 def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, method: str, aux: str, start: str,
              schedule: str, lambda_: float, theta: float, alpha: float, classes: int,
-             kmeans: str, gmm_seed: int, edge_seed: int, time_limit: float, max_steps: int,
-             plateau: int,
+             kmeans: str, gmm_seed: int, edge_seed: int, threads: int, time_limit: float,
+             max_steps: int, plateau: int,
              callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]]) -> Dict[str, Any]:
     """The engine of c2f.segment (which documents the arguments); returns a dict."""
 

@@ -93,8 +93,8 @@ vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::h
 py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& method,
                  const std::string& aux, const std::string& start, const std::string& schedule_text,
                  double lambda, double theta, double alpha, int classes, const std::string& kmeans,
-                 std::uint64_t gmm_seed, std::uint64_t edge_seed, double time_limit, long max_steps,
-                 int plateau, const py::object& callback) {
+                 std::uint64_t gmm_seed, std::uint64_t edge_seed, int threads, double time_limit,
+                 long max_steps, int plateau, const py::object& callback) {
   if (method != "coop" && method != "potts")
     throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");
   const vision::SegmentationScene scene = scene_from_arrays(image, seeds);
@@ -116,8 +116,12 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     throw py::value_error("classes: expected an integer in [1, 256]");
   if (kmeans != "plusplus" && kmeans != "reference")
     throw py::value_error("kmeans: expected 'plusplus' or 'reference', got '" + kmeans + "'");
+  if (threads < 0) throw py::value_error("threads: expected an integer >= 0 (0: all cores)");
   const auto clustering = [&](std::uint64_t seed) {
-    return kmeans == "plusplus" ? vision::plus_plus_kmeans(seed) : vision::reference_kmeans(seed);
+    vision::KMeansOptions options =
+        kmeans == "plusplus" ? vision::plus_plus_kmeans(seed) : vision::reference_kmeans(seed);
+    options.threads = threads;
+    return options;
   };
   const vision::DataPreparation preparation{classes, clustering(gmm_seed), clustering(edge_seed)};
   if (!std::isfinite(time_limit) || time_limit < 0)
@@ -180,8 +184,8 @@ void bind_segment(py::module_& module) {
   module.def("_segment", &segment, py::arg("image"), py::arg("seeds"), py::arg("method"),
              py::arg("aux"), py::arg("start"), py::arg("schedule"), py::arg("lambda_"),
              py::arg("theta"), py::arg("alpha"), py::arg("classes"), py::arg("kmeans"),
-             py::arg("gmm_seed"), py::arg("edge_seed"), py::arg("time_limit"), py::arg("max_steps"),
-             py::arg("plateau"), py::arg("callback"),
+             py::arg("gmm_seed"), py::arg("edge_seed"), py::arg("threads"), py::arg("time_limit"),
+             py::arg("max_steps"), py::arg("plateau"), py::arg("callback"),
              "The engine of c2f.segment (which documents the arguments); returns a dict.");
 }
 

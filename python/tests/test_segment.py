@@ -51,6 +51,17 @@ def test_segment_methods_and_schedules(fruits):
         assert np.all(np.diff(result.trace["energy"]) <= 1e-9 * abs(result.trace["energy"][0]))
 
 
+def test_segment_is_the_same_on_any_number_of_threads(fruits):
+    image, seeds = fruits["image"], fruits["seeds"]
+    one = c2f.segment(image, seeds, max_steps=10, threads=1)
+    for threads in (2, 0):
+        many = c2f.segment(image, seeds, max_steps=10, threads=threads)
+        np.testing.assert_array_equal(many.labeling, one.labeling)
+        np.testing.assert_array_equal(many.trace["energy"], one.trace["energy"])
+    with pytest.raises(ValueError, match="threads: expected an integer >= 0"):
+        c2f.segment(image, seeds, threads=-1)
+
+
 def test_segment_inputs_are_checked(rng):
     image = rng.integers(0, 255, (20, 30, 3), dtype=np.uint8)
     seeds = np.full((20, 30), -1)

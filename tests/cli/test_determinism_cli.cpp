@@ -157,6 +157,19 @@ TEST_CASE("c2f-segment writes the same bytes twice", "[cli][determinism][segment
                        dir / "greedy");
 }
 
+TEST_CASE("c2f-segment writes the same bytes on one thread and on several",
+          "[cli][determinism][segment][threads]") {
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-segment-threads";
+  fs::remove_all(dir);
+  // 160x120 pixels: 8-connected edges give about 150k points for the edge classes' k-means.
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 160, 120, 4);
+  const std::string inputs = files.image + " " + files.seeds + " --gt " + files.gt + " ";
+  check_two_runs_agree(C2F_SEGMENT_BINARY, inputs + "--max-steps 20", dir / "plusplus",
+                       {"--threads 1", "--threads 2"});
+  check_two_runs_agree(C2F_SEGMENT_BINARY, inputs + "--kmeans reference --max-steps 20",
+                       dir / "reference", {"--threads 1", "--threads 3"});
+}
+
 TEST_CASE("c2f-synthetic writes the same bytes twice", "[cli][determinism]") {
   const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-synthetic";
   fs::remove_all(dir);

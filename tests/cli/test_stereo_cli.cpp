@@ -342,8 +342,14 @@ TEST_CASE("c2f-stereo stays within its memory budget: recycled move graphs get w
   INFO(unbounded_line << "\n" << bounded_line);
   CHECK_THAT(bounded_line, Catch::StartsWith("memory budget 256.0 MiB (--memory 0.25), recycled "
                                              "move graphs up to "));
+#if defined(__SANITIZE_ADDRESS__)
+  // Resident sizes there include the sanitizer's shadow memory and quarantine.
+  WARN("AddressSanitizer build: peak resident sizes " << bounded_kib << " and " << unbounded_kib
+                                                      << " KiB not compared with the budget");
+#else
   CHECK(bounded_kib <= 256 * 1024);
   CHECK(unbounded_kib > 256 * 1024);
+#endif
   const cv::Mat unbounded =
       cv::imread((dir / "default/disparity.png").string(), cv::IMREAD_UNCHANGED);
   const cv::Mat bounded =

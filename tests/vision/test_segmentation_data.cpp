@@ -70,6 +70,38 @@ TEST_CASE("k-means finds separated clusters, deterministically", "[segmentation]
                     Catch::Contains("expected sample or plusplus"));
 }
 
+TEST_CASE("k-means and the unaries are the same for every thread count",
+          "[segmentation][kmeans][threads]") {
+  std::mt19937_64 rng(4);
+  // Overlapping blobs, 60000 points: several ranges of points per round, many rounds.
+  const auto points =
+      blobs(rng, {{0, 0, 0}, {0.3, 0, 0}, {0, 0.3, 0.2}, {0.2, 0.2, 0.2}}, 15000, 0.15);
+  for (KMeansOptions options : {reference_kmeans(3), plus_plus_kmeans(3)}) {
+    INFO(to_string(options.start));
+    options.threads = 1;
+    const KMeansResult one = kmeans(points, 6, options);
+    for (const int threads : {2, 3, 0}) {
+      options.threads = threads;
+      const KMeansResult many = kmeans(points, 6, options);
+      CHECK(many.assignment == one.assignment);
+      CHECK(many.centres == one.centres);  // bit for bit
+    }
+  }
+  KMeansOptions negative;
+  negative.threads = -1;
+  CHECK_THROWS_WITH(kmeans(points, 2, negative), Catch::Contains("threads must be >= 0"));
+
+  const auto files = test::write_synthetic_segmentation(
+      std::filesystem::temp_directory_path() / "c2f-test-unaries-threads", 120, 90, 3);
+  const SegmentationScene scene =
+      load_segmentation_scene({files.image, files.seeds, files.gt, SeedConvention::colours});
+  KMeansOptions gmm = plus_plus_kmeans(27);
+  gmm.threads = 1;
+  const std::vector<double> serial = segmentation_unaries(scene, gmm);
+  gmm.threads = 2;
+  CHECK(segmentation_unaries(scene, gmm) == serial);
+}
+
 TEST_CASE("k-means keeps a point in its cluster on a tie", "[segmentation][kmeans]") {
   // Four equal points, two clusters: the first round puts all four in cluster 0 (the lowest
   // index wins a tie when a point has no cluster yet), the empty cluster 1 takes point 0 as a

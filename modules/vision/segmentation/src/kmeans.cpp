@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "c2f/core/enum_names.hpp"
+#include "c2f/core/parallel_for.hpp"
 
 namespace c2f::vision {
 
@@ -30,6 +31,17 @@ namespace {
 
 using Points = std::span<const Eigen::Vector3d>;
 
+/// Points per task of for_ranges.
+constexpr std::size_t kRange = 16384;
+
+/// Calls body(begin, end) over consecutive ranges of [0, n) of kRange points, on `threads`
+/// threads; each range is one task, so what a task computes does not depend on the count.
+template <class Body>
+void for_ranges(std::size_t n, int threads, const Body& body) {
+  parallel_for((n + kRange - 1) / kRange,
+               [&](std::size_t r) { body(r * kRange, std::min(n, (r + 1) * kRange)); }, threads);
+}
+
 /// k distinct points drawn uniformly.
 std::vector<Eigen::Vector3d> sample_start(Points points, std::size_t k, std::mt19937_64& rng) {
   std::vector<std::size_t> chosen;
@@ -44,7 +56,8 @@ std::vector<Eigen::Vector3d> sample_start(Points points, std::size_t k, std::mt1
 }
 
 /// k-means++: the first centre uniformly, each next one with probability ~ D^2.
-std::vector<Eigen::Vector3d> plus_plus_start(Points points, std::size_t k, std::mt19937_64& rng) {
+std::vector<Eigen::Vector3d> plus_plus_start(Points points, std::size_t k, std::mt19937_64& rng,
+                                             int threads) {
   const std::size_t n = points.size();
   std::vector<Eigen::Vector3d> centres{
       points[std::uniform_int_distribution<std::size_t>(0, n - 1)(rng)]};
@@ -61,14 +74,16 @@ std::vector<Eigen::Vector3d> plus_plus_start(Points points, std::size_t k, std::
       chosen = std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);  // all points equal
     }
     centres.push_back(points[chosen]);
-    for (std::size_t i = 0; i < n; ++i)
-      distance[i] = std::min(distance[i], (points[i] - centres.back()).squaredNorm());
+    for_ranges(n, threads, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        distance[i] = std::min(distance[i], (points[i] - centres.back()).squaredNorm());
+    });
   }
   return centres;
 }
 
 /// Batch rounds until no point moves or `rounds` are spent; returns the rounds made.
-int batch_phase(Points points, KMeansResult& result, int rounds) {
+int batch_phase(Points points, KMeansResult& result, int rounds, int threads) {
   const std::size_t n = points.size(), k = result.centres.size();
   std::vector<double> distance(n);
   std::vector<Eigen::Vector3d> sums(k);
@@ -76,24 +91,31 @@ int batch_phase(Points points, KMeansResult& result, int rounds) {
   int made = 0;
   while (made < rounds) {
     ++made;
-    bool changed = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      int best = result.assignment[i];
-      double best_distance = best >= 0 ? (points[i] - result.centres[best]).squaredNorm()
-                                       : std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < k; ++c) {
-        const double d = (points[i] - result.centres[c]).squaredNorm();
-        if (d < best_distance) {  // strictly nearer: a tie keeps the current cluster
-          best_distance = d;
-          best = static_cast<int>(c);
+    // Each point's nearest centre (a tie keeps the current cluster), by ranges.
+    std::vector<char> range_changed((n + kRange - 1) / kRange, 0);
+    for_ranges(n, threads, [&](std::size_t begin, std::size_t end) {
+      bool moved = false;
+      for (std::size_t i = begin; i < end; ++i) {
+        int best = result.assignment[i];
+        double best_distance = best >= 0 ? (points[i] - result.centres[best]).squaredNorm()
+                                         : std::numeric_limits<double>::infinity();
+        for (std::size_t c = 0; c < k; ++c) {
+          const double d = (points[i] - result.centres[c]).squaredNorm();
+          if (d < best_distance) {  // strictly nearer: a tie keeps the current cluster
+            best_distance = d;
+            best = static_cast<int>(c);
+          }
+        }
+        distance[i] = best_distance;
+        if (best != result.assignment[i]) {
+          result.assignment[i] = best;
+          moved = true;
         }
       }
-      distance[i] = best_distance;
-      if (best != result.assignment[i]) {
-        result.assignment[i] = best;
-        changed = true;
-      }
-    }
+      range_changed[begin / kRange] = moved ? 1 : 0;
+    });
+    const bool changed =
+        std::find(range_changed.begin(), range_changed.end(), 1) != range_changed.end();
     if (!changed) break;
     std::fill(sums.begin(), sums.end(), Eigen::Vector3d::Zero());
     std::fill(counts.begin(), counts.end(), 0);
@@ -166,13 +188,15 @@ KMeansResult kmeans(Points points, int k, const KMeansOptions& options) {
   if (points.empty()) throw std::invalid_argument("kmeans: no points");
   if (options.max_iterations < 1)
     throw std::invalid_argument("kmeans: max_iterations must be >= 1");
+  if (options.threads < 0) throw std::invalid_argument("kmeans: threads must be >= 0");
   const auto clusters = std::min<std::size_t>(static_cast<std::size_t>(k), points.size());
   std::mt19937_64 rng(options.seed);
   KMeansResult result;
-  result.centres = options.start == KMeansStart::sample ? sample_start(points, clusters, rng)
-                                                        : plus_plus_start(points, clusters, rng);
+  result.centres = options.start == KMeansStart::sample
+                       ? sample_start(points, clusters, rng)
+                       : plus_plus_start(points, clusters, rng, options.threads);
   result.assignment.assign(points.size(), -1);
-  const int rounds = batch_phase(points, result, options.max_iterations);
+  const int rounds = batch_phase(points, result, options.max_iterations, options.threads);
   if (options.online_phase) online_phase(points, result, options.max_iterations - rounds);
   return result;
 }

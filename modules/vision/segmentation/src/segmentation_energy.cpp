@@ -7,6 +7,7 @@
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/memory_need.hpp"
+#include "c2f/core/parallel_for.hpp"
 #include "c2f/vision/segmentation/colour_gmm.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
 
@@ -75,19 +76,25 @@ std::vector<double> segmentation_unaries(const SegmentationScene& scene,
   for (std::size_t i = 0; i < n; ++i)
     colours[i] = rgb01(scene.image, static_cast<VariableIndex>(i));
   std::vector<double> unaries(n * L);
-  for (std::size_t l = 0; l < L; ++l) {
-    std::vector<Eigen::Vector3d> samples;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (scene.seeds[i] == static_cast<int>(l)) samples.push_back(colours[i]);
-    }
-    if (samples.empty()) {
-      throw std::invalid_argument("segmentation_unaries: label " + std::to_string(l) +
-                                  " has no seed pixels");
-    }
-    const std::vector<double> costs =
-        nonnegative_gmm_costs(fit_colour_gmm(samples, 5, kmeans_options), colours);
-    for (std::size_t i = 0; i < n; ++i) unaries[i * L + l] = costs[i];
-  }
+  // One label's colour model per task (each writes its own column; its k-means on one thread).
+  KMeansOptions per_label = kmeans_options;
+  per_label.threads = 1;
+  parallel_for(
+      L,
+      [&](std::size_t l) {
+        std::vector<Eigen::Vector3d> samples;
+        for (std::size_t i = 0; i < n; ++i) {
+          if (scene.seeds[i] == static_cast<int>(l)) samples.push_back(colours[i]);
+        }
+        if (samples.empty()) {
+          throw std::invalid_argument("segmentation_unaries: label " + std::to_string(l) +
+                                      " has no seed pixels");
+        }
+        const std::vector<double> costs =
+            nonnegative_gmm_costs(fit_colour_gmm(samples, 5, per_label), colours);
+        for (std::size_t i = 0; i < n; ++i) unaries[i * L + l] = costs[i];
+      },
+      kmeans_options.threads);
   for (std::size_t i = 0; i < n; ++i) {
     if (scene.seeds[i] == kNoLabel) continue;
     for (std::size_t l = 0; l < L; ++l) {

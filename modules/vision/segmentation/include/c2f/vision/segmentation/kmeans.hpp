@@ -31,6 +31,9 @@ struct KMeansOptions {
   bool online_phase = false;
   std::uint64_t seed = 27;
   int max_iterations = 100;  ///< batch rounds plus online passes (MATLAB's MaxIter)
+  /// Threads finding each point's nearest centre (0: the machine's cores). The centres are
+  /// summed in one thread in index order, so the result is the same for every count.
+  int threads = 0;
 
   bool operator==(const KMeansOptions&) const = default;
 };
