@@ -49,6 +49,18 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
             << pixel_error(summary.labeling, problem.truth) << ", " << summary.seconds << " s\n";
 }
 
+/// Before the problem is made: it and the run's floor (ICM, coarse levels) must fit the budget.
+void require_memory_for(const examples::SyntheticCommand& command) {
+  SolverChoice icm;
+  icm.kind = SolverKind::icm;
+  const auto size = grid_problem_size(command.spec.shape.width, command.spec.shape.height,
+                                      command.spec.num_labels, true);
+  command.memory.require("the synthetic problem of " + std::to_string(command.spec.shape.width) +
+                             "x" + std::to_string(command.spec.shape.height) + " pixels with " +
+                             std::to_string(command.spec.num_labels) + " labels",
+                         size ? run_memory_floor(icm, *size) : std::nullopt);
+}
+
 /// With -o, the run's files are staged and land together at the end (an earlier run's files
 /// stay as they were when this run fails); without it, nothing is written.
 std::optional<examples::OutputFolder> open_outputs(const std::string& out_dir) {
@@ -92,6 +104,7 @@ int main(int argc, char** argv) {
     BlockHierarchy hierarchy = examples::with_flag("--blocks", [&] {  // checks the sizes first
       return BlockHierarchy(command.spec.shape, command.block_sizes);
     });
+    require_memory_for(command);
     const SyntheticProblem problem = make_synthetic_problem(command.spec);
     std::optional<examples::OutputFolder> output = open_outputs(command.out_dir);
     std::cerr << "c2f-synthetic: " << command.spec.shape.width << "x" << command.spec.shape.height

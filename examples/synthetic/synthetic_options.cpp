@@ -35,6 +35,7 @@ std::optional<SyntheticCommand> parse_synthetic_command(int argc, char** argv) {
   vision::SyntheticSpec& spec = command.spec;
   std::string blocks = "16,8,4,2";
   int plateau = 2;
+  double memory_gib = 0.0;  // 0: default_memory_budget()
   ToolOptions options(
       "c2f-synthetic: restores a noisy piecewise-constant label image with ICM, flat and coarse\n"
       "to fine over nested pixel blocks, and prints both traces (time_s,level,step,energy,\n"
@@ -54,9 +55,15 @@ std::optional<SyntheticCommand> parse_synthetic_command(int argc, char** argv) {
                "refine after this many sweeps without decrease")
       .real("time-limit", &command.options.time_limit_seconds, kTimeLimitRange,
             "seconds per run (0: none)")
+      .real("memory", &memory_gib, {0.0, 65536.0},
+            "GiB the run may take (0: half of this machine's memory, at most what is "
+            "available); a problem that does not fit is refused before it is made")
       .path("out,o", &command.out_dir,
             "directory for trace-flat.csv, trace-c2f.csv and PGM images");
   if (!options.parse(argc, argv, {"", 0})) return std::nullopt;
+  command.memory = memory_gib == 0.0
+                       ? default_memory_budget()
+                       : memory_budget_of_gib(memory_gib, "--memory " + format_real(memory_gib));
   command.options.plateau_steps = {plateau};
   if (const std::string problem = command.options.validate(); !problem.empty())
     throw std::invalid_argument("--plateau/--time-limit: " + problem);

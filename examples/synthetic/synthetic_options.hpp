@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/vision/synthetic_problem.hpp"
 
@@ -15,6 +16,7 @@ struct SyntheticCommand {
   std::vector<std::size_t> block_sizes;  ///< coarse levels, coarsest first
   Options options;                       ///< plateau and time limit, the same for both runs
   std::string out_dir;                   ///< empty: no files
+  MemoryBudget memory;                   ///< --memory, else the machine's default
 };
 
 /// Parses argv. Returns std::nullopt after printing --help. Throws std::invalid_argument with a

@@ -520,7 +520,14 @@ std::vector<Case> synthetic_cases() {
       {"synthetic",
        run + "--width 65536 --height 65536",
        2,
-       {"65536x65536 pixels with 16 labels needs 832.0 GiB", "this machine has available"}},
+       {"the synthetic problem of 65536x65536 pixels with 16 labels needs ",
+        "more than the run's memory budget of"}},
+      {"synthetic",
+       run + "--width 65536 --height 65536 --memory 60000",
+       2,
+       {"the synthetic problem of 65536x65536 pixels with 16 labels needs ",
+        "this machine has available"}},
+      {"synthetic", run + "--memory -2", 2, {"--memory: expected a finite number in [0, "}},
   };
 }
 
