@@ -351,7 +351,7 @@ TEST_CASE("c2f-stereo stays within its memory budget: recycled move graphs get w
   CHECK(unbounded_kib > 256 * 1024);
 #endif
   const cv::Mat unbounded =
-      cv::imread((dir / "default/disparity.png").string(), cv::IMREAD_UNCHANGED);
+      cv::imread((dir / "generous/disparity.png").string(), cv::IMREAD_UNCHANGED);
   const cv::Mat bounded =
       cv::imread((dir / "bounded/disparity.png").string(), cv::IMREAD_UNCHANGED);
   REQUIRE_FALSE(bounded.empty());
