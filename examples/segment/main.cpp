@@ -84,8 +84,9 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
     // Its recycled move graphs get what the budget leaves.
     SolverChoice choice;
     choice.graph_memory_limit = static_cast<std::size_t>(-1);
-    choice = fit_to_budget(choice, problem_size(problem.potts, levels.schedule().levels.size() > 0),
-                           command.memory, "the Potts energy");
+    choice =
+        fit_to_budget(choice, problem_size(problem.potts, levels.schedule().has_coarse_levels()),
+                      command.memory, "the Potts energy");
     ExpansionSolver<> solver(choice.expansion_options());
     const Options options =
         examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));

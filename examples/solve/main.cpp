@@ -76,9 +76,8 @@ int main(int argc, char** argv) {
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
     // The model and the run's floor must fit the budget; recycled move graphs get the rest.
-    const bool coarse = !schedule.levels.empty() || !schedule.auto_fractions.empty();
     const SolverChoice solver = fit_to_budget(
-        command.solver, problem_size(model.energy, coarse), command.memory,
+        command.solver, problem_size(model.energy, schedule.has_coarse_levels()), command.memory,
         "MODEL '" + command.model + "' solved by " + std::string(to_string(command.solver.kind)));
     if (!command.quiet) {
       std::fprintf(stderr, "c2f-solve: %s\n",

@@ -61,11 +61,6 @@ StereoScene load_input(examples::StereoCommand& command) {
   return scene;
 }
 
-/// Whether the run has coarse levels (reduced energies beside the original one).
-bool has_coarse_levels(const Schedule& schedule) {
-  return !schedule.levels.empty() || !schedule.auto_fractions.empty();
-}
-
 /// Before anything is allocated: TSGO step 1 and the run's floor (run_memory_floor) must fit the
 /// budget and the machine, else "needs N GiB".
 void require_memory_for(const examples::StereoCommand& command, const StereoScene& scene) {
@@ -77,13 +72,15 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
   const std::optional<std::size_t> step1 =
       tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels, command.tsgo.threads);
   const std::optional<ProblemSize> size = grid_problem_size(
-      shape.width, shape.height, command.tsgo.labels, has_coarse_levels(command.schedule));
-  std::optional<std::size_t> floor = size ? run_memory_floor(command.solver, *size) : std::nullopt;
-  if (step1 && floor) floor = std::max(*step1, *floor);
+      shape.width, shape.height, command.tsgo.labels, command.schedule.has_coarse_levels());
+  const std::optional<std::size_t> floor =
+      size ? run_memory_floor(command.solver, *size) : std::nullopt;
+  std::optional<std::size_t> need;  // std::nullopt: beyond std::size_t
+  if (step1 && floor) need = std::max(*step1, *floor);
   command.memory.require((command.scene.empty() ? "LEFT '" + command.pair.left + "': "
                                                 : "--scene " + command.scene + ": ") +
                              what,
-                         step1 ? floor : step1);
+                         need);
 }
 
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
@@ -198,7 +195,7 @@ int main(int argc, char** argv) {
     const StereoProblem problem = build_problem(command, scene);
     // The recycled move graphs get what the budget leaves.
     command.solver = fit_to_budget(
-        command.solver, problem_size(problem.tsgo.energy, has_coarse_levels(command.schedule)),
+        command.solver, problem_size(problem.tsgo.energy, command.schedule.has_coarse_levels()),
         command.memory, "the run on the TSGO energy");
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))

@@ -43,6 +43,10 @@ struct Schedule {
   static Schedule parse(std::string_view text, std::span<const SchedulePreset> presets = {});
   /// Canonical text ("flat" for no levels); presets are printed as their levels.
   [[nodiscard]] std::string to_string() const;
+  /// Whether a run has coarse levels (reduced energies beside the original), i.e. is not flat.
+  [[nodiscard]] bool has_coarse_levels() const noexcept {
+    return !levels.empty() || !auto_fractions.empty();
+  }
   /// Empty when every level can be built for an energy with num_labels labels, else a message
   /// naming the first level that cannot (N_L above the label count).
   [[nodiscard]] std::string validate(int num_labels) const;
