@@ -42,7 +42,7 @@ def public_names(source):
                 r"(?:template\s*<.*>\s*)?(?:class|struct|enum class|enum|union)\s+(\w+)(?!\s*;)",
                 r"concept\s+(\w+)",
                 r"(?:inline\s+)?(?:constexpr\s+)?using\s+(\w+)\s*=",
-                r"(?:inline\s+)?constexpr\s+[\w:<>, ]+\s+(\w+)\s*[{=\[]",
+                r"(?:inline\s+)?constexpr\s+[\w:<>, *]+\s+(\w+)\s*[{=\[]",
                 r"(?:\[\[nodiscard\]\]\s*)?(?:inline\s+|constexpr\s+|static\s+)*[\w:<>,\s\*&]+?[\s\*&](\w+)\s*\(",
                 r"(?:\[\[nodiscard\]\]\s*)?(?:inline\s+|constexpr\s+)*decltype\(auto\)\s+(\w+)\s*\(",
             ]

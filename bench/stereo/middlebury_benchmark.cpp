@@ -5,9 +5,10 @@
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
 //                    [--flat-near-radius R] [--c2f-near-radius R] [--flat-shift-moves]
-//                    [--c2f-shift-moves] [--near-levels original|all]
-//       Solves SCENE (a scenes.csv row, middlebury2014/NAME or kitti2015/ID) flat and coarse to
-//       fine from the same TSGO cost volume,
+//                    [--c2f-shift-moves] [--near-levels original|all] [--threads N]
+//                    [--prep-one-thread] [--memory GIB]
+//       Solves SCENE (a scenes.csv row, middlebury2014/NAME, kitti2015/ID or opencv-doc/aloe)
+//       flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
 //       backend, default dynamic; near moves of radius R, ExpansionOptions::near_radius, and shift
 //       moves, ExpansionOptions::shift_moves, in either run on request, on the original problem
@@ -17,6 +18,11 @@
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
 //       original problem, in both runs, ends after a whole sweep without decrease (three
 //       sweeps with near moves). Traces go to OUT/SCENE-{flat,c2f}.csv ('/' in SCENE as '-').
+//       Each run's recycled move graphs get what the memory budget leaves (fit_to_budget, as in
+//       c2f-stereo). The row has the peak resident size of the data preparation and of each run
+//       (the process's, reset before each: it includes the scene and energy already resident)
+//       and, with --prep-one-thread, the data preparation's time on one thread (that energy must
+//       equal the one prepared on --threads, else the run stops).
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
@@ -57,6 +63,7 @@
 #include "support/anytime_comparison.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
+#include "support/peak_memory.hpp"
 #include "support/summary_rows.hpp"
 #include "tool_options.hpp"
 
@@ -95,7 +102,12 @@ const char* kColumns[] = {"scene",
                           "prep_seconds",
                           "threads",
                           "c2f_band_seconds",
-                          "band_ratio"};
+                          "band_ratio",
+                          "prep_one_thread_seconds",
+                          "prep_peak_mib",
+                          "flat_peak_mib",
+                          "c2f_peak_mib",
+                          "memory_gib"};
 
 struct Settings {
   std::string schedule = "paper";
@@ -111,20 +123,42 @@ struct Settings {
   bool flat_shift_moves = false;  ///< ExpansionOptions::shift_moves of the flat run
   bool c2f_shift_moves = false;   ///< and of the coarse-to-fine run
   NearLevels near_levels = NearLevels::original;  ///< where near and shift moves are made
+  bool prep_one_thread = false;  ///< also prepare on one thread first (time, identity check)
+  MemoryBudget memory = default_memory_budget();  ///< each run's, as c2f-stereo --memory
 };
+
+/// FNV-1a over the energy's unaries and edges: equal energies, equal fingerprints.
+std::uint64_t energy_fingerprint(const PairwiseEnergy& energy) {
+  std::uint64_t hash = 14695981039346656037ULL;
+  auto mix = [&hash](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ULL;
+  };
+  mix(energy.unaries().data(), energy.unaries().size_bytes());
+  for (const Edge& e : energy.edges()) {
+    mix(&e.u, sizeof e.u);
+    mix(&e.v, sizeof e.v);
+    mix(&e.weight, sizeof e.weight);
+    mix(&e.term, sizeof e.term);
+  }
+  return hash;
+}
 
 Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::string& schedule,
           int near_radius, bool shift_moves, const Settings& settings,
           const std::string& trace_path) {
   const PairwiseEnergy& energy = problem.energy;
-  ScheduleProvider provider(parse_stereo_schedule(schedule), scene.shape(),
-                            slic_source(problem.guide));
+  const Schedule parsed = parse_stereo_schedule(schedule);
+  ScheduleProvider provider(parsed, scene.shape(), slic_source(problem.guide));
   SolverChoice expansion;
+  expansion.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
   expansion.order = settings.label_order;
   expansion.maxflow = settings.maxflow;
   expansion.near_radius = near_radius;
   expansion.shift_moves = shift_moves;
   expansion.near_levels = settings.near_levels;
+  expansion = fit_to_budget(expansion, problem_size(energy, parsed.has_coarse_levels()),
+                            settings.memory, "the " + schedule + " run");
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;  // the original: expansion converged
@@ -156,10 +190,29 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     throw std::invalid_argument("--schedule: " + problem + " (" + std::to_string(tsgo.labels) +
                                 " labels)");
   }
+  // On request the data is first prepared on one thread, timed, fingerprinted and dropped; the
+  // run's own preparation (on tsgo.threads) must give the same energy.
+  double prep_one_thread_seconds = std::nan("");
+  std::uint64_t one_thread_fingerprint = 0;
+  if (settings.prep_one_thread) {
+    TsgoOptions one = tsgo;
+    one.threads = 1;
+    const auto start = std::chrono::steady_clock::now();
+    one_thread_fingerprint = energy_fingerprint(tsgo_problem(scene.left, scene.right, one).energy);
+    prep_one_thread_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  bench::reset_peak_resident();
   const auto prep_start = std::chrono::steady_clock::now();
   const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
   const double prep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - prep_start).count();
+  const double prep_peak_mib = bench::peak_resident_mib();
+  if (settings.prep_one_thread && energy_fingerprint(problem.energy) != one_thread_fingerprint) {
+    throw std::runtime_error("scene '" + name + "': the energy prepared on " +
+                             std::to_string(resolved_threads(tsgo.threads)) +
+                             " threads differs from the one prepared on one thread");
+  }
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   // Trace files are named by the scene, its dataset prefix joined by '-' (kitti2015-000000_10).
@@ -172,10 +225,14 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     return solve(problem, scene, schedule, near_radius, shift_moves, settings,
                  (output.staging() / trace).string());
   };
+  bench::reset_peak_resident();
   const Run flat =
       solve_with("flat", settings.flat_near_radius, settings.flat_shift_moves, stem + "-flat.csv");
+  const double flat_peak_mib = bench::peak_resident_mib();
+  bench::reset_peak_resident();
   const Run c2f = solve_with(settings.schedule, settings.c2f_near_radius, settings.c2f_shift_moves,
                              stem + "-c2f.csv");
+  const double c2f_peak_mib = bench::peak_resident_mib();
 
   const bench::AnytimeComparison anytime =
       bench::compare_anytime({flat.trace, flat.summary.energy, flat.summary.seconds},
@@ -212,14 +269,16 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
   }
   std::printf(
       "%s\t%zu\t%.6f\t%.6f\t%.5f\t%.5f\t%.5f\t%.5f\t%.3f\t%.3f\t%.3f\t%.4f\t%.5f\t%.5f\t%.4f\t%."
-      "5f\t%.5f\t%.3f\t%s\t%s\t%d\t%.3f\t%u\t%.3f\t%.4f\n",
+      "5f\t%.5f\t%.3f\t%s\t%s\t%d\t%.3f\t%u\t%.3f\t%.4f\t%.3f\t%.0f\t%.0f\t%.0f\t%.2f\n",
       name.c_str(), shape.size(), flat.summary.energy, c2f.summary.energy, flat.errors.nonoccluded,
       c2f.errors.nonoccluded, flat.errors.all, c2f.errors.all, flat.summary.seconds,
       c2f.summary.seconds, anytime.reach_seconds, anytime.reach_ratio, anytime.flat_error,
       anytime.run_error, 1.0 - anytime.run_error / anytime.flat_error, sgbm_errors.nonoccluded,
       sgbm_errors.all, sgbm_seconds, std::string(to_string(flat.summary.reason)).c_str(),
       std::string(to_string(c2f.summary.reason)).c_str(), tsgo.labels, prep_seconds,
-      resolved_threads(tsgo.threads), anytime.band_seconds, anytime.band_ratio);
+      resolved_threads(tsgo.threads), anytime.band_seconds, anytime.band_ratio,
+      prep_one_thread_seconds, prep_peak_mib, flat_peak_mib, c2f_peak_mib,
+      settings.memory.bytes / double(std::size_t{1} << 30));
   output.commit();
   return 0;
 }
@@ -236,6 +295,13 @@ int summarize(const std::string& path) {
     std::snprintf(text, sizeof text, "%.2f%%", 100 * rate);
     return std::string(text);
   };
+  // Seconds, or "-" where the row has none (data preparation on one thread not requested).
+  auto optional_seconds = [](double value) {
+    if (std::isnan(value)) return std::string("-");
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", value);
+    return std::string(text);
+  };
   // A time of reaching flat's energy, "never" when the run did not (NaN); its ratio "-" then.
   auto reach = [](const std::string& seconds, double value) {
     return std::isnan(value) ? std::string("never") : seconds;
@@ -244,14 +310,14 @@ int summarize(const std::string& path) {
       "| scene | flat E | C2F E | flat bad nonocc / all | C2F bad nonocc / all | flat s | C2F s | "
       "C2F reaches flat E (s) | ratio | C2F within 1e-4 of flat E (s) | ratio | deadline error "
       "flat / C2F | reduction | SGBM bad nonocc / all | SGBM s | labels | data prep s (threads) "
-      "|\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "| data prep s (1 thread) | peak MiB prep / flat / C2F |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::vector<double>> columns(std::size(kColumns));
   for (const auto& r : rows) {
     for (std::size_t c = 1; c < 18; ++c) columns[c].push_back(number(r[c]));
-    for (const std::size_t c : {21, 23, 24}) columns[c].push_back(number(r[c]));
+    for (const std::size_t c : {21, 23, 24, 25, 26, 27, 28}) columns[c].push_back(number(r[c]));
     // A run that never reaches flat's final energy is a loss: infinite time, not a missing value.
-    for (const auto [time, ratio] : {std::pair{10, 11}, std::pair{23, 24}}) {
+    for (const auto& [time, ratio] : {std::pair{10, 11}, std::pair{23, 24}}) {
       if (std::isnan(number(r[time]))) {
         columns[time].back() = std::numeric_limits<double>::infinity();
         columns[ratio].back() = std::numeric_limits<double>::infinity();
@@ -260,14 +326,15 @@ int summarize(const std::string& path) {
     const double exact = number(r[10]), band = number(r[23]);
     std::printf(
         "| %s | %.1f | %.1f | %s / %s | %s / %s | %.1f | %.1f | %s | %s | %s | %s | %.2f%% / "
-        "%.2f%% | %.1f%% | %s / %s | %.2f | %s | %.2f (%s) |\n",
+        "%.2f%% | %.1f%% | %s / %s | %.2f | %s | %.2f (%s) | %s | %.0f / %.0f / %.0f |\n",
         r[0].c_str(), number(r[2]), number(r[3]), percent(number(r[4])).c_str(),
         percent(number(r[6])).c_str(), percent(number(r[5])).c_str(), percent(number(r[7])).c_str(),
         number(r[8]), number(r[9]), reach(r[10], exact).c_str(),
         std::isnan(exact) ? "-" : r[11].c_str(), reach(r[23], band).c_str(),
         std::isnan(band) ? "-" : r[24].c_str(), 100 * number(r[12]), 100 * number(r[13]),
         100 * number(r[14]), percent(number(r[15])).c_str(), percent(number(r[16])).c_str(),
-        number(r[17]), r[20].c_str(), number(r[21]), r[22].c_str());
+        number(r[17]), r[20].c_str(), number(r[21]), r[22].c_str(),
+        optional_seconds(number(r[25])).c_str(), number(r[26]), number(r[27]), number(r[28]));
   }
   std::size_t never = 0, wins = 0, band_never = 0, band_wins = 0;
   for (const auto& r : rows) {
@@ -278,7 +345,7 @@ int summarize(const std::string& path) {
   }
   std::printf(
       "| **median** | | | %s / %s | %s / %s | %.1f | %.1f | %.1f | %.3f | %.1f | %.3f | %.2f%% / "
-      "%.2f%% | %.1f%% | %s / %s | %.2f | | %.2f |\n",
+      "%.2f%% | %.1f%% | %s / %s | %.2f | | %.2f | %s | %.0f / %.0f / %.0f |\n",
       percent(bench::median(columns[4])).c_str(), percent(bench::median(columns[6])).c_str(),
       percent(bench::median(columns[5])).c_str(), percent(bench::median(columns[7])).c_str(),
       bench::median(columns[8]), bench::median(columns[9]), bench::median(columns[10]),
@@ -286,7 +353,8 @@ int summarize(const std::string& path) {
       100 * bench::median(columns[12]), 100 * bench::median(columns[13]),
       100 * bench::median(columns[14]), percent(bench::median(columns[15])).c_str(),
       percent(bench::median(columns[16])).c_str(), bench::median(columns[17]),
-      bench::median(columns[21]));
+      bench::median(columns[21]), optional_seconds(bench::median(columns[25])).c_str(),
+      bench::median(columns[26]), bench::median(columns[27]), bench::median(columns[28]));
   std::printf(
       "\n%zu scenes; C2F never reached flat's final energy on %zu and came within 1e-4 of it "
       "never on %zu (counted as infinite time in the medians); reached it in at most half of "
@@ -303,6 +371,7 @@ int main(int argc, char** argv) {
                 maxflow = "dynamic", near_levels;
     Settings settings;
     bool header = false;
+    double memory_gib = 0.0;  // 0: default_memory_budget()
     c2f::examples::ToolOptions options(
         "c2f-bench-stereo: flat TSGO, C2F-TSGO and StereoSGBM on one Middlebury scene, one row "
         "each.\n\nUsage: c2f-bench-stereo run SCENE [options]\n"
@@ -332,6 +401,12 @@ int main(int argc, char** argv) {
         .text("near-levels", &near_levels,
               "where the coarse-to-fine run makes near and shift moves: original (the default: "
               "the original problem only; coarse levels make whole moves) or all")
+        .flag("prep-one-thread", &settings.prep_one_thread,
+              "prepare the data on one thread first too: its time in the row, and the run stops "
+              "when the energy differs from the one prepared on --threads")
+        .real("memory", &memory_gib, {0.0, 1e6, false},
+              "each run's memory budget in GiB, as c2f-stereo --memory (0, the default: half of "
+              "this machine's memory, at most what is available)")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;
@@ -349,6 +424,7 @@ int main(int argc, char** argv) {
             "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves");
       }
     }
+    if (memory_gib > 0.0) settings.memory = memory_budget_of_gib(memory_gib, "--memory");
     if (settings.labels == 1) throw std::invalid_argument("--labels: expected 0 or 2-256, got 1");
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",

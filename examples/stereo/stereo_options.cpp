@@ -26,8 +26,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   command.data = "../shared/data";
   options.path("out,o", &command.out_dir, "output directory (created)")
       .text("scene", &command.scene,
-            "scene name from DATA/scenes.csv, or middlebury2014/NAME or kitti2015/ID (loads "
-            "views, GT and masks; scored by the dataset's own measure)")
+            "scene name from DATA/scenes.csv, or middlebury2014/NAME, kitti2015/ID or "
+            "opencv-doc/aloe (loads views, GT and masks; scored by the dataset's own measure)")
       .path("data", &command.data, "data root for --scene")
       .integer("labels", &command.labels, {0, 256},
                "number of disparity labels, 2-256 (0: the scene's own range, ndisp of a Middlebury "

@@ -230,6 +230,23 @@ TEST_CASE("scene names reach the new datasets under the data root", "[stereo][mi
                     Catch::Contains("expected kitti2015/NAME"));
 }
 
+TEST_CASE("opencv-doc/aloe names the full-size Aloe pair Debian's opencv-doc ships",
+          "[stereo][middlebury]") {
+  // scripts/install-deps installs opencv-doc (the demo's input), so the pair is there.
+  const StereoScene scene = load_named_scene("/nonexistent", kOpencvDocAloe);
+  CHECK(scene.name == "opencv-doc/aloe");
+  CHECK(scene.left.cols == 1282);
+  CHECK(scene.left.rows == 1110);
+  CHECK(scene.gt.size() == scene.left.size());
+  CHECK(scene.nonoccluded.empty());
+  CHECK(label_count(scene, 85) == 256);
+  // The GT is in pixels at full size: Aloe's disparities reach past 200 there.
+  double low = 0.0, high = 0.0;
+  cv::minMaxIdx(scene.gt, &low, &high, nullptr, nullptr, scene.gt == scene.gt);
+  CHECK(high > 200.0);
+  CHECK(high < 256.0);
+}
+
 TEST_CASE("the shared Middlebury 2014 and KITTI scenes load with their conventions",
           "[stereo][middlebury2014][kitti][data]") {
   const std::string data = C2F_SHARED_DATA_DIR;

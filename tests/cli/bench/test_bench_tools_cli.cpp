@@ -63,6 +63,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-stereo", "run Teddy --flat-near-radius 5 --near-levels all",
        "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves"},
       {"c2f-bench-stereo", "run Teddy Dolls", "unexpected argument 'Dolls'"},
+      {"c2f-bench-stereo", "run Teddy --memory -1",
+       "--memory: expected a finite number in [0, 1e+06], got '-1'"},
       {"c2f-bench-segment", "run set name --time-limit 0",
        "--time-limit: expected a finite number in (0, 1e+07], got '0'"},
       {"c2f-bench-segment", "run set name --configs nope",
@@ -230,15 +232,27 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
   // data preparation's time and threads in the row; the summary reads such rows.
   const auto scene2014 = c2f::test::run_tool(
       bench + "/c2f-bench-stereo",
-      "run middlebury2014/Adirondack --schedule aggregated --downscale 4 --threads 1 --header "
-      "--out " +
+      "run middlebury2014/Adirondack --schedule aggregated --downscale 4 --threads 2 "
+      "--prep-one-thread --memory 1 --header --out " +
           (out / "rows2014").string() + " --data " + data.string());
   INFO(scene2014.output);
   REQUIRE(scene2014.exit_code == 0);
   CHECK_THAT(scene2014.output,
-             Catch::Contains("labels\tprep_seconds\tthreads\tc2f_band_seconds\tband_ratio\n") &&
+             Catch::Contains("labels\tprep_seconds\tthreads\tc2f_band_seconds\tband_ratio\t"
+                             "prep_one_thread_seconds\tprep_peak_mib\tflat_peak_mib\tc2f_peak_mib\t"
+                             "memory_gib\n") &&
                  Catch::Contains("middlebury2014/Adirondack\t22196\t") &&
-                 Catch::Contains("\t19\t"));
+                 Catch::Contains("\t19\t") && Catch::Contains("\t1.00\n"));
+  // The one-thread preparation was timed (the energies matched, else the run stops) and each
+  // stretch's peak resident size is a number of MiB.
+  const std::size_t row_start = scene2014.output.find("\nmiddlebury2014/Adirondack\t") + 1;
+  std::stringstream row(
+      scene2014.output.substr(row_start, scene2014.output.find('\n', row_start) - row_start));
+  std::vector<std::string> fields;
+  for (std::string field; std::getline(row, field, '\t');) fields.push_back(field);
+  REQUIRE(fields.size() == 30);
+  CHECK(std::stod(fields[25]) > 0.0);
+  for (const int column : {26, 27, 28}) CHECK(std::stod(fields[column]) > 10.0);
   {
     std::ofstream(out / "rows2014.tsv")
         << scene2014.output.substr(scene2014.output.find("scene\t"));
@@ -248,8 +262,9 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
   INFO(table.output);
   CHECK(table.exit_code == 0);
   CHECK_THAT(table.output, Catch::Contains("| middlebury2014/Adirondack |") &&
-                               Catch::Contains("| 19 | ") && Catch::Contains(" (1) |") &&
-                               Catch::Contains("C2F within 1e-4 of flat E (s)"));
+                               Catch::Contains("| 19 | ") && Catch::Contains(" (2) |") &&
+                               Catch::Contains("C2F within 1e-4 of flat E (s)") &&
+                               Catch::Contains("peak MiB prep / flat / C2F"));
 
   const auto levels = c2f::test::run_tool(
       bench + "/c2f-bench-levels", "Teddy --schedule \"slic:16 slic:8\" --data " + data.string());

@@ -214,6 +214,18 @@ StereoScene load_named_scene(const std::string& data_root, const std::string& na
     scene.name = name;
     return scene;
   }
+  if (name == kOpencvDocAloe) {
+    const std::filesystem::path dir(kOpencvDocData);
+    StereoPairFiles files;
+    files.left = (dir / "aloeL.jpg").string();
+    files.right = (dir / "aloeR.jpg").string();
+    files.gt = (dir / "aloeGT.png").string();
+    files.gt_divisor = 1.0;
+    StereoScene scene = load_stereo_pair(files);
+    scene.name = name;
+    scene.disparity_range = kOpencvDocAloeLabels;
+    return scene;
+  }
   const std::string table = (std::filesystem::path(data_root) / "scenes.csv").string();
   const std::vector<SceneRow> rows = read_scene_table(table);
   for (const SceneRow& row : rows) {
@@ -221,7 +233,9 @@ StereoScene load_named_scene(const std::string& data_root, const std::string& na
   }
   std::string names;
   for (const SceneRow& row : rows) names += " " + row.scene;
-  throw std::invalid_argument("no scene '" + name + "' in " + table + " (have:" + names + ")");
+  throw std::invalid_argument("no scene '" + name + "' in " + table + " (have:" + names +
+                              "), and it is not middlebury2014/NAME, kitti2015/ID or " +
+                              kOpencvDocAloe);
 }
 
 }  // namespace c2f::vision

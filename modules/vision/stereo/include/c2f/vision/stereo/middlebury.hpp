@@ -52,10 +52,20 @@ cv::Mat load_mask(const std::string& path);
 /// disp_right.png is present. Throws naming the missing file.
 StereoScene load_scene(const SceneRow& row, const std::string& data_root);
 
+/// Where Debian's opencv-doc package puts its sample images.
+inline constexpr const char* kOpencvDocData = "/usr/share/doc/opencv-doc/examples/data";
+/// The name of the full-size Aloe pair opencv-doc ships (1282x1110, GT in pixels, no mask).
+inline constexpr const char* kOpencvDocAloe = "opencv-doc/aloe";
+/// Its label count (StereoScene::disparity_range): 256, the full-size Middlebury 2006 range (its
+/// GT reaches about 230 px).
+inline constexpr int kOpencvDocAloeLabels = 256;
+
 /// The scene called `name` under DATA_ROOT: "middlebury2014/SCENE" (a quarter-size MiddEval3
-/// folder, middlebury2014.hpp), "kitti2015/ID" (a KITTI 2015 training pair, kitti2015.hpp), else
+/// folder, middlebury2014.hpp), "kitti2015/ID" (a KITTI 2015 training pair, kitti2015.hpp),
+/// "opencv-doc/aloe" (kOpencvDocAloe, read from kOpencvDocData whatever DATA_ROOT is), else
 /// load_scene for the row of DATA_ROOT/scenes.csv named `name`. Throws std::invalid_argument
-/// naming the scene, the table and the names it has when there is no such row.
+/// naming the scene, the table and the names it has when there is no such row, and
+/// std::runtime_error naming the path of a file that cannot be read.
 StereoScene load_named_scene(const std::string& data_root, const std::string& name);
 
 }  // namespace c2f::vision
