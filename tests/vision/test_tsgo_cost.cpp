@@ -2,10 +2,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "c2f/vision/stereo/tsgo_bilateral.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
@@ -131,6 +134,43 @@ TEST_CASE("median cut splits by G, R, B and divides ties in raster order", "[ste
   // All pixels equal: halves in raster order.
   const cv::Mat grey(1, 4, CV_8UC3, cv::Scalar(7, 7, 7));
   CHECK(median_cut_clusters(grey, 1).cluster_of == std::vector<int>{0, 0, 1, 1});
+}
+
+TEST_CASE("median cut gives the clusters of a plain comparison sort on any thread count",
+          "[stereo][tsgo][threads]") {
+  // A noisy image with few distinct values, so that many ties are divided in raster order.
+  cv::Mat image(37, 53, CV_8UC3);
+  cv::RNG rng(27);
+  rng.fill(image, cv::RNG::UNIFORM, 0, 6);
+  const int levels = 7;
+  // The definition, directly: each level sorts each cluster by (channel value, pixel index).
+  std::vector<int> order(image.total());
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::size_t> bounds{0, order.size()};
+  for (int level = 0; level < levels; ++level) {
+    const int c = (level + 1) % 3;
+    std::vector<std::size_t> next{0};
+    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+      std::sort(order.begin() + static_cast<std::ptrdiff_t>(bounds[k]),
+                order.begin() + static_cast<std::ptrdiff_t>(bounds[k + 1]), [&](int a, int b) {
+                  const int va = image.at<cv::Vec3b>(a / image.cols, a % image.cols)[c];
+                  const int vb = image.at<cv::Vec3b>(b / image.cols, b % image.cols)[c];
+                  return va < vb || (va == vb && a < b);
+                });
+      next.push_back(bounds[k] + (bounds[k + 1] - bounds[k]) / 2);
+      next.push_back(bounds[k + 1]);
+    }
+    bounds = std::move(next);
+  }
+  std::vector<int> expected(order.size());
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i)
+      expected[static_cast<std::size_t>(order[i])] = static_cast<int>(k);
+  }
+  for (const int threads : {1, 2, 3}) {
+    INFO(threads << " threads");
+    CHECK(median_cut_clusters(image, levels, threads).cluster_of == expected);
+  }
 }
 
 TEST_CASE("the cross-bilateral filter keeps constants and does not mix distant colours",

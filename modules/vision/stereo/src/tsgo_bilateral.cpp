@@ -15,33 +15,47 @@
 
 namespace c2f::vision {
 
-ColourClusters median_cut_clusters(const cv::Mat& image, int levels) {
+ColourClusters median_cut_clusters(const cv::Mat& image, int levels, int threads) {
   if (image.empty() || image.type() != CV_8UC3) {
     throw std::invalid_argument("median_cut_clusters: the image must be non-empty 8-bit 3-channel");
   }
   if (levels < 0 || levels > 20)
     throw std::invalid_argument("median_cut_clusters: levels must be in [0, 20]");
   const auto n = static_cast<std::size_t>(image.total());
-  auto channel = [&](int pixel, int c) {
-    return image.at<cv::Vec3b>(pixel / image.cols, pixel % image.cols)[c];
-  };
+  // The pixels' channels in raster order, so that a key costs no index arithmetic.
+  std::array<std::vector<std::uint8_t>, 3> channels;
+  for (auto& values : channels) values.resize(n);
+  for (int y = 0, pixel = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x, ++pixel) {
+      const cv::Vec3b& colour = image.at<cv::Vec3b>(y, x);
+      for (int c = 0; c < 3; ++c) channels[c][static_cast<std::size_t>(pixel)] = colour[c];
+    }
+  }
   // Clusters as consecutive ranges of one permutation of the pixels (raster order at first).
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::vector<std::size_t> bounds{0, n};
   for (int level = 0; level < levels; ++level) {
-    const int c = (level + 1) % 3;
+    const std::vector<std::uint8_t>& value = channels[static_cast<std::size_t>((level + 1) % 3)];
+    const std::size_t count = bounds.size() - 1;
+    // Each cluster sorts its own range by (value, pixel index): a strict total order, so the
+    // permutation is the same whatever sorts it and whichever thread does.
+    parallel_for(
+        count,
+        [&](std::size_t k) {
+          std::vector<std::uint64_t> keys(bounds[k + 1] - bounds[k]);
+          for (std::size_t i = 0; i < keys.size(); ++i) {
+            const auto pixel = static_cast<std::uint32_t>(order[bounds[k] + i]);
+            keys[i] = (std::uint64_t{value[pixel]} << 32) | pixel;
+          }
+          std::sort(keys.begin(), keys.end());
+          for (std::size_t i = 0; i < keys.size(); ++i)
+            order[bounds[k] + i] = static_cast<int>(keys[i] & 0xFFFFFFFFU);
+        },
+        threads);
     std::vector<std::size_t> next{0};
-    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
-      const auto begin = order.begin() + static_cast<std::ptrdiff_t>(bounds[k]);
-      const auto end = order.begin() + static_cast<std::ptrdiff_t>(bounds[k + 1]);
-      // Stable by value, raster order among equal values.
-      std::sort(begin, end, [&](int a, int b) {
-        const auto va = channel(a, c), vb = channel(b, c);
-        return va < vb || (va == vb && a < b);
-      });
-      const std::size_t half = bounds[k] + (bounds[k + 1] - bounds[k]) / 2;
-      next.push_back(half);
+    for (std::size_t k = 0; k < count; ++k) {
+      next.push_back(bounds[k] + (bounds[k + 1] - bounds[k]) / 2);
       next.push_back(bounds[k + 1]);
     }
     bounds = std::move(next);
@@ -53,9 +67,9 @@ ColourClusters median_cut_clusters(const cv::Mat& image, int levels) {
   clusters.sizes.assign(count, 0);
   for (std::size_t k = 0; k < count; ++k) {
     for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) {
-      const int pixel = order[i];
-      clusters.cluster_of[static_cast<std::size_t>(pixel)] = static_cast<int>(k);
-      clusters.means[k] += cv::Vec3d(image.at<cv::Vec3b>(pixel / image.cols, pixel % image.cols));
+      const auto pixel = static_cast<std::size_t>(order[i]);
+      clusters.cluster_of[pixel] = static_cast<int>(k);
+      clusters.means[k] += cv::Vec3d(channels[0][pixel], channels[1][pixel], channels[2][pixel]);
       ++clusters.sizes[k];
     }
     if (clusters.sizes[k] > 0) clusters.means[k] *= 1.0 / clusters.sizes[k];
@@ -307,22 +321,27 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
     throw std::invalid_argument(
         "cross_bilateral_filter: cell, colour_sigma and cutoff_sigmas must be > 0");
   }
-  const ColourClusters clusters = median_cut_clusters(guide, options.cluster_levels);
+  const ColourClusters clusters =
+      median_cut_clusters(guide, options.cluster_levels, options.threads);
   const std::size_t q = clusters.means.size();
   // Range neighbours of every non-empty cluster (including itself, weight 1).
+  // Each cluster's list is built by one task, in cluster order: the same for any thread count.
   std::vector<std::vector<RangeNeighbour>> neighbours(q);
   const double cutoff = options.cutoff_sigmas * options.colour_sigma;
-  for (std::size_t a = 0; a < q; ++a) {
-    if (clusters.sizes[a] == 0) continue;
-    for (std::size_t b = 0; b < q; ++b) {
-      if (clusters.sizes[b] == 0) continue;
-      const double distance = cv::norm(clusters.means[a] - clusters.means[b]);
-      if (distance > cutoff) continue;
-      const double r = std::round(distance);
-      neighbours[a].push_back(
-          {b, std::exp(-r * r / (2.0 * options.colour_sigma * options.colour_sigma))});
-    }
-  }
+  parallel_for(
+      q,
+      [&](std::size_t a) {
+        if (clusters.sizes[a] == 0) return;
+        for (std::size_t b = 0; b < q; ++b) {
+          if (clusters.sizes[b] == 0) continue;
+          const double distance = cv::norm(clusters.means[a] - clusters.means[b]);
+          if (distance > cutoff) continue;
+          const double r = std::round(distance);
+          neighbours[a].push_back(
+              {b, std::exp(-r * r / (2.0 * options.colour_sigma * options.colour_sigma))});
+        }
+      },
+      options.threads);
   const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
   const SliceSmoother smoother(clusters, std::move(neighbours), w, h, options.cell);
   std::vector<double> denominator(pixels);
