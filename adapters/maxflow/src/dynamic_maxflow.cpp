@@ -575,7 +575,8 @@ std::size_t DynamicMaxFlow::memory_bytes() const noexcept {
 
 std::size_t DynamicMaxFlow::memory_bytes_for(std::size_t num_nodes,
                                              std::size_t num_edges) noexcept {
-  return num_nodes * sizeof(Node) + 2 * num_edges * sizeof(double);
+  // Node states, arc residuals, and the orphan and touched lists a copy reserves in full.
+  return num_nodes * (sizeof(Node) + 2 * sizeof(Index)) + 2 * num_edges * sizeof(double);
 }
 
 std::size_t DynamicMaxFlow::topology_bytes() const noexcept {

@@ -73,8 +73,8 @@ class DynamicMaxFlow {
   [[nodiscard]] std::size_t num_edges() const noexcept;
   /// What the last solve() or resolve() did.
   [[nodiscard]] const DynamicSolveStats& last_solve() const noexcept;
-  /// Bytes of the graph's own flow state (node states and arc residuals; not the small work
-  /// lists): what a copy adds.
+  /// Bytes of the graph's own flow state (node states, arc residuals, and the orphan and
+  /// touched lists at their full size, as a copy reserves them): what a copy adds.
   [[nodiscard]] std::size_t memory_bytes() const noexcept;
   /// memory_bytes() of a graph with this many nodes and edges, before building it.
   [[nodiscard]] static std::size_t memory_bytes_for(std::size_t num_nodes,
