@@ -107,7 +107,8 @@ TEST_CASE("the benchmark scripts print their usage and refuse a missing data fol
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-scripts";
   std::filesystem::remove_all(out);
   for (const char* script :
-       {"bench/solvers/run-backends", "bench/stereo/run-middlebury", "bench/segment/run-coopcuts",
+       {"bench/solvers/run-backends", "bench/stereo/run-middlebury", "bench/stereo/run-scaling",
+        "bench/segment/run-coopcuts",
         "bench/segment/run-kmeans-seeds", "bench/segment/run-crossval"}) {
     const std::string path = std::string(C2F_SOURCE_DIR) + "/" + script;
     const auto help = c2f::test::run_tool(path, "--help");
