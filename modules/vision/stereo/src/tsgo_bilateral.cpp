@@ -104,13 +104,20 @@ struct NodeLists {
   }
 };
 
-NodeLists flattened(std::vector<std::vector<std::size_t>> lists) {
+/// The lists sorted and without repeats (each list by one task on `threads` threads), end to
+/// end in list order.
+NodeLists flattened(std::vector<std::vector<std::size_t>> lists, int threads) {
+  parallel_for(
+      lists.size(),
+      [&](std::size_t n) {
+        std::sort(lists[n].begin(), lists[n].end());
+        lists[n].erase(std::unique(lists[n].begin(), lists[n].end()), lists[n].end());
+      },
+      threads);
   NodeLists flat;
   flat.offset.reserve(lists.size() + 1);
   flat.offset.push_back(0);
-  for (auto& list : lists) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+  for (const auto& list : lists) {
     flat.ids.insert(flat.ids.end(), list.begin(), list.end());
     flat.offset.push_back(flat.ids.size());
   }
@@ -119,20 +126,26 @@ NodeLists flattened(std::vector<std::vector<std::size_t>> lists) {
 
 /// Each node's window list: the union of `lists` over the nodes `step` apart within +-2 of it
 /// (step gw: the column window of the blur along y; step 1: the row window along x).
-NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, bool along_y) {
+NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, bool along_y,
+                       int threads) {
   std::vector<std::vector<std::size_t>> unions(gw * gh);
-  for (std::size_t gy = 0; gy < gh; ++gy) {
-    for (std::size_t gx = 0; gx < gw; ++gx) {
-      const std::size_t centre = along_y ? gy : gx, size = along_y ? gh : gw;
-      auto& list = unions[gy * gw + gx];
-      for (std::size_t t = centre >= 2 ? centre - 2 : 0; t <= std::min(centre + 2, size - 1); ++t) {
-        const std::size_t n = along_y ? t * gw + gx : gy * gw + t;
-        list.insert(list.end(), lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]),
-                    lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]));
-      }
-    }
-  }
-  return flattened(std::move(unions));
+  parallel_for(
+      gh,
+      [&](std::size_t gy) {
+        for (std::size_t gx = 0; gx < gw; ++gx) {
+          const std::size_t centre = along_y ? gy : gx, size = along_y ? gh : gw;
+          auto& list = unions[gy * gw + gx];
+          for (std::size_t t = centre >= 2 ? centre - 2 : 0; t <= std::min(centre + 2, size - 1);
+               ++t) {
+            const std::size_t n = along_y ? t * gw + gx : gy * gw + t;
+            list.insert(list.end(),
+                        lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]),
+                        lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]));
+          }
+        }
+      },
+      threads);
+  return flattened(std::move(unions), threads);
 }
 
 /// For every entry of `from` (node n, cluster c) and each of the 5 taps j (the node at offset
@@ -140,26 +153,29 @@ NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, b
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 std::vector<std::array<std::uint32_t, 5>> tap_targets(const NodeLists& from, const NodeLists& to,
-                                                      std::size_t gw, std::size_t gh,
-                                                      bool along_y) {
+                                                      std::size_t gw, std::size_t gh, bool along_y,
+                                                      int threads) {
   std::vector<std::array<std::uint32_t, 5>> targets(from.size());
-  for (std::size_t gy = 0; gy < gh; ++gy) {
-    for (std::size_t gx = 0; gx < gw; ++gx) {
-      const std::size_t n = gy * gw + gx;
-      for (std::size_t e = from.offset[n]; e < from.offset[n + 1]; ++e) {
-        for (int j = 0; j < 5; ++j) {
-          const long tx = static_cast<long>(gx) + (along_y ? 0 : j - 2);
-          const long ty = static_cast<long>(gy) + (along_y ? j - 2 : 0);
-          targets[e][static_cast<std::size_t>(j)] =
-              tx < 0 || ty < 0 || tx >= static_cast<long>(gw) || ty >= static_cast<long>(gh)
-                  ? kNone
-                  : static_cast<std::uint32_t>(
-                        to.slot(static_cast<std::size_t>(ty) * gw + static_cast<std::size_t>(tx),
-                                from.ids[e]));
+  parallel_for(
+      gh,
+      [&](std::size_t gy) {
+        for (std::size_t gx = 0; gx < gw; ++gx) {
+          const std::size_t n = gy * gw + gx;
+          for (std::size_t e = from.offset[n]; e < from.offset[n + 1]; ++e) {
+            for (int j = 0; j < 5; ++j) {
+              const long tx = static_cast<long>(gx) + (along_y ? 0 : j - 2);
+              const long ty = static_cast<long>(gy) + (along_y ? j - 2 : 0);
+              targets[e][static_cast<std::size_t>(j)] =
+                  tx < 0 || ty < 0 || tx >= static_cast<long>(gw) || ty >= static_cast<long>(gh)
+                      ? kNone
+                      : static_cast<std::uint32_t>(to.slot(
+                            static_cast<std::size_t>(ty) * gw + static_cast<std::size_t>(tx),
+                            from.ids[e]));
+            }
+          }
         }
-      }
-    }
-  }
+      },
+      threads);
   return targets;
 }
 
@@ -176,11 +192,12 @@ struct Workspace {
 /// clusters splatted there, then their unions over the blur windows along y and along x. Only
 /// those entries are stored and computed. Each is the sum of the same terms, in the same order,
 /// as the dense grid's (the terms left out are products with exact zeros, and every value is
-/// >= 0, so leaving them out changes no bit).
+/// >= 0, so leaving them out changes no bit). The lists and slots are computed on `threads`
+/// threads, each node's or pixel's by one task: the same for every count.
 class SliceSmoother {
  public:
   SliceSmoother(const ColourClusters& clusters, std::vector<std::vector<RangeNeighbour>> neighbours,
-                std::size_t width, std::size_t height, int cell)
+                std::size_t width, std::size_t height, int cell, int threads)
       : neighbours_(std::move(neighbours)),
         gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
         gh_((height - 1) / static_cast<std::size_t>(cell) + 2),
@@ -204,21 +221,27 @@ class SliceSmoother {
       for (const std::size_t n : corners(splats[p]))
         lists[n].push_back(static_cast<std::size_t>(clusters.cluster_of[p]));
     }
-    splatted_ = flattened(std::move(lists));
-    blurred_y_ = window_union(splatted_, gw_, gh_, true);
-    blurred_ = window_union(blurred_y_, gw_, gh_, false);
-    y_targets_ = tap_targets(splatted_, blurred_y_, gw_, gh_, true);
-    x_targets_ = tap_targets(blurred_y_, blurred_, gw_, gh_, false);
+    splatted_ = flattened(std::move(lists), threads);
+    blurred_y_ = window_union(splatted_, gw_, gh_, true, threads);
+    blurred_ = window_union(blurred_y_, gw_, gh_, false, threads);
+    y_targets_ = tap_targets(splatted_, blurred_y_, gw_, gh_, true, threads);
+    x_targets_ = tap_targets(blurred_y_, blurred_, gw_, gh_, false, threads);
     pixels_.resize(splats.size());
-    for (std::size_t p = 0; p < splats.size(); ++p) {
-      const Splat& s = splats[p];
-      const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
-      const auto nodes = corners(s);
-      PixelSplat& pixel = pixels_[p];
-      for (std::size_t k = 0; k < 4; ++k)
-        pixel.slot[k] = static_cast<std::uint32_t>(splatted_.slot(nodes[k], c));
-      pixel.weight = {(1 - s.fx) * (1 - s.fy), s.fx * (1 - s.fy), (1 - s.fx) * s.fy, s.fx * s.fy};
-    }
+    parallel_for(
+        height,
+        [&](std::size_t y) {
+          for (std::size_t p = y * width; p < (y + 1) * width; ++p) {
+            const Splat& s = splats[p];
+            const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
+            const auto nodes = corners(s);
+            PixelSplat& pixel = pixels_[p];
+            for (std::size_t k = 0; k < 4; ++k)
+              pixel.slot[k] = static_cast<std::uint32_t>(splatted_.slot(nodes[k], c));
+            pixel.weight = {(1 - s.fx) * (1 - s.fy), s.fx * (1 - s.fy), (1 - s.fx) * s.fy,
+                            s.fx * s.fy};
+          }
+        },
+        threads);
   }
 
   [[nodiscard]] Workspace workspace() const {
@@ -343,7 +366,8 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
       },
       options.threads);
   const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
-  const SliceSmoother smoother(clusters, std::move(neighbours), w, h, options.cell);
+  const SliceSmoother smoother(clusters, std::move(neighbours), w, h, options.cell,
+                               options.threads);
   std::vector<double> denominator(pixels);
   {
     Workspace space = smoother.workspace();
