@@ -4,11 +4,13 @@
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
 //                     [--configs A,B,...] [--lambda X] [--theta X] [--alpha X]
 //                     [--classes K] [--kmeans reference|plusplus] [--gmm-seed S] [--edge-seed S]
+//                     [--memory GIB]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
 //       and reductions on it), and prints one tab-separated row per configuration. Traces go to
-//       OUT/NAME-CONFIG.csv.
+//       OUT/NAME-CONFIG.csv. The memory budget (--memory, default as c2f-segment's) must hold
+//       the data preparation, and the Potts runs' recycled move graphs get what it leaves.
 //   c2f-bench-segment summarize ROWS.tsv
 //       Prints the markdown tables (per image, and medians per configuration).
 //
@@ -92,10 +94,10 @@ const std::vector<Config>& configs() {
 }
 
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
-          double time_limit, const std::string& trace_path) {
+          double time_limit, const MemoryBudget& memory, const std::string& trace_path) {
   const int L = scene.num_labels();
-  ScheduleProvider levels(parse_segmentation_schedule(config.schedule, L), scene.shape(),
-                          slic_source(scene.image));
+  const Schedule schedule = parse_segmentation_schedule(config.schedule, L);
+  ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
   // Coarse levels end after L steps without decrease (a whole sweep when the configuration
   // says so, or when a sweep is shorter); the original problem where the solver has converged.
   const auto options_for = [&](std::size_t sweep) {
@@ -115,7 +117,12 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
     return ObserverDecision::continue_run;
   };
   if (config.potts) {
-    ExpansionSolver<> solver;
+    // As in c2f-segment: the recycled move graphs get what the budget leaves.
+    SolverChoice choice;
+    choice.graph_memory_limit = static_cast<std::size_t>(-1);
+    choice = fit_to_budget(choice, problem_size(problem.potts, schedule.has_coarse_levels()),
+                           memory, "the Potts energy");
+    ExpansionSolver<> solver(choice.expansion_options());
     run.summary =
         coarse_to_fine(problem.potts, levels, solver,
                        options_for(solver.quiet_steps_to_converge(problem.potts)), observer);
@@ -151,8 +158,10 @@ const char* kColumns[] = {"image",
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
               const std::vector<std::string>& selected, const CoopParameters& parameters,
-              const DataPreparation& preparation) {
+              const DataPreparation& preparation, const MemoryBudget& memory) {
   const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
+  memory.require("segmenting " + set + "/" + name,
+                 segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
   const SegmentationProblem problem = segmentation_problem(scene, parameters, preparation);
   // The image's traces land together after its last row (each run stages its own files and
   // owns only the traces of the configurations it runs).
@@ -179,7 +188,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
                                   ", which is not in the list");
     }
     std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
-    Run run = solve(config, scene, problem, time_limit,
+    Run run = solve(config, scene, problem, time_limit, memory,
                     (output.staging() / (name + "-" + config.name + ".csv")).string());
     double reach = std::nan(""), ratio = std::nan(""), flat_error = std::nan(""),
            c2f_error = std::nan("");
@@ -283,6 +292,7 @@ int main(int argc, char** argv) {
     std::string data = "../shared/data", out = "out/bench-segment", config_list;
     double time_limit = 600;
     bool header = false;
+    double memory_gib = 0.0;  // 0: default_memory_budget()
     CoopParameters parameters;
     c2f::examples::PreparationFlags preparation;
     c2f::examples::ToolOptions options(
@@ -293,6 +303,9 @@ int main(int argc, char** argv) {
         .path("out", &out, "folder for traces and label images")
         .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
         .text("configs", &config_list, "comma-separated configurations (default: all)")
+        .real("memory", &memory_gib, {0.0, 1e6, false},
+              "the memory budget in GiB, as c2f-segment --memory (0, the default: half of this "
+              "machine's memory, at most what is available)")
         .flag("header", &header, "print the TSV header first");
     c2f::examples::declare_coop_parameters(options, parameters);
     c2f::examples::declare_data_preparation(options, preparation);
@@ -308,8 +321,12 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--configs: unknown configuration '" + name + "'");
       selected.push_back(name);
     }
+    const MemoryBudget memory =
+        memory_gib > 0.0
+            ? memory_budget_of_gib(memory_gib, "--memory " + c2f::format_real(memory_gib))
+            : default_memory_budget();
     return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected,
-                     parameters, preparation.resolved());
+                     parameters, preparation.resolved(), memory);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

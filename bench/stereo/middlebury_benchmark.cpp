@@ -424,7 +424,9 @@ int main(int argc, char** argv) {
             "--near-levels: has no effect without --c2f-near-radius or --c2f-shift-moves");
       }
     }
-    if (memory_gib > 0.0) settings.memory = memory_budget_of_gib(memory_gib, "--memory");
+    if (memory_gib > 0.0)
+      settings.memory =
+          memory_budget_of_gib(memory_gib, "--memory " + c2f::format_real(memory_gib));
     if (settings.labels == 1) throw std::invalid_argument("--labels: expected 0 or 2-256, got 1");
     // A bad schedule fails before the first solve.
     c2f::examples::with_flag("--schedule",

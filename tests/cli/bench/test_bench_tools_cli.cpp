@@ -71,6 +71,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
        "--configs: unknown configuration 'nope'"},
       {"c2f-bench-segment", "run set name --alpha 1",
        "--alpha: expected a finite number in [0, 1), got '1'"},
+      {"c2f-bench-segment", "run set name --memory -1",
+       "--memory: expected a finite number in [0, 1e+06], got '-1'"},
       {"c2f-bench-levels", "", "give SCENE"},
       {"c2f-bench-levels", "Teddy --schedule cp:x", "--schedule: level 'cp:x'"},
       {"c2f-bench-partitions", "data more", "unexpected argument 'more'"},
@@ -292,6 +294,14 @@ TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat 
   CHECK_THAT(alone.output, Catch::Contains("c2f-slic-greedy-zero is compared with "
                                            "flat-greedy-zero, which is not in the list"));
   CHECK_FALSE(std::filesystem::exists(out / "1_11_s-c2f-slic-greedy-zero.csv"));
+  // A budget the data preparation cannot fit is refused before anything is built or written.
+  const auto small = c2f::test::run_tool(tool, common + " --configs potts --memory 0.01");
+  INFO(small.output);
+  CHECK(small.exit_code == 2);
+  CHECK_THAT(small.output, Catch::Contains("segmenting multilabel/1_11_s needs ") &&
+                               Catch::Contains("more than the run's memory budget of 10.2 MiB "
+                                               "(--memory 0.01)"));
+  CHECK_FALSE(std::filesystem::exists(out / "1_11_s-potts.csv"));
 
   const auto run = c2f::test::run_tool(tool, common + " --configs flat-mm,c2f-slic-mm");
   INFO(run.output);
