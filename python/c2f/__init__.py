@@ -74,6 +74,7 @@ def solve(
     plateau_tolerance: float = 0.0,
     start: Union[str, np.ndarray] = "unary_argmin",
     callback: Optional[Callback] = None,
+    memory: float = 0.0,
 ) -> Result:
     """Minimises `energy`, flat or coarse to fine; the C++ coarse_to_fine with a SolverChoice.
 
@@ -99,6 +100,10 @@ def solve(
         at_original, labeling: the original variables' labeling this step stands for, in the
         result's shape, a copy made per step); returning False stops the run (None or True
         goes on).
+    memory: the run's memory budget in GiB, as the tools' --memory (0: half of this machine's
+        memory, at most what is available). The run's floor (the energy, a reduced level's
+        energy, the solver's working memory) must fit it, else ValueError naming `memory`;
+        the recycled move graphs get what it leaves.
 
     The GIL is released while the solver runs. Ctrl-C ends the run at its next step and raises
     KeyboardInterrupt with the best result so far as its `result` attribute; an exception
@@ -108,7 +113,7 @@ def solve(
     return _result(lambda: _solve(
         energy, list(schedule) if isinstance(schedule, tuple) else schedule, solver, maxflow,
         order, int(seed), int(near_radius), bool(shift_moves), near_levels, float(time_limit),
-        int(max_steps), int(plateau), float(plateau_tolerance), start, callback))
+        int(max_steps), int(plateau), float(plateau_tolerance), start, callback, float(memory)))
 
 
 def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
@@ -117,10 +122,12 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Sche
     """TSGO stereo of two RGB uint8 views (H, W, 3), coarse to fine: the disparities 0..labels-1
     of the left view are result.labeling ((H, W)). `schedule` takes the stereo presets ('paper',
     'paper-slic', 'regions', 'aggregated', ...) besides every schedule text; `options` are
-    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, ...); `threads` the
-    data preparation's cores (0: all). The same energy and run as `c2f-stereo LEFT RIGHT
-    --labels L --schedule S`."""
-    energy = stereo_energy(left, right, labels, smoothness, truncation, threads)
+    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, memory, ...); `threads`
+    the data preparation's cores (0: all); `memory` (GiB, 0: the default) holds the data
+    preparation as well as the run. The same energy and run as `c2f-stereo LEFT RIGHT --labels L
+    --schedule S`."""
+    energy = stereo_energy(left, right, labels, smoothness, truncation, threads,
+                           float(options.get("memory", 0.0)))
     return solve(energy, schedule, **options)
 
 
@@ -142,7 +149,7 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
             theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
             kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27, threads: int = 0,
             time_limit: float = 0.0, max_steps: int = 0, plateau: int = 0,
-            callback: Optional[Callback] = None) -> Result:
+            callback: Optional[Callback] = None, memory: float = 0.0) -> Result:
     """Interactive multi-label segmentation by cooperative cuts, as c2f-segment runs it.
 
     image: (H, W, 3) uint8 RGB. seeds: (H, W) integers, -1 where the user drew nothing, else the
@@ -155,9 +162,12 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     any schedule text (slic:S levels segment the image). kmeans, gmm_seed, edge_seed: the data
     preparation's clustering; threads: the cores it runs on (0: all; the result is the same for
     every count). plateau: steps without decrease that end a coarse level (0: the
-    number of labels or one sweep when shorter; -1: one sweep). result.labeling is (H, W).
+    number of labels or one sweep when shorter; -1: one sweep). memory: the budget in GiB
+    (0: half of this machine's memory, at most what is available) that the data preparation
+    must fit (ValueError naming `memory` otherwise); the Potts runs' recycled move graphs get
+    what it leaves. result.labeling is (H, W).
     """
     return _result(lambda: _segment(image, seeds, method, aux, start, schedule, float(lambda_),
                                     float(theta), float(alpha), int(classes), kmeans,
                                     int(gmm_seed), int(edge_seed), int(threads), float(time_limit),
-                                    int(max_steps), int(plateau), callback))
+                                    int(max_steps), int(plateau), callback, float(memory)))

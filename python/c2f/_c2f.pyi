@@ -94,6 +94,7 @@ def _solve(
     plateau_tolerance: float,
     start: Union[str, npt.ArrayLike],
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
+    memory: float,
 ) -> Dict[str, Any]:
     """The engine of c2f.solve (which documents the arguments); returns a dict."""
 
@@ -108,10 +109,11 @@ def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 1.
 
 def stereo_energy(left: npt.ArrayLike, right: npt.ArrayLike, labels: int = 85,
                   smoothness: str = "tsgo_step", truncation: float = 2.0,
-                  threads: int = 0) -> Energy:
+                  threads: int = 0, memory: float = 0.0) -> Energy:
     """The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 of the
     left view on a 4-connected grid; its schedules include the stereo presets and slic:S.
-    threads: cores preparing the data (0: all); the energy is the same for every count."""
+    threads: cores preparing the data (0: all); the energy is the same for every count.
+    memory: the budget in GiB the preparation must fit (0: the machine's default)."""
 
 def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
                     mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:
@@ -128,7 +130,8 @@ def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, method: str, aux: str, 
              schedule: str, lambda_: float, theta: float, alpha: float, classes: int,
              kmeans: str, gmm_seed: int, edge_seed: int, threads: int, time_limit: float,
              max_steps: int, plateau: int,
-             callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]]) -> Dict[str, Any]:
+             callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
+             memory: float) -> Dict[str, Any]:
     """The engine of c2f.segment (which documents the arguments); returns a dict."""
 
 def partition(energy: Energy, level: str) -> npt.NDArray[np.int32]:

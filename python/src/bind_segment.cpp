@@ -16,6 +16,7 @@
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 #include "c2f/vision/superpixels.hpp"
 #include "image_arrays.hpp"
+#include "memory_argument.hpp"
 #include "numpy_input.hpp"
 #include "step_record.hpp"
 
@@ -94,7 +95,8 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
                  const std::string& aux, const std::string& start, const std::string& schedule_text,
                  double lambda, double theta, double alpha, int classes, const std::string& kmeans,
                  std::uint64_t gmm_seed, std::uint64_t edge_seed, int threads, double time_limit,
-                 long max_steps, int plateau, const py::object& callback) {
+                 long max_steps, int plateau, const py::object& callback, double memory) {
+  const MemoryBudget budget = memory_budget_from(memory);
   if (method != "coop" && method != "potts")
     throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");
   const vision::SegmentationScene scene = scene_from_arrays(image, seeds);
@@ -141,6 +143,11 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     throw py::value_error(std::string("schedule: ") + error.what());
   }
 
+  require_memory_within(budget,
+                        "segmenting " + std::to_string(scene.image.cols) + "x" +
+                            std::to_string(scene.image.rows) + " pixels into " +
+                            std::to_string(num_labels) + " labels",
+                        vision::segmentation_memory_estimate(scene.image.total(), num_labels));
   StepRecord record(callback, {scene.image.rows, scene.image.cols});
   Summary summary;
   std::string report;
@@ -158,7 +165,10 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
       return options;
     };
     if (method == "potts") {
-      ExpansionSolver<> solver;
+      // As in c2f-segment: the recycled move graphs get what the budget leaves.
+      const SolverChoice choice =
+          fit_to_memory(SolverChoice{}, problem.potts, schedule.has_coarse_levels(), budget);
+      ExpansionSolver<> solver(choice.expansion_options());
       summary = coarse_to_fine(problem.potts, levels, solver,
                                options_for(solver.quiet_steps_to_converge(problem.potts)),
                                std::ref(record));
@@ -185,7 +195,7 @@ void bind_segment(py::module_& module) {
              py::arg("aux"), py::arg("start"), py::arg("schedule"), py::arg("lambda_"),
              py::arg("theta"), py::arg("alpha"), py::arg("classes"), py::arg("kmeans"),
              py::arg("gmm_seed"), py::arg("edge_seed"), py::arg("threads"), py::arg("time_limit"),
-             py::arg("max_steps"), py::arg("plateau"), py::arg("callback"),
+             py::arg("max_steps"), py::arg("plateau"), py::arg("callback"), py::arg("memory"),
              "The engine of c2f.segment (which documents the arguments); returns a dict.");
 }
 

@@ -13,6 +13,7 @@
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
 #include "schedules.hpp"
@@ -50,7 +51,9 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
                const std::string& solver, const std::string& maxflow, const std::string& order,
                std::uint64_t seed, int near_radius, bool shift_moves,
                const std::string& near_levels, double time_limit, long max_steps, int plateau,
-               double plateau_tolerance, const py::object& start, const py::object& callback) {
+               double plateau_tolerance, const py::object& start, const py::object& callback,
+               double memory) {
+  const MemoryBudget budget = memory_budget_from(memory);
   SolverChoice choice;
   choice.kind =
       parsed("solver", solver, [](const std::string& t) { return solver_kind_from_string(t); });
@@ -90,9 +93,11 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   }
 
   StepRecord record(callback, model.shape);
-  auto run = [&](auto& levels) {
+  // The run's floor must fit the budget; the recycled move graphs get what it leaves.
+  auto run = [&](auto& levels, bool coarse_levels) {
+    const SolverChoice fitted = fit_to_memory(choice, model.energy, coarse_levels, budget);
     py::gil_scoped_release free;
-    return with_chosen_solvers(choice, [&](auto&& solvers) {
+    return with_chosen_solvers(fitted, [&](auto&& solvers) {
       return coarse_to_fine(model.energy, levels, solvers, options, std::ref(record));
     });
   };
@@ -100,12 +105,12 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   std::string report;
   if (py::isinstance<py::list>(schedule_object) || py::isinstance<py::tuple>(schedule_object)) {
     PartitionList levels = partition_list(py::list(schedule_object), model.energy.num_variables());
-    summary = run(levels);
+    summary = run(levels, py::len(schedule_object) > 0);
     report = summary.report();
   } else if (py::isinstance<py::str>(schedule_object)) {
-    ScheduleProvider levels =
-        schedule_provider(parse_schedule(schedule_object.cast<std::string>(), model), model);
-    summary = run(levels);
+    const Schedule schedule = parse_schedule(schedule_object.cast<std::string>(), model);
+    ScheduleProvider levels = schedule_provider(schedule, model);
+    summary = run(levels, schedule.has_coarse_levels());
     report = summary.report();
   } else {
     throw py::type_error(
@@ -122,7 +127,7 @@ void bind_solve(py::module_& module) {
              py::arg("maxflow"), py::arg("order"), py::arg("seed"), py::arg("near_radius"),
              py::arg("shift_moves"), py::arg("near_levels"), py::arg("time_limit"),
              py::arg("max_steps"), py::arg("plateau"), py::arg("plateau_tolerance"),
-             py::arg("start"), py::arg("callback"),
+             py::arg("start"), py::arg("callback"), py::arg("memory"),
              "The engine of c2f.solve (which documents the arguments); returns a dict.");
 }
 

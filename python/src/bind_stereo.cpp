@@ -13,6 +13,7 @@
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "image_arrays.hpp"
+#include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
 
@@ -72,7 +73,9 @@ py::dict read_stereo_pair(const std::string& left, const std::string& right, con
 }
 
 ModelEnergy stereo_energy(const py::handle& left, const py::handle& right, int labels,
-                          const std::string& smoothness, double truncation, int threads) {
+                          const std::string& smoothness, double truncation, int threads,
+                          double memory) {
+  const MemoryBudget budget = memory_budget_from(memory);
   vision::TsgoOptions options;
   options.labels = labels;
   options.threads = threads;
@@ -88,6 +91,13 @@ ModelEnergy stereo_energy(const py::handle& left, const py::handle& right, int l
   const cv::Mat right_bgr = bgr_image(right, "right");
   if (left_bgr.size() != right_bgr.size())
     throw py::value_error("left and right: the views differ in size");
+  // Before anything is allocated: TSGO step 1 (the cost volume) must fit.
+  require_memory_within(
+      budget,
+      "the TSGO energy of " + std::to_string(left_bgr.cols) + "x" + std::to_string(left_bgr.rows) +
+          " pixels and " + std::to_string(labels) + " labels",
+      vision::tsgo_memory_estimate(static_cast<std::size_t>(left_bgr.cols),
+                                   static_cast<std::size_t>(left_bgr.rows), labels, threads));
   py::gil_scoped_release free;
   vision::TsgoProblem problem = vision::tsgo_problem(left_bgr, right_bgr, options);
   return ModelEnergy{
@@ -138,12 +148,13 @@ void bind_stereo(py::module_& module) {
              "`downscale` (views by area, GT by nearest neighbour divided by the factor).");
   module.def("stereo_energy", &stereo_energy, py::arg("left"), py::arg("right"),
              py::arg("labels") = 85, py::arg("smoothness") = "tsgo_step",
-             py::arg("truncation") = 2.0, py::arg("threads") = 0,
+             py::arg("truncation") = 2.0, py::arg("threads") = 0, py::arg("memory") = 0.0,
              "The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 "
              "of the left view, a 4-connected grid. Its schedules include the stereo presets "
              "(paper, paper-slic, regions, aggregated, ...) and slic:S levels on the left view. "
              "threads: cores preparing the data (0: all); the energy is the same for every "
-             "count.");
+             "count. memory: the budget in GiB the preparation must fit (0: half of this "
+             "machine's memory, at most what is available); ValueError naming it otherwise.");
   module.def("bad_pixel_rates", &bad_pixel_rates, py::arg("disparity"), py::arg("gt"),
              py::arg("mask") = py::none(),
              "Fractions of pixels with |disparity - gt| above 0.5, 1 and 2, over all pixels of "

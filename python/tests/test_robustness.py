@@ -90,6 +90,12 @@ def test_solve_arguments_are_checked(rng):
         (dict(max_steps=-2), "max_steps: "),
         (dict(plateau=0), "plateau: "),
         (dict(start="middle"), "start: "),
+        (dict(memory=-1.0), "memory: expected a finite number of GiB >= 0"),
+        (dict(memory=float("nan")), "memory: expected a finite number of GiB >= 0"),
+        # A budget below the run's floor is refused before the run, with both sizes named.
+        (dict(memory=1e-6), r"memory: the energy needs .* more than the run's memory budget of "
+                            r"1.0 KiB \(memory=1e-06\)"),
+        (dict(schedule=[np.arange(30) // 2], memory=1e-6), "memory: the energy needs "),
     ]:
         with pytest.raises(ValueError, match=words):
             c2f.solve(energy, **kwargs)

@@ -82,5 +82,11 @@ def test_segment_inputs_are_checked(rng):
         c2f.segment(image, seeds, method="graphcut")
     with pytest.raises(TypeError, match="seeds: expected an integer array"):
         c2f.segment(image, seeds.astype(float))
+    with pytest.raises(ValueError, match="memory: segmenting 30x20 pixels into 2 labels needs .* "
+                                         "more than the run's memory budget"):
+        c2f.segment(image, seeds, memory=1e-6)
+    # A budget that holds the data but not the Potts run's floor is refused too.
+    with pytest.raises(ValueError, match="memory: the energy needs "):
+        c2f.segment(image, seeds, method="potts", memory=0.01)
     result = c2f.segment(image, seeds, schedule="flat")
     assert result.labeling[2, 2] == 0 and result.labeling[15, 25] == 1

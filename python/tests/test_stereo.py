@@ -69,6 +69,12 @@ def test_stereo_inputs_are_checked(rng):
         c2f.stereo_energy(image, image[:10])
     with pytest.raises(ValueError, match="smoothness: "):
         c2f.stereo_energy(image, image, smoothness="wavy")
+    # The preparation must fit the budget; c2f.stereo passes its `memory` on to it.
+    with pytest.raises(ValueError, match="memory: the TSGO energy of 30x20 pixels and 85 labels "
+                                         "needs .* more than the run's memory budget"):
+        c2f.stereo(image, image, memory=1e-6)
+    with pytest.raises(ValueError, match="memory: expected a finite number"):
+        c2f.stereo_energy(image, image, memory=-2.0)
     general = c2f.Energy(rng.random((600, 3)))
     with pytest.raises(ValueError, match="schedule: "):
         c2f.solve(general, "paper-slic")

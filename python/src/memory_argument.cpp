@@ -1,0 +1,41 @@
+#include "memory_argument.hpp"
+
+#include <pybind11/pybind11.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "c2f/adapters/run_memory.hpp"
+#include "c2f/core/number_text.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+MemoryBudget memory_budget_from(double gib) {
+  if (!std::isfinite(gib) || gib < 0)
+    throw py::value_error("memory: expected a finite number of GiB >= 0 (0: the default)");
+  if (gib == 0) return default_memory_budget();
+  return memory_budget_of_gib(gib, "memory=" + format_real(gib));
+}
+
+void require_memory_within(const MemoryBudget& budget, const std::string& what,
+                           std::optional<std::size_t> bytes) {
+  try {
+    budget.require(what, bytes);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("memory: ") + error.what());
+  }
+}
+
+SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy, bool coarse_levels,
+                           const MemoryBudget& budget) {
+  choice.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
+  try {
+    return fit_to_budget(choice, problem_size(energy, coarse_levels), budget, "the energy");
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("memory: ") + error.what());
+  }
+}
+
+}  // namespace c2f::python

@@ -1,0 +1,31 @@
+#pragma once
+// The `memory` argument of c2f.solve, c2f.stereo_energy and c2f.segment: the run's memory budget
+// in GiB, as the tools' --memory (c2f/core/memory_budget.hpp, c2f/adapters/run_memory.hpp), with
+// every refusal a ValueError naming `memory`.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "c2f/adapters/solver_choice.hpp"
+#include "c2f/core/memory_budget.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+
+namespace c2f::python {
+
+/// `gib` GiB, or the machine's default budget (default_memory_budget) for 0. ValueError naming
+/// `memory` for a negative or non-finite value.
+MemoryBudget memory_budget_from(double gib);
+
+/// MemoryBudget::require (the budget, then what the machine has available), as a ValueError
+/// "memory: <what> needs N, more than the run's memory budget of M (...)".
+void require_memory_within(const MemoryBudget& budget, const std::string& what,
+                           std::optional<std::size_t> bytes);
+
+/// `choice` with its recycled move graphs limited to what `budget` leaves above the run's floor
+/// on `energy` (fit_to_budget, coarse_levels: whether reduced energies are solved too); a
+/// ValueError naming `memory` when the floor does not fit.
+SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy, bool coarse_levels,
+                           const MemoryBudget& budget);
+
+}  // namespace c2f::python
