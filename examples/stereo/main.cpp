@@ -61,26 +61,22 @@ StereoScene load_input(examples::StereoCommand& command) {
   return scene;
 }
 
-/// Before anything is allocated: TSGO step 1 and the run's floor (run_memory_floor) must fit the
-/// budget and the machine, else "needs N GiB".
+/// Before anything is allocated: TSGO step 1 and the run's floor must fit the budget and the
+/// machine, else "needs N GiB".
 void require_memory_for(const examples::StereoCommand& command, const StereoScene& scene) {
   const GridShape shape = scene.shape();
   const std::string what = "the TSGO energy of " + std::to_string(shape.width) + "x" +
                            std::to_string(shape.height) + " pixels and " +
                            std::to_string(command.tsgo.labels) + " labels solved by " +
                            std::string(to_string(command.solver.kind));
-  const std::optional<std::size_t> step1 =
-      tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels, command.tsgo.threads);
-  const std::optional<ProblemSize> size = grid_problem_size(
-      shape.width, shape.height, command.tsgo.labels, command.schedule.has_coarse_levels());
-  const std::optional<std::size_t> floor =
-      size ? run_memory_floor(command.solver, *size) : std::nullopt;
-  std::optional<std::size_t> need;  // std::nullopt: beyond std::size_t
-  if (step1 && floor) need = std::max(*step1, *floor);
-  command.memory.require((command.scene.empty() ? "LEFT '" + command.pair.left + "': "
-                                                : "--scene " + command.scene + ": ") +
-                             what,
-                         need);
+  command.memory.require(
+      (command.scene.empty() ? "LEFT '" + command.pair.left + "': "
+                             : "--scene " + command.scene + ": ") +
+          what,
+      grid_run_memory_need(command.solver, shape.width, shape.height, command.tsgo.labels,
+                           command.schedule.has_coarse_levels(),
+                           tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels,
+                                                command.tsgo.threads)));
 }
 
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
@@ -108,6 +104,26 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
     std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s on %u threads\n", seconds,
                  resolved_threads(command.tsgo.threads));
   return {std::move(problem), seconds};
+}
+
+/// The command's solver with its recycled move graphs limited to what the budget leaves above
+/// the run's floor on the built energy.
+SolverChoice solver_within_budget(const examples::StereoCommand& command,
+                                  const StereoProblem& problem) {
+  return fit_to_budget(command.solver,
+                       problem_size(problem.tsgo.energy, command.schedule.has_coarse_levels()),
+                       command.memory, "the run on the TSGO energy");
+}
+
+/// The run: the chosen solver on the schedule's levels, every step traced (with its error
+/// when there is GT) and each level's partition kept for --save-partitions.
+Summary solve(const examples::StereoCommand& command, const StereoScene& scene,
+              const StereoProblem& problem, ScheduleProvider& levels, examples::RunRecord& record,
+              LevelPartitionRecorder& partitions, const examples::InterruptWatch& interrupts) {
+  return examples::run_chosen_solver(
+      problem.tsgo.energy, levels, command.solver, examples::run_options(command),
+      record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
+                      interrupts, {std::ref(partitions)}));
 }
 
 /// ", near moves of radius R and shift moves on ..." for the near and shift moves the solver
@@ -157,20 +173,34 @@ void announce(const examples::StereoCommand& command, const StereoScene& scene) 
       command.memory.describe().c_str());
 }
 
-/// The dataset's own error line for the labeling ("D1 ...: all 4.56%"), or "" for a scene
-/// scored by the default bad 1 or without GT (write_disparity_outputs' rates cover those).
-std::string dataset_error_line(const StereoScene& scene, std::span<const Label> labeling) {
-  if (scene.gt.empty() || scene.measure == ErrorMeasure{}) return {};
-  return scene_errors(labels_to_disparity(labeling, scene.shape()), scene).brief(scene.measure);
+/// How the run's labeling scores against the GT: the fixed bad-pixel rates (std::nullopt without
+/// GT) and the dataset's own error line ("" when it has none besides them).
+struct RunScores {
+  std::optional<BadPixelRates> rates;
+  std::string dataset_error;
+};
+
+/// Stages the disparity maps, summary.txt and the saved partitions, and returns the scores.
+RunScores write_outputs(const examples::RunRecord& record, const examples::StereoCommand& command,
+                        const StereoScene& scene, const StereoProblem& problem,
+                        const ScheduleProvider& levels, const LevelPartitionRecorder& partitions,
+                        const Summary& summary, const examples::InterruptWatch& interrupts) {
+  RunScores scores{write_disparity_outputs(record.staging().string(), summary.labeling, scene,
+                                           command.tsgo.labels),
+                   scene_error_line(summary.labeling, scene)};
+  write_summary(record.staging(), command, scene, problem, levels, summary, scores.rates,
+                scores.dataset_error, interrupts);
+  partitions.write(record.staging().string(), scene.shape());
+  return scores;
 }
 
 /// The run's last lines on stderr: the error rates (with GT), then the common end.
 void report_end(const examples::StereoCommand& command, const Summary& summary,
-                const std::optional<BadPixelRates>& rates, const std::string& dataset_error,
-                const examples::InterruptWatch& interrupts) {
-  if (!dataset_error.empty() && !command.quiet)
-    std::fprintf(stderr, "c2f-stereo: %s\n", dataset_error.c_str());
-  if (rates && !command.quiet) std::fprintf(stderr, "c2f-stereo: %s\n", rates->brief().c_str());
+                const RunScores& scores, const examples::InterruptWatch& interrupts) {
+  if (!scores.dataset_error.empty() && !command.quiet)
+    std::fprintf(stderr, "c2f-stereo: %s\n", scores.dataset_error.c_str());
+  if (scores.rates && !command.quiet)
+    std::fprintf(stderr, "c2f-stereo: %s\n", scores.rates->brief().c_str());
   examples::print_run_end("c2f-stereo", summary, interrupts, command.out_dir, command.quiet);
 }
 
@@ -194,28 +224,19 @@ int main(int argc, char** argv) {
     require_memory_for(command, scene);
     const StereoProblem problem = build_problem(command, scene);
     // The recycled move graphs get what the budget leaves.
-    command.solver = fit_to_budget(
-        command.solver, problem_size(problem.tsgo.energy, command.schedule.has_coarse_levels()),
-        command.memory, "the run on the TSGO energy");
+    command.solver = solver_within_budget(command, problem);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary = examples::run_chosen_solver(
-        problem.tsgo.energy, levels, command.solver, examples::run_options(command),
-        record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
-                        interrupts, {std::ref(partitions)}));
+    const Summary summary = solve(command, scene, problem, levels, record, partitions, interrupts);
 
-    const auto rates = write_disparity_outputs(record.staging().string(), summary.labeling, scene,
-                                               command.tsgo.labels);
-    const std::string dataset_error = dataset_error_line(scene, summary.labeling);
-    write_summary(record.staging(), command, scene, problem, levels, summary, rates, dataset_error,
-                  interrupts);
-    partitions.write(record.staging().string(), scene.shape());
+    const RunScores scores =
+        write_outputs(record, command, scene, problem, levels, partitions, summary, interrupts);
     record.commit();
-    report_end(command, summary, rates, dataset_error, interrupts);
+    report_end(command, summary, scores, interrupts);
     return interrupts.exit_code();
   });
 }

@@ -53,12 +53,12 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
 void require_memory_for(const examples::SyntheticCommand& command) {
   SolverChoice icm;
   icm.kind = SolverKind::icm;
-  const auto size = grid_problem_size(command.spec.shape.width, command.spec.shape.height,
-                                      command.spec.num_labels, true);
-  command.memory.require("the synthetic problem of " + std::to_string(command.spec.shape.width) +
-                             "x" + std::to_string(command.spec.shape.height) + " pixels with " +
-                             std::to_string(command.spec.num_labels) + " labels",
-                         size ? run_memory_floor(icm, *size) : std::nullopt);
+  command.memory.require(
+      "the synthetic problem of " + std::to_string(command.spec.shape.width) + "x" +
+          std::to_string(command.spec.shape.height) + " pixels with " +
+          std::to_string(command.spec.num_labels) + " labels",
+      grid_run_memory_need(icm, command.spec.shape.width, command.spec.shape.height,
+                           command.spec.num_labels, true, 0));
 }
 
 /// With -o, the run's files are staged and land together at the end (an earlier run's files

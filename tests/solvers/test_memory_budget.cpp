@@ -70,3 +70,15 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
       Catch::StartsWith("the run needs ") &&
           Catch::EndsWith("more than the run's memory budget of " + budget.describe()));
 }
+
+TEST_CASE("a grid run needs the larger of its preparation and its floor", "[memory]") {
+  SolverChoice choice;
+  const auto floor = run_memory_floor(choice, *grid_problem_size(30, 20, 6, true));
+  REQUIRE(floor);
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, 0) == floor);
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, *floor + 1) == *floor + 1);
+  // An overflowing preparation or grid is "beyond std::size_t", never a small number.
+  CHECK_FALSE(grid_run_memory_need(choice, 30, 20, 6, true, std::nullopt));
+  CHECK_FALSE(
+      grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256, true, 0));
+}

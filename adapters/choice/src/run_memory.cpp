@@ -74,6 +74,15 @@ std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const Pr
   return total;
 }
 
+std::optional<std::size_t> grid_run_memory_need(const SolverChoice& choice, std::size_t width,
+                                                std::size_t height, int labels, bool coarse_levels,
+                                                std::optional<std::size_t> preparation) {
+  const std::optional<ProblemSize> size = grid_problem_size(width, height, labels, coarse_levels);
+  const std::optional<std::size_t> floor = size ? run_memory_floor(choice, *size) : std::nullopt;
+  if (!floor || !preparation) return std::nullopt;
+  return std::max(*floor, *preparation);
+}
+
 SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size, const MemoryBudget& budget,
                            const std::string& what) {
   const std::optional<std::size_t> floor = run_memory_floor(choice, size);

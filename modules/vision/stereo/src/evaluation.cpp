@@ -86,6 +86,11 @@ std::string SceneErrors::brief(const ErrorMeasure& measure) const {
   return text;
 }
 
+std::string scene_error_line(std::span<const Label> labeling, const StereoScene& scene) {
+  if (scene.gt.empty() || scene.measure == ErrorMeasure{}) return {};
+  return scene_errors(labels_to_disparity(labeling, scene.shape()), scene).brief(scene.measure);
+}
+
 SceneErrors scene_errors(const cv::Mat& disparity, const StereoScene& scene) {
   if (scene.gt.empty()) throw std::invalid_argument("scene_errors: the scene has no GT");
   if (disparity.type() != CV_32F || disparity.size() != scene.gt.size())

@@ -38,6 +38,14 @@ struct ProblemSize {
 [[nodiscard]] std::optional<std::size_t> run_memory_floor(const SolverChoice& choice,
                                                           const ProblemSize& size);
 
+/// What a run of `choice` on a 4-connected width x height grid energy with `labels` labels needs
+/// before anything is built: the larger of `preparation` (the peak of building the energy, e.g.
+/// tsgo_memory_estimate) and run_memory_floor of grid_problem_size. std::nullopt when either
+/// overflows (preparation std::nullopt included). Give it to MemoryBudget::require.
+[[nodiscard]] std::optional<std::size_t> grid_run_memory_need(
+    const SolverChoice& choice, std::size_t width, std::size_t height, int labels,
+    bool coarse_levels, std::optional<std::size_t> preparation);
+
 /// `choice` with graph_memory_limit lowered to what `budget` leaves above run_memory_floor (a
 /// smaller limit already in `choice` stays). Throws std::invalid_argument "<what> needs N,
 /// more than the run's memory budget of M" (MemoryBudget::require) when the floor does not fit.

@@ -49,6 +49,10 @@ struct SceneErrors {
 /// scene has no GT or the sizes differ.
 SceneErrors scene_errors(const cv::Mat& disparity, const StereoScene& scene);
 
+/// The dataset's own error line for a labeling of `scene` (labels = disparities): "D1 ...: all
+/// 4.56%"; "" for a scene scored by the default bad 1 or without GT (BadPixelRates cover those).
+std::string scene_error_line(std::span<const Label> labeling, const StereoScene& scene);
+
 /// The error a trace records for a labeling of `scene` (labels = disparities): the rate of bad
 /// pixels by the scene's measure (bad 1 unless the dataset has its own) over the non-occluded
 /// pixels when the scene has a mask, else over all pixels with known GT. Serves TraceWriter's
