@@ -134,7 +134,7 @@ std::uint64_t energy_fingerprint(const PairwiseEnergy& energy) {
     const auto* p = static_cast<const unsigned char*>(data);
     for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ULL;
   };
-  mix(energy.unaries().data(), energy.unaries().size_bytes());
+  energy.unaries().visit([&](auto costs) { mix(costs.data(), costs.size_bytes()); });
   for (const Edge& e : energy.edges()) {
     mix(&e.u, sizeof e.u);
     mix(&e.v, sizeof e.v);

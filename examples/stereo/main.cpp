@@ -74,7 +74,7 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
                              : "--scene " + command.scene + ": ") +
           what,
       grid_run_memory_need(command.solver, shape.width, shape.height, command.tsgo.labels,
-                           command.schedule.has_coarse_levels(),
+                           command.schedule.has_coarse_levels(), CostStorage::single_precision,
                            tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels,
                                                 command.tsgo.threads)));
 }

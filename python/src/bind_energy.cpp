@@ -220,10 +220,11 @@ void bind_energy(py::module_& module) {
           [](const ModelEnergy& m) {
             py::array_t<double> out({static_cast<py::ssize_t>(m.energy.num_variables()),
                                      static_cast<py::ssize_t>(m.energy.num_labels())});
-            std::copy(m.energy.unaries().begin(), m.energy.unaries().end(), out.mutable_data());
+            m.energy.unaries().visit(
+                [&](auto costs) { std::copy(costs.begin(), costs.end(), out.mutable_data()); });
             return out;
           },
-          "A copy of the unary costs, (N, L).")
+          "A copy of the unary costs, (N, L), float64 (float-stored costs convert exactly).")
       .def_property_readonly(
           "edges",
           [](const ModelEnergy& m) {

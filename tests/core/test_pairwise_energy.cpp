@@ -64,3 +64,37 @@ TEST_CASE("PairwiseEnergy validates every field", "[core][energy][validation]") 
       PairwiseEnergy(2, 2, {0, 0, 0, 0}, {PairwiseTerm::table(3, std::vector<double>(9, 0.0))}, {}),
       Catch::Contains("terms[0]: table term has 3 labels, the energy has 2"));
 }
+
+TEST_CASE("float unaries: the energy is what the stored float costs define",
+          "[core][energy][float]") {
+  // Costs that float does not hold exactly: the float energy is the double energy of the
+  // float-rounded costs, summed in double.
+  const std::vector<double> exact{0.1, 0.7, 1.0 / 3.0, 2.2, 1e-9, 5.0};
+  const std::vector<float> stored(exact.begin(), exact.end());
+  const std::vector<double> rounded(stored.begin(), stored.end());
+  const std::vector<PairwiseTerm> terms{PairwiseTerm::potts()};
+  const std::vector<Edge> edges{Edge{0, 1, 0.3, 0}, Edge{1, 2, 1.5, 0}};
+  const PairwiseEnergy single = PairwiseEnergy::with_float_unaries(3, 2, stored, terms, edges);
+  const PairwiseEnergy twin(3, 2, rounded, terms, edges);
+  CHECK(single.single_precision());
+  CHECK_FALSE(twin.single_precision());
+  CHECK(single.unaries().single_precision());
+  CHECK(single.unaries().bytes() * 2 == twin.unaries().bytes());
+  CHECK(single.unaries().to_doubles() == rounded);
+  for (std::size_t v = 0; v < 3; ++v) {
+    for (Label l = 0; l < 2; ++l) {
+      CHECK(single.unary(v, l) == rounded[v * 2 + static_cast<std::size_t>(l)]);
+      CHECK(single.unaries().row(v)[static_cast<std::size_t>(l)] == single.unary(v, l));
+      CHECK(single.unaries()(v, l) == single.unary(v, l));
+    }
+  }
+  CHECK(single.unary(0, 0) != exact[0]);  // it is stored rounded
+  for (const Labeling& x : {Labeling{0, 0, 0}, Labeling{1, 0, 1}, Labeling{0, 1, 1}}) {
+    CHECK(single.evaluate(x) == twin.evaluate(x));
+  }
+  const auto nan = std::numeric_limits<float>::quiet_NaN();
+  CHECK_THROWS_WITH(PairwiseEnergy::with_float_unaries(2, 2, {0, 0, 0, nan}, terms, {}),
+                    Catch::Contains("unaries: cost of label 1 at variable 1 is not finite"));
+  CHECK_THROWS_WITH(PairwiseEnergy::with_float_unaries(2, 2, {0, 0, 0}, terms, {}),
+                    Catch::Contains("unaries has 3 entries"));
+}

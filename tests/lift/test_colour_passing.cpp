@@ -29,8 +29,12 @@ PairwiseEnergy uniform_chain() {
 TEST_CASE("lowest-cost labels break ties by label index", "[lift][colour-passing]") {
   const std::vector<double> row{3.0, 1.0, 1.0, 0.5, 3.0};
   std::vector<Label> top(4);
-  lowest_cost_labels(row, 4, top);
+  lowest_cost_labels(std::span<const double>(row), 4, top);
   CHECK(top == std::vector<Label>{3, 1, 2, 0});
+  const std::vector<float> float_row(row.begin(), row.end());
+  std::vector<Label> float_top(4);
+  lowest_cost_labels(std::span<const float>(float_row), 4, float_top);
+  CHECK(float_top == top);
 }
 
 TEST_CASE("colour passing on a chain finds its mirror symmetry", "[lift][colour-passing]") {

@@ -137,3 +137,31 @@ TEST_CASE("edges inside a group fold their diagonal cost into the group's unary"
   CHECK(reduced.unary(0, 0) == 1.0 + 3.0 + 5.0);
   CHECK(reduced.unary(0, 1) == 2.0 + 4.0 + 5.5);
 }
+
+TEST_CASE("a float energy reduces to the double reduction of its stored costs",
+          "[lift][reduce][float]") {
+  Rng rng(20261125);
+  for (int trial = 0; trial < 100; ++trial) {
+    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 30)(rng);
+    const int num_labels = std::uniform_int_distribution<int>(1, 5)(rng);
+    const PairwiseEnergy energy = random_energy(
+        rng, n, num_labels, std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
+    std::vector<float> stored(energy.unaries().size());
+    energy.unaries().visit([&](auto costs) {
+      for (std::size_t i = 0; i < costs.size(); ++i) stored[i] = static_cast<float>(costs[i]);
+    });
+    const std::vector<Edge> edges(energy.edges().begin(), energy.edges().end());
+    const std::vector<PairwiseTerm> terms(energy.terms().begin(), energy.terms().end());
+    const PairwiseEnergy single =
+        PairwiseEnergy::with_float_unaries(n, num_labels, stored, terms, edges);
+    const PairwiseEnergy twin(n, num_labels, single.unaries().to_doubles(), terms, edges);
+    const DensePartition partition = random_partition(rng, n, n);
+    const PairwiseEnergy reduced = reduce(single, partition);
+    CHECK_FALSE(reduced.single_precision());  // group sums stay in double
+    CHECK(reduced.unaries().to_doubles() == reduce(twin, partition).unaries().to_doubles());
+    for (int sample = 0; sample < 3; ++sample) {
+      const Labeling y = random_labeling(rng, reduced.num_variables(), num_labels);
+      CHECK(close_relative(reduced.evaluate(y), single.evaluate(expand(y, partition)), 1e-12));
+    }
+  }
+}

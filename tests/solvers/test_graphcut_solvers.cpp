@@ -61,7 +61,7 @@ TEST_CASE("alpha-expansion on Potts is within the factor-2 bound of the optimum"
   for (int trial = 0; trial < 60; ++trial) {
     const int num_labels = 3 + trial % 2;
     PairwiseEnergy raw = tiny_model(rng, trial % 3, num_labels, PairwiseTerm::potts());
-    std::vector<double> unaries(raw.unaries().begin(), raw.unaries().end());
+    std::vector<double> unaries = raw.unaries().to_doubles();
     for (double& u : unaries) u += 2.0;  // tiny_model draws unaries in [-2, 4)
     const PairwiseEnergy energy(raw.num_variables(), num_labels, std::move(unaries),
                                 {PairwiseTerm::potts()},
@@ -341,4 +341,24 @@ TEST_CASE("patched expansion problems are bitwise the problems computed in full"
       scratch.log_changes(changed);
     }
   }
+}
+
+TEST_CASE("expansion and swap read a float energy as the double energy of its stored costs",
+          "[solver][float]") {
+  Rng rng(1125);
+  const PairwiseEnergy twin = integral_grid_energy(rng, 9, 5, integral_step_term(5));
+  // Quarters are exact in float and make the costs non-integral.
+  std::vector<double> costs = twin.unaries().to_doubles();
+  for (double& c : costs) c += 0.25;
+  const std::vector<float> stored(costs.begin(), costs.end());
+  const std::vector<PairwiseTerm> terms(twin.terms().begin(), twin.terms().end());
+  const std::vector<Edge> edges(twin.edges().begin(), twin.edges().end());
+  const PairwiseEnergy single =
+      PairwiseEnergy::with_float_unaries(twin.num_variables(), 5, stored, terms, edges);
+  const PairwiseEnergy same(twin.num_variables(), 5, costs, terms, edges);
+  ExpansionSolver expansion_single, expansion_double;
+  CHECK(labelings_of_run(expansion_single, single, 15) ==
+        labelings_of_run(expansion_double, same, 15));
+  SwapSolver swap_single, swap_double;
+  CHECK(labelings_of_run(swap_single, single, 20) == labelings_of_run(swap_double, same, 20));
 }

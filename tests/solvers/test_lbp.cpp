@@ -77,8 +77,7 @@ TEST_CASE("the fast message updates equal the generic O(L^2) update", "[lbp]") {
     }
     const PairwiseEnergy parametric = tiny_model(rng, 0, num_labels, term);
     const PairwiseEnergy tabulated(
-        parametric.num_variables(), num_labels,
-        std::vector<double>(parametric.unaries().begin(), parametric.unaries().end()),
+        parametric.num_variables(), num_labels, parametric.unaries().to_doubles(),
         {PairwiseTerm::table(num_labels, table)},
         std::vector<Edge>(parametric.edges().begin(), parametric.edges().end()));
     LbpSolver fast, generic;

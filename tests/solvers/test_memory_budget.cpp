@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "c2f/adapters/run_memory.hpp"
+#include "c2f/core/grid.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/memory_need.hpp"
 #include "support/random_models.hpp"
@@ -40,7 +41,7 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
   test::Rng rng(8);
   const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
   CHECK(energy_memory_bytes(energy) >=
-        energy.unaries().size() * sizeof(double) + energy.edges().size() * sizeof(Edge));
+        energy.unaries().bytes() + energy.edges().size() * sizeof(Edge));
   SolverChoice choice;
   choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
   const ProblemSize flat = problem_size(energy, false), coarse = problem_size(energy, true);
@@ -48,18 +49,37 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
   const auto coarse_floor = run_memory_floor(choice, coarse);
   REQUIRE(flat_floor.has_value());
   REQUIRE(coarse_floor.has_value());
-  // Coarse levels add one reduced energy at most as large as the original.
-  CHECK(*coarse_floor == *flat_floor + flat.energy_bytes);
+  // Coarse levels add one reduced energy of at most as many variables and edges, in double.
+  const std::size_t reduced_bound =
+      energy.num_variables() * 6 * sizeof(double) + energy.edges().size() * sizeof(Edge);
+  CHECK(*coarse_floor == *flat_floor + reduced_bound);
   // Near and shift moves add a second solver's working memory; lbp its messages.
   SolverChoice near = choice;
   near.near_radius = 3;
   CHECK(*run_memory_floor(near, flat) > *flat_floor);
   // The grid estimate before building matches the built energy's sizes.
-  const auto predicted = grid_problem_size(30, 20, 6, false);
+  const auto predicted = grid_problem_size(30, 20, 6, false, CostStorage::double_precision);
   REQUIRE(predicted.has_value());
   CHECK(predicted->variables == flat.variables);
   CHECK(predicted->edges == flat.edges);
-  CHECK_FALSE(grid_problem_size(std::size_t{1} << 40, std::size_t{1} << 30, 256, true));
+  CHECK_FALSE(grid_problem_size(std::size_t{1} << 40, std::size_t{1} << 30, 256, true,
+                                CostStorage::double_precision));
+  // Float unaries: the energy's own bytes as predicted; the reduced energy is still double.
+  const std::vector<double> table(36, 1.0);
+  const PairwiseEnergy single = PairwiseEnergy::with_float_unaries(
+      600, 6, std::vector<float>(3600, 0.5f), {PairwiseTerm::table(6, table)},
+      grid_edges({30, 20}, Connectivity::four, [](VariableIndex, VariableIndex) { return 1.0; }));
+  const auto single_predicted = grid_problem_size(30, 20, 6, true, CostStorage::single_precision);
+  REQUIRE(single_predicted.has_value());
+  CHECK(single_predicted->energy_bytes + sizeof(PairwiseTerm) >= energy_memory_bytes(single));
+  CHECK(grid_problem_size(30, 20, 6, true, CostStorage::double_precision)->energy_bytes ==
+        single_predicted->energy_bytes + 3600 * sizeof(float));
+  CHECK(energy_memory_bytes(single) + 3600 * sizeof(float) ==
+        energy_memory_bytes(
+            PairwiseEnergy(600, 6, std::vector<double>(3600, 0.5), {PairwiseTerm::table(6, table)},
+                           std::vector<Edge>(single.edges().begin(), single.edges().end()))));
+  CHECK(*run_memory_floor(choice, problem_size(single, true)) ==
+        *run_memory_floor(choice, problem_size(single, false)) + reduced_bound);
 
   const MemoryBudget budget{*flat_floor + 12345, "a test"};
   CHECK(fit_to_budget(choice, flat, budget, "the run").graph_memory_limit == 12345);
@@ -73,12 +93,15 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
 
 TEST_CASE("a grid run needs the larger of its preparation and its floor", "[memory]") {
   SolverChoice choice;
-  const auto floor = run_memory_floor(choice, *grid_problem_size(30, 20, 6, true));
+  const auto floor =
+      run_memory_floor(choice, *grid_problem_size(30, 20, 6, true, CostStorage::double_precision));
   REQUIRE(floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, 0) == floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, *floor + 1) == *floor + 1);
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, 0) == floor);
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, *floor + 1) ==
+        *floor + 1);
   // An overflowing preparation or grid is "beyond std::size_t", never a small number.
-  CHECK_FALSE(grid_run_memory_need(choice, 30, 20, 6, true, std::nullopt));
   CHECK_FALSE(
-      grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256, true, 0));
+      grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, std::nullopt));
+  CHECK_FALSE(grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256, true,
+                                   CostStorage::single_precision, 0));
 }

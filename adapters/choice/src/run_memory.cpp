@@ -49,10 +49,12 @@ ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels) {
 }
 
 std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height, int labels,
-                                             bool coarse_levels) {
+                                             bool coarse_levels, CostStorage storage) {
   const auto variables = checked_product({width, height});
   const auto l = static_cast<std::size_t>(std::max(labels, 0));
-  const auto unaries = variables ? checked_product({*variables, l, sizeof(double)}) : variables;
+  const std::size_t cost_bytes =
+      storage == CostStorage::single_precision ? sizeof(float) : sizeof(double);
+  const auto unaries = variables ? checked_product({*variables, l, cost_bytes}) : variables;
   const auto edge_bytes = variables ? checked_product({*variables, 2, sizeof(Edge)}) : variables;
   const auto table = checked_product({l, l, sizeof(double)});
   if (!unaries || !edge_bytes || !table || *unaries > static_cast<std::size_t>(-1) / 2)
@@ -64,10 +66,16 @@ std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t heig
 std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const ProblemSize& size) {
   const auto per_variable = checked_product({size.variables, kPerVariableBytes});
   const auto solver = solver_bytes(choice, size);
-  if (!per_variable || !solver) return std::nullopt;
+  const auto reduced_unaries = checked_product(
+      {size.variables, static_cast<std::size_t>(std::max(size.labels, 0)), sizeof(double)});
+  const auto reduced_edges = checked_product({size.edges, sizeof(Edge)});
+  if (!per_variable || !solver || !reduced_unaries || !reduced_edges ||
+      *reduced_unaries > static_cast<std::size_t>(-1) - *reduced_edges)
+    return std::nullopt;
+  const std::size_t reduced = *reduced_unaries + *reduced_edges;
   std::size_t total = kProcessBytes;
   for (const std::size_t part :
-       {size.energy_bytes, size.coarse_levels ? size.energy_bytes : 0, *per_variable, *solver}) {
+       {size.energy_bytes, size.coarse_levels ? reduced : 0, *per_variable, *solver}) {
     if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
     total += part;
   }
@@ -76,8 +84,10 @@ std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const Pr
 
 std::optional<std::size_t> grid_run_memory_need(const SolverChoice& choice, std::size_t width,
                                                 std::size_t height, int labels, bool coarse_levels,
+                                                CostStorage storage,
                                                 std::optional<std::size_t> preparation) {
-  const std::optional<ProblemSize> size = grid_problem_size(width, height, labels, coarse_levels);
+  const std::optional<ProblemSize> size =
+      grid_problem_size(width, height, labels, coarse_levels, storage);
   const std::optional<std::size_t> floor = size ? run_memory_floor(choice, *size) : std::nullopt;
   if (!floor || !preparation) return std::nullopt;
   return std::max(*floor, *preparation);

@@ -188,7 +188,7 @@ LiftingView lifting_view(const CoopEnergy& energy) {
   LiftingView view;
   view.num_variables = energy.num_variables();
   view.num_labels = energy.num_labels();
-  view.unaries = energy.unaries();
+  view.unaries = UnaryCosts(energy.unaries(), energy.num_labels());
   std::map<std::vector<std::uint32_t>, std::uint32_t> colours;
   std::vector<std::uint32_t> signature;
   view.factors.reserve(energy.edges().size());

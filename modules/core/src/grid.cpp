@@ -67,15 +67,21 @@ PairwiseEnergy make_grid_energy(GridShape shape, Connectivity connectivity, int 
                         std::move(edges));
 }
 
+std::vector<Edge> grid_edges(GridShape shape, Connectivity connectivity,
+                             const std::function<double(VariableIndex, VariableIndex)>& weight) {
+  const auto pairs = grid_neighbour_pairs(shape, connectivity);
+  std::vector<Edge> edges(pairs.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    edges[i] = Edge{pairs[i].first, pairs[i].second, weight(pairs[i].first, pairs[i].second), 0};
+  }
+  return edges;
+}
+
 PairwiseEnergy make_grid_energy(GridShape shape, Connectivity connectivity, int num_labels,
                                 std::vector<double> unaries, PairwiseTerm term,
                                 const std::function<double(VariableIndex, VariableIndex)>& weight) {
-  const auto pairs = grid_neighbour_pairs(shape, connectivity);
-  std::vector<double> weights(pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    weights[i] = weight(pairs[i].first, pairs[i].second);
-  return make_grid_energy(shape, connectivity, num_labels, std::move(unaries), std::move(term),
-                          weights);
+  return PairwiseEnergy(shape.size(), num_labels, std::move(unaries), {std::move(term)},
+                        grid_edges(shape, connectivity, weight));
 }
 
 }  // namespace c2f

@@ -59,8 +59,7 @@ MemoryBudget memory_budget_of_gib(double gib, const std::string& origin) {
 }
 
 std::size_t energy_memory_bytes(const PairwiseEnergy& energy) {
-  std::size_t bytes =
-      energy.unaries().size() * sizeof(double) + energy.edges().size() * sizeof(Edge);
+  std::size_t bytes = energy.unaries().bytes() + energy.edges().size() * sizeof(Edge);
   for (const PairwiseTerm& term : energy.terms())
     bytes += sizeof(PairwiseTerm) + term.table_costs().size() * sizeof(double);
   return bytes;

@@ -15,6 +15,30 @@ PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
       unaries_(std::move(unaries)),
       terms_(std::move(terms)),
       edges_(std::move(edges)) {
+  validate();
+}
+
+PairwiseEnergy::PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_labels,
+                               std::vector<float> unaries, std::vector<PairwiseTerm> terms,
+                               std::vector<Edge> edges)
+    : num_variables_(num_variables),
+      num_labels_(num_labels),
+      float_unaries_(std::move(unaries)),
+      single_precision_(true),
+      terms_(std::move(terms)),
+      edges_(std::move(edges)) {
+  validate();
+}
+
+PairwiseEnergy PairwiseEnergy::with_float_unaries(std::size_t num_variables, int num_labels,
+                                                  std::vector<float> unaries,
+                                                  std::vector<PairwiseTerm> terms,
+                                                  std::vector<Edge> edges) {
+  return {FloatUnaries{},     num_variables,    num_labels,
+          std::move(unaries), std::move(terms), std::move(edges)};
+}
+
+void PairwiseEnergy::validate() const {
   if (num_labels_ < 1) {
     throw std::invalid_argument("PairwiseEnergy: num_labels must be >= 1, got " +
                                 std::to_string(num_labels_));
@@ -24,19 +48,22 @@ PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
                                 " does not fit a 32-bit variable index");
   }
   const std::size_t expected = num_variables_ * static_cast<std::size_t>(num_labels_);
-  if (unaries_.size() != expected) {
+  const UnaryCosts costs = unaries();
+  if (costs.size() != expected) {
     throw std::invalid_argument(
-        "PairwiseEnergy: unaries has " + std::to_string(unaries_.size()) +
+        "PairwiseEnergy: unaries has " + std::to_string(costs.size()) +
         " entries, expected num_variables * num_labels = " + std::to_string(expected));
   }
-  for (std::size_t i = 0; i < unaries_.size(); ++i) {
-    if (!std::isfinite(unaries_[i])) {
-      throw std::invalid_argument("PairwiseEnergy: unaries: cost of label " +
-                                  std::to_string(i % num_labels_) + " at variable " +
-                                  std::to_string(i / num_labels_) + " is not finite (" +
-                                  std::to_string(unaries_[i]) + ")");
+  costs.visit([&](auto stored) {
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      if (!std::isfinite(stored[i])) {
+        throw std::invalid_argument("PairwiseEnergy: unaries: cost of label " +
+                                    std::to_string(i % num_labels_) + " at variable " +
+                                    std::to_string(i / num_labels_) + " is not finite (" +
+                                    std::to_string(stored[i]) + ")");
+      }
     }
-  }
+  });
   for (std::size_t t = 0; t < terms_.size(); ++t) {
     terms_[t].validate_for(num_labels_, "PairwiseEnergy: terms[" + std::to_string(t) + "]");
   }

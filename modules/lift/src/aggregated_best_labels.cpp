@@ -17,11 +17,13 @@ void row_window_sums(const LiftingView& view, GridShape shape, std::size_t y, st
                      std::vector<double>& prefix, std::vector<double>& out) {
   const std::size_t w = shape.width;
   const auto L = static_cast<std::size_t>(view.num_labels);
-  const double* row = view.unaries.data() + y * w * L;
   prefix.assign((w + 1) * L, 0.0);
-  for (std::size_t x = 0; x < w; ++x)
-    for (std::size_t l = 0; l < L; ++l)
-      prefix[(x + 1) * L + l] = prefix[x * L + l] + row[x * L + l];
+  view.unaries.visit([&](auto costs) {
+    const auto row = costs.subspan(y * w * L, w * L);
+    for (std::size_t x = 0; x < w; ++x)
+      for (std::size_t l = 0; l < L; ++l)
+        prefix[(x + 1) * L + l] = prefix[x * L + l] + static_cast<double>(row[x * L + l]);
+  });
   out.resize(w * L);
   for (std::size_t x = 0; x < w; ++x) {
     const std::size_t first = x >= radius ? x - radius : 0;

@@ -30,7 +30,7 @@ bool ranks_before(double cost_a, Label a, double cost_b, Label b) {
 
 }  // namespace
 
-void lowest_cost_labels(std::span<const double> row, std::size_t count, std::span<Label> out) {
+void lowest_cost_labels(UnaryRow row, std::size_t count, std::span<Label> out) {
   std::vector<Label> order(row.size());
   for (std::size_t l = 0; l < order.size(); ++l) order[l] = static_cast<Label>(l);
   std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count), order.end(),
@@ -87,7 +87,7 @@ ColourPassing::ColourPassing(const LiftingView& view, int labels)
   SignatureColours unary_colours(n / 4 + 16);
   std::u32string signature;
   for (std::size_t v = 0; v < n; ++v) {
-    const auto row = view.unary_row(v);
+    const UnaryRow row = view.unaries.row(v);
     lowest_cost_labels(row, count, top);
     signature.assign(top.begin(), top.end());
     unary_colour_[v] = unary_colours.colour_of(signature);
@@ -153,7 +153,6 @@ void ColourPassing::increase_labels() {
   }
   const std::size_t n = variable_colour_.size();
   const int num_labels = num_labels_;
-  const auto row_length = static_cast<std::size_t>(num_labels_);
   SignatureColours variable_colours(n / 4 + 16);
   SignatureColours unary_colours(n / 4 + 16);
   std::u32string signature;
@@ -162,7 +161,7 @@ void ColourPassing::increase_labels() {
     Label next = -1;
     double next_cost = 0.0;
     for (Label l = 0; l < num_labels; ++l) {
-      const double cost = unaries_[v * row_length + static_cast<std::size_t>(l)];
+      const double cost = unaries_(v, l);
       if (ranks_before(last_cost_[v], last_label_[v], cost, l) &&
           (next < 0 || ranks_before(cost, l, next_cost, next))) {
         next = l;

@@ -39,7 +39,7 @@ DensePartition local_grouping(const PairwiseEnergy& energy, GridShape shape, int
   std::vector<std::int64_t> group(n);
   std::u32string key;
   for (std::size_t v = 0; v < n; ++v) {
-    lowest_cost_labels(energy.unary_row(v), top.size(), top);
+    lowest_cost_labels(energy.unaries().row(v), top.size(), top);
     const std::size_t x = v % w, y = v / w;
     const auto owned = static_cast<char32_t>((x + 1 < w) + (y + 1 < shape.height));
     key.assign(top.begin(), top.end());

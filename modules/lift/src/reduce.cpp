@@ -35,11 +35,13 @@ PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partit
 
   // Unaries: sum of member rows.
   std::vector<double> unaries(num_groups * L, 0.0);
-  for (std::size_t v = 0; v < energy.num_variables(); ++v) {
-    const auto row = energy.unary_row(v);
-    double* target = unaries.data() + static_cast<std::size_t>(partition.group_of(v)) * L;
-    for (std::size_t l = 0; l < L; ++l) target[l] += row[l];
-  }
+  energy.unaries().visit([&](auto costs) {
+    for (std::size_t v = 0; v < energy.num_variables(); ++v) {
+      const auto row = costs.subspan(v * L, L);
+      double* target = unaries.data() + static_cast<std::size_t>(partition.group_of(v)) * L;
+      for (std::size_t l = 0; l < L; ++l) target[l] += static_cast<double>(row[l]);
+    }
+  });
 
   std::vector<char> term_symmetric(terms.size());
   std::vector<char> term_diagonal(terms.size());

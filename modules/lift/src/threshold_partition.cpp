@@ -26,11 +26,13 @@ DensePartition threshold_partition(const LiftingView& energy, GridShape shape, d
   const auto L = static_cast<std::size_t>(energy.num_labels);
   detail::DisjointSets sets(shape.size());
   auto within = [&](std::size_t a, std::size_t b) {
-    const double* ra = energy.unaries.data() + a * L;
-    const double* rb = energy.unaries.data() + b * L;
-    double distance = 0.0;
-    for (std::size_t l = 0; l < L && distance <= tau; ++l) distance += std::abs(ra[l] - rb[l]);
-    return distance <= tau;
+    return energy.unaries.visit([&](auto costs) {
+      const auto ra = costs.subspan(a * L, L), rb = costs.subspan(b * L, L);
+      double distance = 0.0;
+      for (std::size_t l = 0; l < L && distance <= tau; ++l)
+        distance += std::abs(static_cast<double>(ra[l]) - static_cast<double>(rb[l]));
+      return distance <= tau;
+    });
   };
   for (long y = 0; y < h; ++y) {
     for (long x = 0; x < w; ++x) {

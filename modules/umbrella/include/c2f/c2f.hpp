@@ -35,6 +35,7 @@
 #include "c2f/core/text_input.hpp"
 #include "c2f/core/trace.hpp"
 #include "c2f/core/uai.hpp"
+#include "c2f/core/unary_costs.hpp"
 #include "c2f/core/visit_order.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/driver/options.hpp"

@@ -12,7 +12,7 @@ CostVolume::CostVolume(std::size_t width, std::size_t height, int labels, double
                                 std::to_string(width) + "x" + std::to_string(height) + " with " +
                                 std::to_string(labels) + " labels");
   }
-  data_.assign(width * height * static_cast<std::size_t>(labels), fill);
+  data_.assign(width * height * static_cast<std::size_t>(labels), static_cast<float>(fill));
 }
 
 }  // namespace c2f::vision

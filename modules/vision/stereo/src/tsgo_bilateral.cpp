@@ -379,7 +379,7 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
   const auto labels = static_cast<std::size_t>(volume.labels());
   const std::size_t blocks = (labels + kLabelBlock - 1) / kLabelBlock;
   const std::size_t threads = std::min<std::size_t>(resolved_threads(options.threads), blocks);
-  const std::span<double> costs = volume.values();
+  const std::span<float> costs = volume.values();
   parallel_for(
       threads,
       [&](std::size_t thread) {
@@ -400,7 +400,7 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
           }
           for (std::size_t p = 0; p < pixels; ++p) {
             for (std::size_t k = 0; k < count; ++k)
-              costs[p * labels + first + k] = slices[k * pixels + p];
+              costs[p * labels + first + k] = static_cast<float>(slices[k * pixels + p]);
           }
         }
       },

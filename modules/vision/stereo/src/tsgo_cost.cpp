@@ -128,7 +128,7 @@ CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
               sum += std::abs(left[p].at<uchar>(static_cast<int>(y), static_cast<int>(x)) -
                               right[p].at<uchar>(static_cast<int>(y), static_cast<int>(x) - d));
             }
-            volume.at(x, y, d) = std::min(static_cast<double>(sum), truncation);
+            volume.at(x, y, d) = static_cast<float>(std::min(static_cast<double>(sum), truncation));
           }
         }
       },
@@ -154,10 +154,10 @@ RobustTransformParameters robust_transform(CostVolume& volume, double threshold,
     for (std::size_t x = 0; x < volume.width(); ++x) {
       double minimum = std::numeric_limits<double>::infinity();
       for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d)
-        minimum = std::min(minimum, volume.at(x, y, d));
+        minimum = std::min(minimum, static_cast<double>(volume.at(x, y, d)));
       sum_minimum += minimum;
       for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
-        sum_excess += volume.at(x, y, d) - minimum;
+        sum_excess += static_cast<double>(volume.at(x, y, d)) - minimum;
         ++valid_cells;
       }
     }
@@ -180,8 +180,11 @@ RobustTransformParameters robust_transform(CostVolume& volume, double threshold,
       [&](std::size_t y) {
         for (std::size_t x = 0; x < volume.width(); ++x) {
           for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
-            double& cost = volume.at(x, y, d);
-            cost = (1.0 + erf_approximation(parameters.slope * (cost - mm) / mm)) / 2.0;
+            float& cost = volume.at(x, y, d);
+            cost = static_cast<float>(
+                (1.0 +
+                 erf_approximation(parameters.slope * (static_cast<double>(cost) - mm) / mm)) /
+                2.0);
           }
         }
       },

@@ -24,27 +24,34 @@ struct ProblemSize {
 /// The sizes of `energy`, solved coarse to fine when coarse_levels.
 [[nodiscard]] ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels);
 
-/// The sizes of a 4-connected width x height grid energy with `labels` labels and one L x L
-/// table term, before it is built. std::nullopt when they overflow.
+/// How a grid energy stores its unary costs (PairwiseEnergy::single_precision).
+enum class CostStorage { double_precision, single_precision };
+
+/// The sizes of a 4-connected width x height grid energy with `labels` labels, its unaries
+/// stored as `storage` says, and one L x L table term, before it is built. std::nullopt when
+/// they overflow.
 [[nodiscard]] std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height,
-                                                           int labels, bool coarse_levels);
+                                                           int labels, bool coarse_levels,
+                                                           CostStorage storage);
 
 /// An upper estimate of the bytes a run of `choice` on a problem of this size takes besides the
 /// solver's optional memory: the process and its images (128 MiB), the energy, one level's
-/// reduced energy (at most as large; only with coarse levels), labelings and partitions (64
+/// reduced energy (at most as many variables and edges, unaries in double; only with coarse
+/// levels), labelings and partitions (64
 /// bytes per variable), and the solver's working memory (graph cuts: the shared plain and QPBO
 /// move graphs, the move's problem and, with near moves, a second solver; belief propagation:
 /// its messages). std::nullopt when the count overflows.
 [[nodiscard]] std::optional<std::size_t> run_memory_floor(const SolverChoice& choice,
                                                           const ProblemSize& size);
 
-/// What a run of `choice` on a 4-connected width x height grid energy with `labels` labels needs
-/// before anything is built: the larger of `preparation` (the peak of building the energy, e.g.
-/// tsgo_memory_estimate) and run_memory_floor of grid_problem_size. std::nullopt when either
-/// overflows (preparation std::nullopt included). Give it to MemoryBudget::require.
+/// What a run of `choice` on a 4-connected width x height grid energy with `labels` labels
+/// (unaries stored as `storage`) needs before anything is built: the larger of `preparation`
+/// (the peak of building the energy, e.g. tsgo_memory_estimate) and run_memory_floor of
+/// grid_problem_size. std::nullopt when either overflows (preparation std::nullopt included).
+/// Give it to MemoryBudget::require.
 [[nodiscard]] std::optional<std::size_t> grid_run_memory_need(
     const SolverChoice& choice, std::size_t width, std::size_t height, int labels,
-    bool coarse_levels, std::optional<std::size_t> preparation);
+    bool coarse_levels, CostStorage storage, std::optional<std::size_t> preparation);
 
 /// `choice` with graph_memory_limit lowered to what `budget` leaves above run_memory_floor (a
 /// smaller limit already in `choice` stays). Throws std::invalid_argument "<what> needs N,

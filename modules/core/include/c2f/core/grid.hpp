@@ -31,6 +31,11 @@ void require_grid_size(std::size_t num_variables, GridShape shape, std::string_v
 std::vector<std::pair<VariableIndex, VariableIndex>> grid_neighbour_pairs(
     GridShape shape, Connectivity connectivity);
 
+/// The edges of a grid energy with one shared term (term index 0), in grid_neighbour_pairs
+/// order, edge (u, v) weighing weight(u, v). Throws as grid_neighbour_pairs.
+std::vector<Edge> grid_edges(GridShape shape, Connectivity connectivity,
+                             const std::function<double(VariableIndex, VariableIndex)>& weight);
+
 /// A grid energy with one shared term; edge i (in grid_neighbour_pairs order) has weight
 /// edge_weights[i]. Throws std::invalid_argument when the sizes do not match.
 PairwiseEnergy make_grid_energy(GridShape shape, Connectivity connectivity, int num_labels,

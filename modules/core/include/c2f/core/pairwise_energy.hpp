@@ -3,11 +3,13 @@
 //
 //   E(x) = sum_v unary(v, x_v) + sum_{edges (u, v, w, t)} w * terms[t].cost(x_u, x_v)
 //
-// Layout is flat: unaries are one row-major array of
-// num_variables * num_labels costs, edges one array. Costs are stored in double, not float:
-// the reduced energy of a partition sums the unaries of whole groups, and reduction must stay
-// exact (Theorem 1) to rounding of double sums so that transfers between levels keep the
-// energy; float sums over thousands of members would not.
+// Layout is flat: unaries are one row-major array of num_variables * num_labels costs, edges
+// one array. The unaries are stored in double or, to halve the largest array, in float; the
+// energy is what the stored costs define. evaluate() and reduce() convert every stored cost to
+// double exactly and sum in double, so a float energy equals the double energy of the same
+// (float-rounded) costs. Reduced energies are always double: the reduced energy of a partition
+// sums the unaries of whole groups, and reduction must stay exact (Theorem 1) to rounding of
+// double sums so that transfers between levels keep the energy.
 
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +18,7 @@
 
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_term.hpp"
+#include "c2f/core/unary_costs.hpp"
 
 namespace c2f {
 
@@ -38,19 +41,27 @@ class PairwiseEnergy {
   /// index < terms.size(). num_variables must fit VariableIndex.
   PairwiseEnergy(std::size_t num_variables, int num_labels, std::vector<double> unaries,
                  std::vector<PairwiseTerm> terms, std::vector<Edge> edges);
+  /// As the constructor, with the unaries stored in float (single_precision()): half the
+  /// memory of the largest array; the energy is what the float costs define.
+  [[nodiscard]] static PairwiseEnergy with_float_unaries(std::size_t num_variables, int num_labels,
+                                                         std::vector<float> unaries,
+                                                         std::vector<PairwiseTerm> terms,
+                                                         std::vector<Edge> edges);
 
   [[nodiscard]] std::size_t num_variables() const noexcept { return num_variables_; }
   [[nodiscard]] int num_labels() const noexcept { return num_labels_; }
 
   [[nodiscard]] double unary(std::size_t v, Label l) const noexcept {
-    return unaries_[v * static_cast<std::size_t>(num_labels_) + static_cast<std::size_t>(l)];
+    const std::size_t i = v * static_cast<std::size_t>(num_labels_) + static_cast<std::size_t>(l);
+    return single_precision_ ? static_cast<double>(float_unaries_[i]) : unaries_[i];
   }
-  /// The num_labels unary costs of variable v.
-  [[nodiscard]] std::span<const double> unary_row(std::size_t v) const noexcept {
-    return {unaries_.data() + v * static_cast<std::size_t>(num_labels_),
-            static_cast<std::size_t>(num_labels_)};
+  /// The unary costs as stored (row(v): the num_labels costs of variable v).
+  [[nodiscard]] UnaryCosts unaries() const noexcept {
+    if (single_precision_) return {std::span<const float>(float_unaries_), num_labels_};
+    return {std::span<const double>(unaries_), num_labels_};
   }
-  [[nodiscard]] std::span<const double> unaries() const noexcept { return unaries_; }
+  /// True when the unaries are stored in float.
+  [[nodiscard]] bool single_precision() const noexcept { return single_precision_; }
   [[nodiscard]] std::span<const PairwiseTerm> terms() const noexcept { return terms_; }
   [[nodiscard]] std::span<const Edge> edges() const noexcept { return edges_; }
 
@@ -67,9 +78,17 @@ class PairwiseEnergy {
  private:
   std::size_t num_variables_;
   int num_labels_;
-  std::vector<double> unaries_;
+  std::vector<double> unaries_;       ///< empty when single_precision_
+  std::vector<float> float_unaries_;  ///< empty unless single_precision_
+  bool single_precision_ = false;
   std::vector<PairwiseTerm> terms_;
   std::vector<Edge> edges_;
+
+  struct FloatUnaries {};
+  PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_labels,
+                 std::vector<float> unaries, std::vector<PairwiseTerm> terms,
+                 std::vector<Edge> edges);
+  void validate() const;
 };
 
 }  // namespace c2f

@@ -29,7 +29,7 @@ namespace c2f {
 
 /// The `count` lowest-cost labels of `row` in increasing cost order, ties broken by the lower
 /// label. Requires 1 <= count <= row.size().
-void lowest_cost_labels(std::span<const double> row, std::size_t count, std::span<Label> out);
+void lowest_cost_labels(UnaryRow row, std::size_t count, std::span<Label> out);
 
 class ColourPassing {
  public:
@@ -54,7 +54,7 @@ class ColourPassing {
   [[nodiscard]] DensePartition partition() const;
 
  private:
-  std::span<const double> unaries_;
+  UnaryCosts unaries_;
   int num_labels_;
   std::vector<ColourFactor> factors_;
   int labels_;

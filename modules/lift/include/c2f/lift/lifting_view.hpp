@@ -10,6 +10,7 @@
 
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
+#include "c2f/core/unary_costs.hpp"
 
 namespace c2f {
 
@@ -24,16 +25,11 @@ struct ColourFactor {
 struct LiftingView {
   std::size_t num_variables = 0;
   int num_labels = 0;
-  std::span<const double> unaries;  ///< row-major num_variables x num_labels, the energy's own
+  UnaryCosts unaries;  ///< row-major num_variables x num_labels, the energy's own
   std::vector<ColourFactor> factors;
   /// The energy itself when it is a PairwiseEnergy (the reference's local grouping reads its
   /// grid edges); null for other kinds.
   const PairwiseEnergy* pairwise = nullptr;
-
-  [[nodiscard]] std::span<const double> unary_row(std::size_t v) const noexcept {
-    const auto l = static_cast<std::size_t>(num_labels);
-    return unaries.subspan(v * l, l);
-  }
 };
 
 /// A pairwise energy's view: one factor per edge, coloured by its (term, weight) and symmetric
