@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
+#include <latch>
 #include <limits>
 #include <numeric>
 #include <span>
@@ -148,60 +150,81 @@ NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, b
   return flattened(std::move(unions), threads);
 }
 
-/// For every entry of `from` (node n, cluster c) and each of the 5 taps j (the node at offset
-/// j - 2 along the axis): the slot of c in that node's `to` list, or kNone off the grid.
+/// No slot: the list has no such entry (or the node is off the grid).
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-std::vector<std::array<std::uint32_t, 5>> tap_targets(const NodeLists& from, const NodeLists& to,
+/// The slot of cluster c in node n's list, or kNone when the list does not hold c.
+std::uint32_t find_slot(const NodeLists& lists, std::size_t n, std::size_t c) {
+  const auto first = lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]);
+  const auto last = lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]);
+  const auto found = std::lower_bound(first, last, c);
+  return found != last && *found == c ? static_cast<std::uint32_t>(found - lists.ids.begin())
+                                      : kNone;
+}
+
+/// For every entry of `to` (node n, cluster c) and each of the 5 taps j: the slot of c in the
+/// `from` list of the node at offset j - 2 along the axis, or kNone when that node is off the
+/// grid or its list does not hold c. Both lists are sorted: one merge per node and tap.
+std::vector<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to, const NodeLists& from,
                                                       std::size_t gw, std::size_t gh, bool along_y,
                                                       int threads) {
-  std::vector<std::array<std::uint32_t, 5>> targets(from.size());
+  std::vector<std::array<std::uint32_t, 5>> sources(to.size());
   parallel_for(
       gh,
       [&](std::size_t gy) {
         for (std::size_t gx = 0; gx < gw; ++gx) {
           const std::size_t n = gy * gw + gx;
-          for (std::size_t e = from.offset[n]; e < from.offset[n + 1]; ++e) {
-            for (int j = 0; j < 5; ++j) {
-              const long tx = static_cast<long>(gx) + (along_y ? 0 : j - 2);
-              const long ty = static_cast<long>(gy) + (along_y ? j - 2 : 0);
-              targets[e][static_cast<std::size_t>(j)] =
-                  tx < 0 || ty < 0 || tx >= static_cast<long>(gw) || ty >= static_cast<long>(gh)
-                      ? kNone
-                      : static_cast<std::uint32_t>(to.slot(
-                            static_cast<std::size_t>(ty) * gw + static_cast<std::size_t>(tx),
-                            from.ids[e]));
+          for (std::size_t j = 0; j < 5; ++j) {
+            const long sx = static_cast<long>(gx) + (along_y ? 0 : static_cast<long>(j) - 2);
+            const long sy = static_cast<long>(gy) + (along_y ? static_cast<long>(j) - 2 : 0);
+            const bool off_grid =
+                sx < 0 || sy < 0 || sx >= static_cast<long>(gw) || sy >= static_cast<long>(gh);
+            const std::size_t m =
+                off_grid ? 0 : static_cast<std::size_t>(sy) * gw + static_cast<std::size_t>(sx);
+            std::size_t k = off_grid ? 0 : from.offset[m];
+            const std::size_t end = off_grid ? 0 : from.offset[m + 1];
+            for (std::size_t e = to.offset[n]; e < to.offset[n + 1]; ++e) {
+              while (k < end && from.ids[k] < to.ids[e]) ++k;
+              sources[e][j] =
+                  k < end && from.ids[k] == to.ids[e] ? static_cast<std::uint32_t>(k) : kNone;
             }
           }
         }
       },
       threads);
-  return targets;
+  return sources;
 }
 
-/// One thread's memory for smoothing slices: the grid's entries that can be non-zero after
-/// each pass (splatted, blurred along y, blurred along x, mixed), stored compactly, and a
-/// buffer of one value per cluster (zero between uses).
+/// Slices smoothed together: every grid entry holds one value per lane (label), side by side,
+/// so that each scattered access of a pass serves all of them.
+constexpr std::size_t kLanes = 8;
+
+/// One thread's memory for smoothing slices: two buffers of grid entries (kLanes values each)
+/// that the passes alternate between: `first` holds the splatted entries, then the entries
+/// blurred along x; `second` those blurred along y, then the mixed ones.
 struct Workspace {
-  std::vector<double> splatted, blurred_y, blurred, mixed, node;
+  std::vector<double> first, second;
 };
 
 /// The cross-bilateral smoothing of image-sized slices, with everything that does not depend on
-/// the slice computed once. The grid has one entry per node and cluster, but an entry can only
-/// be non-zero after a pass when a pixel of that cluster splats near the node: per node, the
-/// clusters splatted there, then their unions over the blur windows along y and along x. Only
-/// those entries are stored and computed. Each is the sum of the same terms, in the same order,
-/// as the dense grid's (the terms left out are products with exact zeros, and every value is
-/// >= 0, so leaving them out changes no bit). The lists and slots are computed on `threads`
-/// threads, each node's or pixel's by one task: the same for every count.
+/// the slice computed once. The grid has one entry per node and cluster; only the entries the
+/// result depends on are stored and computed, each pulling its terms:
+/// - splatted: per node, the clusters of the pixels that splat there;
+/// - blurred along x (`needed_x`): per node, the range neighbours of its splatted clusters
+///   whose blurred entry can be non-zero (a splatted entry within 2 nodes along x and y);
+/// - blurred along y (`needed_y`): per node, the clusters some needed_x entry within 2 nodes
+///   along x reads, where a splatted entry within 2 nodes along y can make them non-zero.
+/// Each entry is the sum of the same terms, in the same order, as the dense grid's (the terms
+/// left out are products with exact zeros, and every value is >= 0, so leaving them out changes
+/// no bit). The lists and slots are computed on `threads` threads, each node's or pixel's by one
+/// task: the same for every count.
 class SliceSmoother {
  public:
-  SliceSmoother(const ColourClusters& clusters, std::vector<std::vector<RangeNeighbour>> neighbours,
-                std::size_t width, std::size_t height, int cell, int threads)
-      : neighbours_(std::move(neighbours)),
-        gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
-        gh_((height - 1) / static_cast<std::size_t>(cell) + 2),
-        clusters_(clusters.means.size()) {
+  SliceSmoother(const ColourClusters& clusters,
+                const std::vector<std::vector<RangeNeighbour>>& neighbours, std::size_t width,
+                std::size_t height, int cell, int threads)
+      : gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
+        gh_((height - 1) / static_cast<std::size_t>(cell) + 2) {
     std::vector<Splat> splats(width * height);
     const auto size = static_cast<double>(cell);
     for (std::size_t y = 0; y < height; ++y) {
@@ -222,10 +245,12 @@ class SliceSmoother {
         lists[n].push_back(static_cast<std::size_t>(clusters.cluster_of[p]));
     }
     splatted_ = flattened(std::move(lists), threads);
-    blurred_y_ = window_union(splatted_, gw_, gh_, true, threads);
-    blurred_ = window_union(blurred_y_, gw_, gh_, false, threads);
-    y_targets_ = tap_targets(splatted_, blurred_y_, gw_, gh_, true, threads);
-    x_targets_ = tap_targets(blurred_y_, blurred_, gw_, gh_, false, threads);
+    const NodeLists blurred_y = window_union(splatted_, gw_, gh_, true, threads);
+    needed_x_ = needed_blurred(neighbours, blurred_y, threads);
+    needed_y_ = needed_blurred_y(blurred_y, threads);
+    y_sources_ = tap_sources(needed_y_, splatted_, gw_, gh_, true, threads);
+    x_sources_ = tap_sources(needed_x_, needed_y_, gw_, gh_, false, threads);
+    mix_terms(neighbours, threads);
     pixels_.resize(splats.size());
     parallel_for(
         height,
@@ -245,44 +270,50 @@ class SliceSmoother {
   }
 
   [[nodiscard]] Workspace workspace() const {
-    return {std::vector<double>(splatted_.size()), std::vector<double>(blurred_y_.size()),
-            std::vector<double>(blurred_.size()), std::vector<double>(splatted_.size()),
-            std::vector<double>(clusters_, 0.0)};
+    return {std::vector<double>(std::max(splatted_.size(), needed_x_.size()) * kLanes),
+            std::vector<double>(std::max(needed_y_.size(), splatted_.size()) * kLanes)};
   }
 
-  /// Leaves the smoothed slice in `space` (read() reads it).
-  void smooth(std::span<const double> slice, Workspace& space) const {
-    // Splat: each pixel's value into its cluster at the 4 surrounding nodes, pixels in order.
-    std::fill(space.splatted.begin(), space.splatted.end(), 0.0);
+  /// Smooths `count` <= kLanes slices at once, slice k's value at pixel p being
+  /// values[p * stride + k], and leaves them in `space` (read() reads them). Each lane's
+  /// arithmetic is the one-slice filter's, term for term and in the same order; lanes from
+  /// `count` on hold zeros.
+  void smooth(const float* values, std::size_t stride, std::size_t count, Workspace& space) const {
+    // Splat: each pixel's values into its cluster at the 4 surrounding nodes, pixels in order.
+    const std::span<double> splatted(space.first.data(), splatted_.size() * kLanes);
+    std::fill(splatted.begin(), splatted.end(), 0.0);
+    std::array<double, kLanes> value{};
     for (std::size_t p = 0; p < pixels_.size(); ++p) {
+      for (std::size_t k = 0; k < count; ++k) value[k] = values[p * stride + k];
       const PixelSplat& pixel = pixels_[p];
-      for (std::size_t k = 0; k < 4; ++k)
-        space.splatted[pixel.slot[k]] += pixel.weight[k] * slice[p];
-    }
-    blur_pass(space.splatted, splatted_, y_targets_, gw_, space.blurred_y);
-    blur_pass(space.blurred_y, blurred_y_, x_targets_, 1, space.blurred);
-    // Mix: each splatted entry gathers its range neighbours among the node's blurred entries.
-    for (std::size_t n = 0; n < gw_ * gh_; ++n) {
-      for (std::size_t e = blurred_.offset[n]; e < blurred_.offset[n + 1]; ++e)
-        space.node[blurred_.ids[e]] = space.blurred[e];
-      for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
-        double sum = 0.0;
-        for (const RangeNeighbour& other : neighbours_[splatted_.ids[e]])
-          sum += other.weight * space.node[other.cluster];
-        space.mixed[e] = sum;
+      for (std::size_t c = 0; c < 4; ++c) {
+        double* target = splatted.data() + pixel.slot[c] * kLanes;
+        for (std::size_t k = 0; k < kLanes; ++k) target[k] += pixel.weight[c] * value[k];
       }
-      for (std::size_t e = blurred_.offset[n]; e < blurred_.offset[n + 1]; ++e)
-        space.node[blurred_.ids[e]] = 0.0;
+    }
+    blur_pass(space.first, y_sources_, space.second);  // blurred along y
+    blur_pass(space.second, x_sources_, space.first);  // then along x
+    // Mix: each splatted entry gathers its range neighbours' blurred entries at its node.
+    for (std::size_t e = 0; e < splatted_.size(); ++e) {
+      std::array<double, kLanes> sum{};
+      for (std::size_t t = mix_offset_[e]; t < mix_offset_[e + 1]; ++t) {
+        const double* source = space.first.data() + mix_[t].slot * kLanes;
+        for (std::size_t k = 0; k < kLanes; ++k) sum[k] += mix_[t].weight * source[k];
+      }
+      std::copy(sum.begin(), sum.end(), space.second.data() + e * kLanes);
     }
   }
 
-  /// Pixel p's value of the smoothed slice: its cluster's bilinear interpolation.
-  [[nodiscard]] double read(const Workspace& space, std::size_t p) const {
+  /// Pixel p's values of the smoothed slices (lane k: slice k): its cluster's bilinear
+  /// interpolation.
+  void read(const Workspace& space, std::size_t p, std::array<double, kLanes>& out) const {
     const PixelSplat& pixel = pixels_[p];
-    return pixel.weight[0] * space.mixed[pixel.slot[0]] +
-           pixel.weight[1] * space.mixed[pixel.slot[1]] +
-           pixel.weight[2] * space.mixed[pixel.slot[2]] +
-           pixel.weight[3] * space.mixed[pixel.slot[3]];
+    const double* corner[4];
+    for (std::size_t c = 0; c < 4; ++c) corner[c] = space.second.data() + pixel.slot[c] * kLanes;
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      out[k] = pixel.weight[0] * corner[0][k] + pixel.weight[1] * corner[1][k] +
+               pixel.weight[2] * corner[2][k] + pixel.weight[3] * corner[3][k];
+    }
   }
 
  private:
@@ -293,42 +324,108 @@ class SliceSmoother {
     std::array<double, 4> weight;
   };
 
-  /// One blur pass with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2] along an axis (`stride` 1: x, gw:
-  /// y): out[node] = sum over t = -2..2 of tap[t] * in[node + t * stride], the terms of each
-  /// entry added in the order of t.
-  void blur_pass(const std::vector<double>& in, const NodeLists& from,
-                 const std::vector<std::array<std::uint32_t, 5>>& targets, std::size_t stride,
-                 std::vector<double>& out) const {
+  /// A term of a mixed entry: a blurred entry (its slot in needed_x) and its range weight.
+  struct MixTerm {
+    std::uint32_t slot;
+    double weight;
+  };
+
+  /// Per node, the range neighbours of its splatted clusters that are in the blur window along
+  /// x of `blurred_y` (else their blurred entry there is an exact zero).
+  [[nodiscard]] NodeLists needed_blurred(const std::vector<std::vector<RangeNeighbour>>& neighbours,
+                                         const NodeLists& blurred_y, int threads) const {
+    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    parallel_for(
+        gh_,
+        [&](std::size_t gy) {
+          for (std::size_t gx = 0; gx < gw_; ++gx) {
+            const std::size_t n = gy * gw_ + gx;
+            for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
+              for (const RangeNeighbour& other : neighbours[splatted_.ids[e]]) {
+                for (std::size_t tx = gx >= 2 ? gx - 2 : 0; tx <= std::min(gx + 2, gw_ - 1); ++tx) {
+                  if (find_slot(blurred_y, gy * gw_ + tx, other.cluster) != kNone) {
+                    lists[n].push_back(other.cluster);
+                    break;
+                  }
+                }
+              }
+            }
+          }
+        },
+        threads);
+    return flattened(std::move(lists), threads);
+  }
+
+  /// Per node, the clusters of its `blurred_y` list that a needed_x entry within 2 nodes along
+  /// x reads.
+  [[nodiscard]] NodeLists needed_blurred_y(const NodeLists& blurred_y, int threads) const {
+    const NodeLists read = window_union(needed_x_, gw_, gh_, false, threads);
+    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    parallel_for(
+        gw_ * gh_,
+        [&](std::size_t n) {
+          const auto list = [n](const NodeLists& l) {
+            return std::span<const std::size_t>(l.ids.data() + l.offset[n],
+                                                l.offset[n + 1] - l.offset[n]);
+          };
+          const auto a = list(read), b = list(blurred_y);
+          std::set_intersection(a.begin(), a.end(), b.begin(), b.end(),
+                                std::back_inserter(lists[n]));
+        },
+        threads);
+    return flattened(std::move(lists), threads);
+  }
+
+  /// The terms of every splatted entry's mix: its cluster's range neighbours (in their order)
+  /// that have a needed_x entry at its node.
+  void mix_terms(const std::vector<std::vector<RangeNeighbour>>& neighbours, int threads) {
+    std::vector<std::vector<MixTerm>> per_node(gw_ * gh_);
+    std::vector<std::uint32_t> counts(splatted_.size());
+    parallel_for(
+        gw_ * gh_,
+        [&](std::size_t n) {
+          for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
+            for (const RangeNeighbour& other : neighbours[splatted_.ids[e]]) {
+              const std::uint32_t slot = find_slot(needed_x_, n, other.cluster);
+              if (slot == kNone) continue;
+              per_node[n].push_back({slot, other.weight});
+              ++counts[e];
+            }
+          }
+        },
+        threads);
+    mix_offset_.assign(splatted_.size() + 1, 0);
+    for (std::size_t e = 0; e < splatted_.size(); ++e)
+      mix_offset_[e + 1] = mix_offset_[e] + counts[e];
+    mix_.reserve(mix_offset_.back());
+    for (const auto& terms : per_node) mix_.insert(mix_.end(), terms.begin(), terms.end());
+  }
+
+  /// One blur pass with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2] along an axis: out[i] = the sum
+  /// over j = 0..4 of tap[j] * in[sources[i][j]], the present terms added in the order of j.
+  static void blur_pass(const std::vector<double>& in,
+                        const std::vector<std::array<std::uint32_t, 5>>& sources,
+                        std::vector<double>& out) {
     static const double taps[5] = {std::exp(-2.0), std::exp(-0.5), 1.0, std::exp(-0.5),
                                    std::exp(-2.0)};
-    std::fill(out.begin(), out.end(), 0.0);
-    // Output node n takes source node n + t * stride for t = -2..2 in turn; the source's
-    // entry lands in n's list at the target of tap j = 2 - t (n is at offset -t from it).
-    for (std::size_t n = 0; n < gw_ * gh_; ++n) {
-      const std::size_t gx = n % gw_, gy = n / gw_;
-      for (int t = -2; t <= 2; ++t) {
-        const long along = stride == 1 ? static_cast<long>(gx) + t : static_cast<long>(gy) + t;
-        if (along < 0 || along >= static_cast<long>(stride == 1 ? gw_ : gh_)) continue;
-        const std::size_t source = stride == 1 ? gy * gw_ + static_cast<std::size_t>(along)
-                                               : static_cast<std::size_t>(along) * gw_ + gx;
-        const double tap = taps[t + 2];
-        const auto j = static_cast<std::size_t>(2 - t);
-        for (std::size_t e = from.offset[source]; e < from.offset[source + 1]; ++e)
-          out[targets[e][j]] += tap * in[e];
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      std::array<double, kLanes> sum{};
+      for (std::size_t j = 0; j < 5; ++j) {
+        if (sources[i][j] == kNone) continue;
+        const double* source = in.data() + sources[i][j] * kLanes;
+        for (std::size_t k = 0; k < kLanes; ++k) sum[k] += taps[j] * source[k];
       }
+      std::copy(sum.begin(), sum.end(), out.data() + i * kLanes);
     }
   }
 
-  std::vector<std::vector<RangeNeighbour>> neighbours_;
-  std::size_t gw_, gh_, clusters_;
-  NodeLists splatted_, blurred_y_, blurred_;
-  std::vector<std::array<std::uint32_t, 5>> y_targets_, x_targets_;
+  std::size_t gw_, gh_;
+  NodeLists splatted_, needed_x_, needed_y_;
+  std::vector<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
+  std::vector<std::size_t> mix_offset_;
+  std::vector<MixTerm> mix_;
   std::vector<PixelSplat> pixels_;
 };
-
-/// Labels filtered per gather: one pass over the pixel-major volume moves this many labels of
-/// every pixel (a cache line of doubles) into slices, and one pass moves them back.
-constexpr int kLabelBlock = 8;
 
 }  // namespace
 
@@ -366,41 +463,46 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
       },
       options.threads);
   const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
-  const SliceSmoother smoother(clusters, std::move(neighbours), w, h, options.cell,
-                               options.threads);
-  std::vector<double> denominator(pixels);
-  {
-    Workspace space = smoother.workspace();
-    smoother.smooth(std::vector<double>(pixels, 1.0), space);
-    for (std::size_t p = 0; p < pixels; ++p) denominator[p] = smoother.read(space, p);
-  }
-  // Blocks of labels, each filtered by one thread; every label's arithmetic is the same
-  // whatever thread runs it, so the volume does not depend on the thread count.
+  const SliceSmoother smoother(clusters, neighbours, w, h, options.cell, options.threads);
+  // Blocks of kLanes labels, each filtered by one thread straight from the pixel-major volume
+  // (a pixel's labels of a block are side by side); every label's arithmetic is the same
+  // whatever thread and lane run it, so the volume does not depend on the thread count. The
+  // denominators (the smoothed constant slice) are computed by the first thread in its own
+  // workspace while the others smooth their first blocks; each thread waits for them before
+  // its first division.
   const auto labels = static_cast<std::size_t>(volume.labels());
-  const std::size_t blocks = (labels + kLabelBlock - 1) / kLabelBlock;
+  const std::size_t blocks = (labels + kLanes - 1) / kLanes;
   const std::size_t threads = std::min<std::size_t>(resolved_threads(options.threads), blocks);
   const std::span<float> costs = volume.values();
+  std::vector<double> denominator(pixels);
+  std::latch denominator_ready(1);
   parallel_for(
       threads,
       [&](std::size_t thread) {
         Workspace space = smoother.workspace();
-        std::vector<double> slices(kLabelBlock * pixels);
+        std::array<double, kLanes> out{};
+        if (thread == 0) {
+          // Counted down however the block ends, so that no thread waits for ever.
+          struct Ready {
+            std::latch& latch;
+            ~Ready() { latch.count_down(); }
+          } ready{denominator_ready};
+          const std::vector<float> ones(pixels, 1.0f);
+          smoother.smooth(ones.data(), 1, 1, space);
+          for (std::size_t p = 0; p < pixels; ++p) {
+            smoother.read(space, p, out);
+            denominator[p] = out[0];
+          }
+        }
         for (std::size_t block = thread; block < blocks; block += threads) {
-          const std::size_t first = block * kLabelBlock;
-          const std::size_t count = std::min<std::size_t>(kLabelBlock, labels - first);
+          const std::size_t first = block * kLanes;
+          const std::size_t count = std::min<std::size_t>(kLanes, labels - first);
+          smoother.smooth(costs.data() + first, labels, count, space);
+          denominator_ready.wait();
           for (std::size_t p = 0; p < pixels; ++p) {
+            smoother.read(space, p, out);
             for (std::size_t k = 0; k < count; ++k)
-              slices[k * pixels + p] = costs[p * labels + first + k];
-          }
-          for (std::size_t k = 0; k < count; ++k) {
-            const std::span<double> slice(slices.data() + k * pixels, pixels);
-            smoother.smooth(slice, space);
-            for (std::size_t p = 0; p < pixels; ++p)
-              slice[p] = smoother.read(space, p) / denominator[p];
-          }
-          for (std::size_t p = 0; p < pixels; ++p) {
-            for (std::size_t k = 0; k < count; ++k)
-              costs[p * labels + first + k] = static_cast<float>(slices[k * pixels + p]);
+              costs[p * labels + first + k] = static_cast<float>(out[k] / denominator[p]);
           }
         }
       },

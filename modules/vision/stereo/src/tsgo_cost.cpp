@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace c2f::vision {
 
@@ -148,19 +149,36 @@ double erf_approximation(double x) {
 
 RobustTransformParameters robust_transform(CostVolume& volume, double threshold, int threads) {
   const std::size_t pixels = volume.width() * volume.height();
+  // Each row's sums over its pixels in raster order, on `threads` threads; then the rows' sums
+  // in row order. Fixed for any thread count; with integer costs (the default truncation) every
+  // partial sum is exact, so this is also the one raster-order sum.
+  struct RowSums {
+    double minimum = 0.0, excess = 0.0;
+    std::size_t cells = 0;
+  };
+  std::vector<RowSums> rows(volume.height());
+  parallel_for(
+      volume.height(),
+      [&](std::size_t y) {
+        RowSums& row = rows[y];
+        for (std::size_t x = 0; x < volume.width(); ++x) {
+          double minimum = std::numeric_limits<double>::infinity();
+          for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d)
+            minimum = std::min(minimum, static_cast<double>(volume.at(x, y, d)));
+          row.minimum += minimum;
+          for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
+            row.excess += static_cast<double>(volume.at(x, y, d)) - minimum;
+            ++row.cells;
+          }
+        }
+      },
+      threads);
   double sum_minimum = 0.0, sum_excess = 0.0;
   std::size_t valid_cells = 0;
-  for (std::size_t y = 0; y < volume.height(); ++y) {
-    for (std::size_t x = 0; x < volume.width(); ++x) {
-      double minimum = std::numeric_limits<double>::infinity();
-      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d)
-        minimum = std::min(minimum, static_cast<double>(volume.at(x, y, d)));
-      sum_minimum += minimum;
-      for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
-        sum_excess += static_cast<double>(volume.at(x, y, d)) - minimum;
-        ++valid_cells;
-      }
-    }
+  for (const RowSums& row : rows) {
+    sum_minimum += row.minimum;
+    sum_excess += row.excess;
+    valid_cells += row.cells;
   }
   RobustTransformParameters parameters{};
   parameters.mean_minimum = sum_minimum / static_cast<double>(pixels);
@@ -175,16 +193,24 @@ RobustTransformParameters robust_transform(CostVolume& volume, double threshold,
   parameters.slope = threshold * spread * spread;
   if (parameters.slope > 2.5) parameters.slope *= 0.91;
   const double mm = parameters.mean_minimum;
+  const auto transformed = [&](double cost) {
+    return static_cast<float>((1.0 + erf_approximation(parameters.slope * (cost - mm) / mm)) / 2.0);
+  };
+  // Matching costs are small integers (sums of byte differences): those are looked up, computed
+  // once each by the same expression; any other value is computed where it is.
+  constexpr std::size_t kTabulated = 2048;
+  std::vector<float> table(kTabulated);
+  for (std::size_t c = 0; c < kTabulated; ++c) table[c] = transformed(static_cast<double>(c));
   parallel_for(
       volume.height(),
       [&](std::size_t y) {
         for (std::size_t x = 0; x < volume.width(); ++x) {
           for (int d = 0; d < volume.labels() && volume.valid(x, d); ++d) {
             float& cost = volume.at(x, y, d);
-            cost = static_cast<float>(
-                (1.0 +
-                 erf_approximation(parameters.slope * (static_cast<double>(cost) - mm) / mm)) /
-                2.0);
+            const bool tabulated =
+                cost >= 0.0f && cost < static_cast<float>(kTabulated) && cost == std::floor(cost);
+            cost = tabulated ? table[static_cast<std::size_t>(cost)]
+                             : transformed(static_cast<double>(cost));
           }
         }
       },

@@ -41,13 +41,14 @@ std::string TsgoOptions::validate() const {
 std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels,
                                                 int threads) {
   // Per pixel and label: the volume (4 bytes, float), which becomes the unaries. Per pixel: the
-  // images, gradient planes, clusters and labelings (512), and per filtering thread its block
-  // of 8 labels and its share of the sparse grid (160; full-size Aloe: 2.25 GiB on one thread,
-  // 2.46 on two).
+  // images, gradient planes, clusters, the filter's lists and slots, and labelings (512), and
+  // per filtering thread its two buffers of grid entries, 8 labels each (640: up to 10 entries
+  // of 64 bytes; 3-9 on the datasets and on a pair of noise images). Full-size Aloe: 2.9 GiB on
+  // one thread (2.2 measured), 3.7 on two (2.6 measured).
   const std::optional<std::size_t> pixels = checked_product({width, height});
   if (!pixels || labels < 0) return std::nullopt;
   const auto per_pixel = checked_product({static_cast<std::size_t>(labels), sizeof(float)});
-  const auto per_thread = checked_product({resolved_threads(threads), 160});
+  const auto per_thread = checked_product({resolved_threads(threads), 640});
   if (!per_pixel || !per_thread ||
       *per_pixel > std::numeric_limits<std::size_t>::max() - 512 - *per_thread)
     return std::nullopt;

@@ -65,8 +65,9 @@ struct RobustTransformParameters {
 /// Replaces every valid cell by C1 = (1 + erf(t (C0 - mm) / mm)) / 2, in (0, 1), with the data-
 /// driven parameters above (threshold 0.00095). Invalid (NaN) cells stay NaN. Throws
 /// std::invalid_argument when mm is 0 (every pixel has a perfect match), where the transform is
-/// undefined. The parameters' sums run in one thread in raster order; the cells are transformed
-/// on `threads` threads (0: the machine's cores), each the same for any count.
+/// undefined. The parameters' sums run per row, then over rows in order (exact for integer
+/// costs); the cells are transformed on `threads` threads (0: the machine's cores), integer
+/// costs by a table of the same expression. Each value is the same for any count.
 RobustTransformParameters robust_transform(CostVolume& volume, double threshold = 0.00095,
                                            int threads = 1);
 
