@@ -157,8 +157,8 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   expansion.near_radius = near_radius;
   expansion.shift_moves = shift_moves;
   expansion.near_levels = settings.near_levels;
-  expansion = fit_to_budget(expansion, problem_size(energy, parsed.has_coarse_levels()),
-                            settings.memory, "the " + schedule + " run");
+  expansion =
+      fit_to_budget(expansion, problem_size(energy), settings.memory, "the " + schedule + " run");
   Options options;
   options.plateau_steps = {4};
   options.plateau_tolerance = settings.coarse_tolerance;  // the original: expansion converged

@@ -60,11 +60,13 @@ struct RunRuleFlags {
 };
 
 /// The tools' run step: coarse_to_fine with the solver(s) `choice` builds for this run
-/// (with_chosen_solvers). Throws std::invalid_argument when the choice or the options are not
-/// usable.
+/// (with_chosen_solvers), each coarse level solved only when it fits choice.coarse_level_room
+/// (coarse_level_admission). Throws std::invalid_argument when the choice or the options are
+/// not usable.
 template <PartitionProvider<PairwiseEnergy> P>
 Summary run_chosen_solver(const PairwiseEnergy& energy, P& levels, const SolverChoice& choice,
-                          const Options& options, const Observer& observer = {}) {
+                          Options options, const Observer& observer = {}) {
+  options.coarse_level_fits = coarse_level_admission(choice, problem_size(energy));
   return with_chosen_solvers(choice, [&](auto&& solvers) {
     return coarse_to_fine(energy, levels, solvers, options, observer);
   });

@@ -81,15 +81,14 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
               ScheduleProvider& levels, const Observer& observer) {
   const int num_labels = problem.coop.num_labels();
   if (command.method == examples::SegmentMethod::potts) {
-    // Its recycled move graphs get what the budget leaves.
+    // Its recycled move graphs get what the budget leaves; coarse levels the room it gives them.
     SolverChoice choice;
     choice.graph_memory_limit = static_cast<std::size_t>(-1);
-    choice =
-        fit_to_budget(choice, problem_size(problem.potts, levels.schedule().has_coarse_levels()),
-                      command.memory, "the Potts energy");
+    choice = fit_to_budget(choice, problem_size(problem.potts), command.memory, "the Potts energy");
     ExpansionSolver<> solver(choice.expansion_options());
-    const Options options =
+    Options options =
         examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));
+    options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
     return coarse_to_fine(problem.potts, levels, solver, options, observer);
   }
   CoopSolver solver(command.coop);

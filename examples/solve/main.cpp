@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     ScheduleProvider levels(schedule, shape);
     // The model and the run's floor must fit the budget; recycled move graphs get the rest.
     const SolverChoice solver = fit_to_budget(
-        command.solver, problem_size(model.energy, schedule.has_coarse_levels()), command.memory,
+        command.solver, problem_size(model.energy), command.memory,
         "MODEL '" + command.model + "' solved by " + std::string(to_string(command.solver.kind)));
     if (!command.quiet) {
       std::fprintf(stderr, "c2f-solve: %s\n",

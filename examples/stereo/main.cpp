@@ -74,7 +74,7 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
                              : "--scene " + command.scene + ": ") +
           what,
       grid_run_memory_need(command.solver, shape.width, shape.height, command.tsgo.labels,
-                           command.schedule.has_coarse_levels(), CostStorage::single_precision,
+                           CostStorage::single_precision,
                            tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels,
                                                 command.tsgo.threads)));
 }
@@ -110,9 +110,8 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
 /// the run's floor on the built energy.
 SolverChoice solver_within_budget(const examples::StereoCommand& command,
                                   const StereoProblem& problem) {
-  return fit_to_budget(command.solver,
-                       problem_size(problem.tsgo.energy, command.schedule.has_coarse_levels()),
-                       command.memory, "the run on the TSGO energy");
+  return fit_to_budget(command.solver, problem_size(problem.tsgo.energy), command.memory,
+                       "the run on the TSGO energy");
 }
 
 /// The run: the chosen solver on the schedule's levels, every step traced (with its error

@@ -58,7 +58,7 @@ void require_memory_for(const examples::SyntheticCommand& command) {
           std::to_string(command.spec.shape.height) + " pixels with " +
           std::to_string(command.spec.num_labels) + " labels",
       grid_run_memory_need(icm, command.spec.shape.width, command.spec.shape.height,
-                           command.spec.num_labels, true, CostStorage::double_precision, 0));
+                           command.spec.num_labels, CostStorage::double_precision, 0));
 }
 
 /// With -o, the run's files are staged and land together at the end (an earlier run's files

@@ -8,6 +8,7 @@
 
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/adapters/run_memory.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
@@ -166,12 +167,11 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     };
     if (method == "potts") {
       // As in c2f-segment: the recycled move graphs get what the budget leaves.
-      const SolverChoice choice =
-          fit_to_memory(SolverChoice{}, problem.potts, schedule.has_coarse_levels(), budget);
+      const SolverChoice choice = fit_to_memory(SolverChoice{}, problem.potts, budget);
       ExpansionSolver<> solver(choice.expansion_options());
-      summary = coarse_to_fine(problem.potts, levels, solver,
-                               options_for(solver.quiet_steps_to_converge(problem.potts)),
-                               std::ref(record));
+      Options options = options_for(solver.quiet_steps_to_converge(problem.potts));
+      options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
+      summary = coarse_to_fine(problem.potts, levels, solver, options, std::ref(record));
     } else {
       CoopSolver solver(coop);
       summary = coarse_to_fine(problem.coop, levels, solver,

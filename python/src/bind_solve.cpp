@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "c2f/adapters/run_memory.hpp"
 #include "c2f/adapters/solver_choice.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/partition_list.hpp"
@@ -93,9 +94,11 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   }
 
   StepRecord record(callback, model.shape);
-  // The run's floor must fit the budget; the recycled move graphs get what it leaves.
-  auto run = [&](auto& levels, bool coarse_levels) {
-    const SolverChoice fitted = fit_to_memory(choice, model.energy, coarse_levels, budget);
+  // The run's floor must fit the budget; the recycled move graphs get what it leaves, and a
+  // coarse level is solved only when it fits the room the budget gives it.
+  auto run = [&](auto& levels) {
+    const SolverChoice fitted = fit_to_memory(choice, model.energy, budget);
+    options.coarse_level_fits = coarse_level_admission(fitted, problem_size(model.energy));
     py::gil_scoped_release free;
     return with_chosen_solvers(fitted, [&](auto&& solvers) {
       return coarse_to_fine(model.energy, levels, solvers, options, std::ref(record));
@@ -105,12 +108,12 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   std::string report;
   if (py::isinstance<py::list>(schedule_object) || py::isinstance<py::tuple>(schedule_object)) {
     PartitionList levels = partition_list(py::list(schedule_object), model.energy.num_variables());
-    summary = run(levels, py::len(schedule_object) > 0);
+    summary = run(levels);
     report = summary.report();
   } else if (py::isinstance<py::str>(schedule_object)) {
     const Schedule schedule = parse_schedule(schedule_object.cast<std::string>(), model);
     ScheduleProvider levels = schedule_provider(schedule, model);
-    summary = run(levels, schedule.has_coarse_levels());
+    summary = run(levels);
     report = summary.report();
   } else {
     throw py::type_error(

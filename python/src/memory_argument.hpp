@@ -23,9 +23,9 @@ void require_memory_within(const MemoryBudget& budget, const std::string& what,
                            std::optional<std::size_t> bytes);
 
 /// `choice` with its recycled move graphs limited to what `budget` leaves above the run's floor
-/// on `energy` (fit_to_budget, coarse_levels: whether reduced energies are solved too); a
+/// on `energy`, and its coarse levels to the room the budget gives them (fit_to_budget); a
 /// ValueError naming `memory` when the floor does not fit.
-SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy, bool coarse_levels,
+SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy,
                            const MemoryBudget& budget);
 
 }  // namespace c2f::python

@@ -413,3 +413,48 @@ TEST_CASE("rules of one's own are consulted with the options' rules", "[driver][
   CHECK(summary.reason == TerminationReason::step_limit);
   CHECK(summary.total_steps == 2);
 }
+
+TEST_CASE("a coarse level that does not fit is skipped, and the run is the run without it",
+          "[driver][memory]") {
+  Rng rng(25);
+  const PairwiseEnergy energy = random_grid_energy(rng, 12, 10, 4);
+  const DensePartition coarse = random_partition(rng, energy.num_variables(), 6);
+  const DensePartition middle = random_refinement(rng, coarse, 4);
+  const auto energies_of = [&](std::vector<DensePartition> sequence, const Options& options,
+                               Summary& summary) {
+    std::vector<double> energies;
+    PartitionList levels(std::move(sequence));
+    IcmSolver solver;
+    summary = coarse_to_fine(energy, levels, solver, options, [&](const StepEvent& event) {
+      energies.push_back(event.energy);
+      return ObserverDecision::continue_run;
+    });
+    return energies;
+  };
+  // The middle level is declined: the run equals the run without it, step for step.
+  Options options;
+  std::vector<std::size_t> asked;
+  options.coarse_level_fits = [&](std::size_t groups) {
+    asked.push_back(groups);
+    return groups <= coarse.num_groups();
+  };
+  Summary skipped, without;
+  const auto with_skip = energies_of({coarse, middle}, options, skipped);
+  const auto plain = energies_of({coarse}, Options{}, without);
+  CHECK(with_skip == plain);
+  CHECK(skipped.energy == without.energy);
+  CHECK(asked == std::vector<std::size_t>{coarse.num_groups(), middle.num_groups()});
+  REQUIRE(skipped.levels.size() == 3);
+  CHECK_FALSE(skipped.levels[0].skipped);
+  CHECK(skipped.levels[1].skipped);
+  CHECK(skipped.levels[1].num_variables == middle.num_groups());
+  CHECK(skipped.levels[1].steps == 0);
+  CHECK_FALSE(skipped.levels[2].skipped);
+  CHECK_THAT(skipped.report(), Catch::Contains("level 1: " + std::to_string(middle.num_groups()) +
+                                               " groups, skipped"));
+  // Every coarse level declined: the flat run, from its own start.
+  options.coarse_level_fits = [](std::size_t) { return false; };
+  Summary none, flat;
+  CHECK(energies_of({coarse, middle}, options, none) == energies_of({}, Options{}, flat));
+  CHECK(none.energy == flat.energy);
+}

@@ -44,64 +44,101 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
         energy.unaries().bytes() + energy.edges().size() * sizeof(Edge));
   SolverChoice choice;
   choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
-  const ProblemSize flat = problem_size(energy, false), coarse = problem_size(energy, true);
-  const auto flat_floor = run_memory_floor(choice, flat);
-  const auto coarse_floor = run_memory_floor(choice, coarse);
-  REQUIRE(flat_floor.has_value());
-  REQUIRE(coarse_floor.has_value());
-  // Coarse levels add one reduced energy of at most as many variables and edges, in double.
-  const std::size_t reduced_bound =
-      energy.num_variables() * 6 * sizeof(double) + energy.edges().size() * sizeof(Edge);
-  CHECK(*coarse_floor == *flat_floor + reduced_bound);
-  // Near and shift moves add a second solver's working memory; lbp its messages.
+  const ProblemSize size = problem_size(energy);
+  const auto floor = run_memory_floor(choice, size);
+  REQUIRE(floor.has_value());
+  // Near and shift moves add a second solver's working memory.
   SolverChoice near = choice;
   near.near_radius = 3;
-  CHECK(*run_memory_floor(near, flat) > *flat_floor);
+  CHECK(*run_memory_floor(near, size) > *floor);
   // The grid estimate before building matches the built energy's sizes.
-  const auto predicted = grid_problem_size(30, 20, 6, false, CostStorage::double_precision);
+  const auto predicted = grid_problem_size(30, 20, 6, CostStorage::double_precision);
   REQUIRE(predicted.has_value());
-  CHECK(predicted->variables == flat.variables);
-  CHECK(predicted->edges == flat.edges);
-  CHECK_FALSE(grid_problem_size(std::size_t{1} << 40, std::size_t{1} << 30, 256, true,
+  CHECK(predicted->variables == size.variables);
+  CHECK(predicted->edges == size.edges);
+  CHECK_FALSE(grid_problem_size(std::size_t{1} << 40, std::size_t{1} << 30, 256,
                                 CostStorage::double_precision));
-  // Float unaries: the energy's own bytes as predicted; the reduced energy is still double.
+  // Float unaries: the energy's own bytes as predicted, half the double energy's unaries.
   const std::vector<double> table(36, 1.0);
   const PairwiseEnergy single = PairwiseEnergy::with_float_unaries(
       600, 6, std::vector<float>(3600, 0.5f), {PairwiseTerm::table(6, table)},
       grid_edges({30, 20}, Connectivity::four, [](VariableIndex, VariableIndex) { return 1.0; }));
-  const auto single_predicted = grid_problem_size(30, 20, 6, true, CostStorage::single_precision);
+  const auto single_predicted = grid_problem_size(30, 20, 6, CostStorage::single_precision);
   REQUIRE(single_predicted.has_value());
   CHECK(single_predicted->energy_bytes + sizeof(PairwiseTerm) >= energy_memory_bytes(single));
-  CHECK(grid_problem_size(30, 20, 6, true, CostStorage::double_precision)->energy_bytes ==
+  CHECK(grid_problem_size(30, 20, 6, CostStorage::double_precision)->energy_bytes ==
         single_predicted->energy_bytes + 3600 * sizeof(float));
   CHECK(energy_memory_bytes(single) + 3600 * sizeof(float) ==
         energy_memory_bytes(
             PairwiseEnergy(600, 6, std::vector<double>(3600, 0.5), {PairwiseTerm::table(6, table)},
                            std::vector<Edge>(single.edges().begin(), single.edges().end()))));
-  CHECK(*run_memory_floor(choice, problem_size(single, true)) ==
-        *run_memory_floor(choice, problem_size(single, false)) + reduced_bound);
 
-  const MemoryBudget budget{*flat_floor + 12345, "a test"};
-  CHECK(fit_to_budget(choice, flat, budget, "the run").graph_memory_limit == 12345);
+  const MemoryBudget budget{*floor + 12345, "a test"};
+  const SolverChoice fitted = fit_to_budget(choice, size, budget, "the run");
+  CHECK(fitted.graph_memory_limit == 12345);
   choice.graph_memory_limit = 100;  // a smaller limit given stays
-  CHECK(fit_to_budget(choice, flat, budget, "the run").graph_memory_limit == 100);
+  CHECK(fit_to_budget(choice, size, budget, "the run").graph_memory_limit == 100);
+  const MemoryBudget small{*floor - 1, "a test"};
   CHECK_THROWS_WITH(
-      fit_to_budget(choice, coarse, budget, "the run"),
+      fit_to_budget(choice, size, small, "the run"),
       Catch::StartsWith("the run needs ") &&
-          Catch::EndsWith("more than the run's memory budget of " + budget.describe()));
+          Catch::EndsWith("more than the run's memory budget of " + small.describe()));
+}
+
+TEST_CASE("a coarse level is solved when its reduced energy and solver fit the room left",
+          "[memory]") {
+  test::Rng rng(9);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
+  const ProblemSize size = problem_size(energy);
+  SolverChoice choice;
+  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
+  const auto floor = run_memory_floor(choice, size);
+  REQUIRE(floor.has_value());
+  // The level's reduced energy (double unaries, at most the original's edges), its solver and
+  // its recycled graphs (none here: a limit of 0).
+  choice.graph_memory_limit = 0;
+  const auto level = coarse_level_memory(choice, size, 50);
+  REQUIRE(level.has_value());
+  const auto solver_alone = coarse_level_memory(choice, size, 0);
+  REQUIRE(solver_alone.has_value());
+  CHECK(*level - *solver_alone >= 50 * 6 * sizeof(double));
+  CHECK(*coarse_level_memory(choice, size, 600) > *level);
+  // Unfitted: every level is admitted.
+  CHECK(coarse_level_admission(choice, size)(600));
+  // Fitted with all the budget to the graphs, the room is the original solver's share and the
+  // graphs': small levels fit, a level as large as the original does not (its reduced energy
+  // comes on top).
+  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
+  const SolverChoice fitted = fit_to_budget(choice, size, MemoryBudget{*floor + 4096, "t"}, "run");
+  CHECK(*coarse_level_memory(fitted, size, 50) > *level);  // with its graphs
+  const auto fits = coarse_level_admission(fitted, size);
+  CHECK(fits(50));
+  CHECK_FALSE(fits(600));
+  // A smaller graph limit leaves the rest of the budget to coarse levels too.
+  SolverChoice capped = choice;
+  capped.graph_memory_limit = 0;
+  const auto roomy = coarse_level_admission(
+      fit_to_budget(capped, size, MemoryBudget{*floor + *level * 4, "t"}, "run"), size);
+  CHECK(roomy(600));
+  // Near moves on the original problem only: the coarse solver has no second solver.
+  SolverChoice near = choice;
+  near.graph_memory_limit = 0;
+  near.near_radius = 3;
+  CHECK(coarse_level_memory(near, size, 50) == level);
+  near.near_levels = NearLevels::all;
+  CHECK(*coarse_level_memory(near, size, 50) > *level);
 }
 
 TEST_CASE("a grid run needs the larger of its preparation and its floor", "[memory]") {
   SolverChoice choice;
   const auto floor =
-      run_memory_floor(choice, *grid_problem_size(30, 20, 6, true, CostStorage::double_precision));
+      run_memory_floor(choice, *grid_problem_size(30, 20, 6, CostStorage::double_precision));
   REQUIRE(floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, 0) == floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, *floor + 1) ==
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, 0) == floor);
+  CHECK(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, *floor + 1) ==
         *floor + 1);
   // An overflowing preparation or grid is "beyond std::size_t", never a small number.
-  CHECK_FALSE(
-      grid_run_memory_need(choice, 30, 20, 6, true, CostStorage::double_precision, std::nullopt));
-  CHECK_FALSE(grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256, true,
+  CHECK_FALSE(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, std::nullopt));
+  CHECK_FALSE(grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256,
                                    CostStorage::single_precision, 0));
 }

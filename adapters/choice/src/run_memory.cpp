@@ -43,13 +43,13 @@ std::optional<std::size_t> solver_bytes(const SolverChoice& choice, const Proble
 
 }  // namespace
 
-ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels) {
+ProblemSize problem_size(const PairwiseEnergy& energy) {
   return {energy.num_variables(), energy.num_labels(), energy.edges().size(),
-          energy_memory_bytes(energy), coarse_levels};
+          energy_memory_bytes(energy)};
 }
 
 std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height, int labels,
-                                             bool coarse_levels, CostStorage storage) {
+                                             CostStorage storage) {
   const auto variables = checked_product({width, height});
   const auto l = static_cast<std::size_t>(std::max(labels, 0));
   const std::size_t cost_bytes =
@@ -60,34 +60,64 @@ std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t heig
   if (!unaries || !edge_bytes || !table || *unaries > static_cast<std::size_t>(-1) / 2)
     return std::nullopt;
   const std::size_t edges = width > 0 && height > 0 ? 2 * *variables - width - height : 0;
-  return ProblemSize{*variables, labels, edges, *unaries + *edge_bytes + *table, coarse_levels};
+  return ProblemSize{*variables, labels, edges, *unaries + *edge_bytes + *table};
 }
 
 std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const ProblemSize& size) {
   const auto per_variable = checked_product({size.variables, kPerVariableBytes});
   const auto solver = solver_bytes(choice, size);
-  const auto reduced_unaries = checked_product(
-      {size.variables, static_cast<std::size_t>(std::max(size.labels, 0)), sizeof(double)});
-  const auto reduced_edges = checked_product({size.edges, sizeof(Edge)});
-  if (!per_variable || !solver || !reduced_unaries || !reduced_edges ||
-      *reduced_unaries > static_cast<std::size_t>(-1) - *reduced_edges)
-    return std::nullopt;
-  const std::size_t reduced = *reduced_unaries + *reduced_edges;
+  if (!per_variable || !solver) return std::nullopt;
   std::size_t total = kProcessBytes;
-  for (const std::size_t part :
-       {size.energy_bytes, size.coarse_levels ? reduced : 0, *per_variable, *solver}) {
+  for (const std::size_t part : {size.energy_bytes, *per_variable, *solver}) {
     if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
     total += part;
   }
   return total;
 }
 
+std::optional<std::size_t> coarse_level_memory(const SolverChoice& choice, const ProblemSize& size,
+                                               std::size_t groups) {
+  // The coarse levels' solver makes near and shift moves only when every level does.
+  SolverChoice coarse = choice;
+  if (choice.near_levels == NearLevels::original) {
+    coarse.near_radius = 0;
+    coarse.shift_moves = false;
+  }
+  const ProblemSize level{groups, size.labels, size.edges, 0};
+  const auto labels = static_cast<std::size_t>(std::max(size.labels, 0));
+  const auto unaries = checked_product({groups, labels, sizeof(double)});
+  const auto edges = checked_product({size.edges, sizeof(Edge)});
+  const auto solver = solver_bytes(coarse, level);
+  if (!unaries || !edges || !solver) return std::nullopt;
+  // Its recycled move graphs: one per label (expansion) or pair of labels (swap), each at most
+  // a solver's working memory, and never more than the limit.
+  std::size_t graphs = 0;
+  if (choice.kind == SolverKind::expansion || choice.kind == SolverKind::swap) {
+    const std::size_t moves =
+        choice.kind == SolverKind::expansion ? labels : labels * (labels + 1) / 2;
+    const auto one = graph_cut_bytes(choice.maxflow, level);
+    const auto all = one ? checked_product({*one, moves}) : one;
+    graphs = std::min(all.value_or(static_cast<std::size_t>(-1)), choice.graph_memory_limit);
+  }
+  std::size_t total = 0;
+  for (const std::size_t part : {*unaries, *edges, *solver, graphs}) {
+    if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
+    total += part;
+  }
+  return total;
+}
+
+CoarseLevelFits coarse_level_admission(const SolverChoice& choice, const ProblemSize& size) {
+  return [choice, size](std::size_t groups) {
+    const std::optional<std::size_t> need = coarse_level_memory(choice, size, groups);
+    return need && *need <= choice.coarse_level_room;
+  };
+}
+
 std::optional<std::size_t> grid_run_memory_need(const SolverChoice& choice, std::size_t width,
-                                                std::size_t height, int labels, bool coarse_levels,
-                                                CostStorage storage,
+                                                std::size_t height, int labels, CostStorage storage,
                                                 std::optional<std::size_t> preparation) {
-  const std::optional<ProblemSize> size =
-      grid_problem_size(width, height, labels, coarse_levels, storage);
+  const std::optional<ProblemSize> size = grid_problem_size(width, height, labels, storage);
   const std::optional<std::size_t> floor = size ? run_memory_floor(choice, *size) : std::nullopt;
   if (!floor || !preparation) return std::nullopt;
   return std::max(*floor, *preparation);
@@ -98,6 +128,9 @@ SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size, const M
   const std::optional<std::size_t> floor = run_memory_floor(choice, size);
   budget.require_within(what, floor);
   choice.graph_memory_limit = std::min(choice.graph_memory_limit, budget.bytes - *floor);
+  // What the budget leaves above the floor, and the original problem's solver's share of the
+  // floor: coarse levels run before that solver is built.
+  choice.coarse_level_room = budget.bytes - *floor + *solver_bytes(choice, size);
   return choice;
 }
 

@@ -8,6 +8,14 @@ std::string Summary::report() const {
   std::string text;
   char line[256];
   for (const LevelSummary& level : levels) {
+    if (level.skipped) {
+      std::snprintf(line, sizeof line,
+                    "level %d: %zu groups, skipped (does not fit: Options::coarse_level_fits), "
+                    "partition %.3fs\n",
+                    level.level, level.num_variables, level.partition_seconds);
+      text += line;
+      continue;
+    }
     std::snprintf(line, sizeof line,
                   "level %d: %zu variables, %ld steps, energy %.6f -> %.6f, partition %.3fs, "
                   "setup %.3fs, solve %.3fs\n",

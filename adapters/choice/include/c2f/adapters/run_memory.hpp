@@ -4,6 +4,7 @@
 // move graphs and kept move problems of expansion and swap (MoveOptions::graph_memory_limit).
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 
 #include "c2f/adapters/solver_choice.hpp"
@@ -18,11 +19,10 @@ struct ProblemSize {
   int labels = 0;
   std::size_t edges = 0;
   std::size_t energy_bytes = 0;  ///< what the energy's arrays take (energy_memory_bytes)
-  bool coarse_levels = true;     ///< false for a flat run (no reduced energies)
 };
 
-/// The sizes of `energy`, solved coarse to fine when coarse_levels.
-[[nodiscard]] ProblemSize problem_size(const PairwiseEnergy& energy, bool coarse_levels);
+/// The sizes of `energy`.
+[[nodiscard]] ProblemSize problem_size(const PairwiseEnergy& energy);
 
 /// How a grid energy stores its unary costs (PairwiseEnergy::single_precision).
 enum class CostStorage { double_precision, single_precision };
@@ -31,16 +31,15 @@ enum class CostStorage { double_precision, single_precision };
 /// stored as `storage` says, and one L x L table term, before it is built. std::nullopt when
 /// they overflow.
 [[nodiscard]] std::optional<ProblemSize> grid_problem_size(std::size_t width, std::size_t height,
-                                                           int labels, bool coarse_levels,
-                                                           CostStorage storage);
+                                                           int labels, CostStorage storage);
 
 /// An upper estimate of the bytes a run of `choice` on a problem of this size takes besides the
-/// solver's optional memory: the process and its images (128 MiB), the energy, one level's
-/// reduced energy (at most as many variables and edges, unaries in double; only with coarse
-/// levels), labelings and partitions (64
-/// bytes per variable), and the solver's working memory (graph cuts: the shared plain and QPBO
-/// move graphs, the move's problem and, with near moves, a second solver; belief propagation:
-/// its messages). std::nullopt when the count overflows.
+/// solver's optional memory: the process and its images (128 MiB), the energy, labelings and
+/// partitions (64 bytes per variable), and the original problem's solver's working memory
+/// (graph cuts: the shared plain and QPBO move graphs, the move's problem and, with near moves,
+/// a second solver; belief propagation: its messages). A coarse level's reduced energy and
+/// solver come and go before the original problem's solver is built; they draw on the share
+/// that solver will take (coarse_level_admission). std::nullopt when the count overflows.
 [[nodiscard]] std::optional<std::size_t> run_memory_floor(const SolverChoice& choice,
                                                           const ProblemSize& size);
 
@@ -51,11 +50,29 @@ enum class CostStorage { double_precision, single_precision };
 /// Give it to MemoryBudget::require.
 [[nodiscard]] std::optional<std::size_t> grid_run_memory_need(
     const SolverChoice& choice, std::size_t width, std::size_t height, int labels,
-    bool coarse_levels, CostStorage storage, std::optional<std::size_t> preparation);
+    CostStorage storage, std::optional<std::size_t> preparation);
 
-/// `choice` with graph_memory_limit lowered to what `budget` leaves above run_memory_floor (a
-/// smaller limit already in `choice` stays). Throws std::invalid_argument "<what> needs N,
-/// more than the run's memory budget of M" (MemoryBudget::require) when the floor does not fit.
+/// An upper estimate of the bytes a coarse level of `groups` groups of a problem of `size` takes
+/// beside the floor: its reduced energy (unaries in double, at most as many edges as the
+/// original), its solver's working memory and its recycled move graphs (at most one per move,
+/// and at most choice.graph_memory_limit). std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> coarse_level_memory(const SolverChoice& choice,
+                                                             const ProblemSize& size,
+                                                             std::size_t groups);
+
+/// Whether a coarse level of this many groups is solved (the driver's Options::coarse_level_fits).
+using CoarseLevelFits = std::function<bool(std::size_t groups)>;
+
+/// Options::coarse_level_fits for a run of `choice` on a problem of `size`: a level fits when
+/// coarse_level_memory is at most choice.coarse_level_room.
+[[nodiscard]] CoarseLevelFits coarse_level_admission(const SolverChoice& choice,
+                                                     const ProblemSize& size);
+
+/// `choice` fitted to `budget`: graph_memory_limit lowered to what `budget` leaves above
+/// run_memory_floor (a smaller limit already in `choice` stays), and coarse_level_room what the
+/// budget leaves above the floor plus the original problem's solver's working memory (not yet
+/// built while coarse levels run). Throws std::invalid_argument "<what> needs N, more than the
+/// run's memory budget of M" (MemoryBudget::require) when the floor does not fit.
 [[nodiscard]] SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size,
                                          const MemoryBudget& budget, const std::string& what);
 

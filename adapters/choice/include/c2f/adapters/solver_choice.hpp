@@ -106,6 +106,10 @@ struct SolverChoice {
   /// On the original problem only (the default) was the faster coarse-to-fine run in every
   /// measurement (docs/results.md, "Near moves on the original problem only").
   NearLevels near_levels = NearLevels::original;
+  /// The bytes a coarse level's reduced energy and its solver's working memory may take
+  /// (coarse_level_admission; fit_to_budget sets it from the run's memory budget). The default
+  /// admits every level.
+  std::size_t coarse_level_room = static_cast<std::size_t>(-1);
 
   /// Swap's options.
   [[nodiscard]] SwapOptions swap_options() const {

@@ -2,6 +2,7 @@
 // coarse_to_fine: Algorithm 1 of the paper for any energy, partition provider and anytime
 // solver.
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -95,7 +96,8 @@ template <class E, class P, class CoarseSolver, class OriginalSolver>
 Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
                    OriginalSolver& original_solver, const Rules& rules, const Observer& observer,
                    InitialLabeling init, std::span<const Label> start_labeling,
-                   LevelTransfer transfer) {
+                   LevelTransfer transfer,
+                   const std::function<bool(std::size_t)>& coarse_level_fits) {
   if (!start_labeling.empty()) {
     const std::size_t n = energy_traits<E>::num_variables(energy);
     const int num_labels = energy_traits<E>::num_labels(energy);
@@ -118,6 +120,8 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
   Summary summary;
   std::optional<DensePartition> previous;  // partition of the last finished level
   Labeling labeling;                       // labeling on the last finished level
+  int previous_level = -1;                 // its index
+  bool solved_any = false;                 // a level before this one was solved
   std::vector<double> history;
   bool finished = false;
 
@@ -137,21 +141,27 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
       throw std::invalid_argument(
           "coarse_to_fine: the partition of level " + std::to_string(level) + " (" +
           std::to_string(partition->num_groups()) + " groups) does not refine level " +
-          std::to_string(level - 1) + " (" + std::to_string(previous->num_groups()) +
+          std::to_string(previous_level) + " (" + std::to_string(previous->num_groups()) +
           " groups), so labels cannot be handed down with the same energy; order the levels "
           "coarse to fine, or hand labels down by majority (LevelTransfer::majority)");
+    }
+    if (!at_original && coarse_level_fits && !coarse_level_fits(partition->num_groups())) {
+      stats.skipped = true;
+      stats.num_variables = partition->num_groups();
+      summary.levels.push_back(stats);
+      continue;
     }
     std::optional<E> reduced;
     if (!at_original) reduced.emplace(energy_traits<E>::reduce(energy, *partition));
     const E& level_energy = at_original ? energy : *reduced;
 
     Labeling start;
-    if (level == 0 && !start_labeling.empty()) {
+    if (!solved_any && !start_labeling.empty()) {
       start = at_original ? Labeling(start_labeling.begin(), start_labeling.end())
                           : transfer_labels_by_majority(
                                 start_labeling, DensePartition::identity(start_labeling.size()),
                                 *partition);
-    } else if (level == 0) {
+    } else if (!solved_any) {
       start = initial_labeling(level_energy, init);
     } else if (at_original) {
       start = expand(labeling, *previous);
@@ -198,12 +208,14 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
     stats.final_energy = history.back();
     stats.solve_seconds = clock.elapsed() - setup_done;
     summary.levels.push_back(stats);
+    solved_any = true;
     const std::span<const Label> result = solver.labeling();
     labeling.assign(result.begin(), result.end());
     if (at_original) {
       previous.reset();  // the labeling is already on the original variables
     } else {
       previous = std::move(partition);
+      previous_level = level;
     }
   }
 
@@ -264,7 +276,7 @@ Summary coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Opti
   return detail::run_levels(energy, levels, coarse, original,
                             detail::with_solver_convergence(options, original, energy).rules(),
                             observer, options.initial_labeling, options.start_labeling,
-                            options.level_transfer);
+                            options.level_transfer, options.coarse_level_fits);
 }
 
 }  // namespace c2f

@@ -1,6 +1,8 @@
 #pragma once
 // Options of a coarse-to-fine run, in the Ceres shape: plain fields plus a validity check.
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -58,6 +60,12 @@ struct Options {
   /// exact unless the partition provider was explicitly allowed to produce levels that do not
   /// refine each other.
   LevelTransfer level_transfer = LevelTransfer::exact;
+  /// When set, asked with each coarse level's number of groups, after its partition is built
+  /// and before its energy is reduced, whether the level fits (e.g. the run's memory budget:
+  /// coarse_level_admission in c2f/adapters/run_memory.hpp). A level it declines is skipped:
+  /// nothing is reduced or solved there (LevelSummary::skipped) and the next level starts from
+  /// the last level solved. Unset: every level is solved.
+  std::function<bool(std::size_t groups)> coarse_level_fits;
   /// Rules of your own (c2f/driver/rules.hpp), consulted after the ones the fields above
   /// describe; the strongest verdict wins. They do not replace the rule that ends every level.
   std::vector<Rule> extra_rules;

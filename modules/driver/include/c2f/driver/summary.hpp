@@ -19,6 +19,9 @@ struct LevelSummary {
   double partition_seconds = 0.0;  ///< building this level's partition
   double setup_seconds = 0.0;      ///< reduction, label transfer and solver binding
   double solve_seconds = 0.0;      ///< solver steps and rule checks
+  /// Options::coarse_level_fits declined the level: num_variables is its number of groups, and
+  /// nothing was reduced or solved.
+  bool skipped = false;
 };
 
 struct Summary {
