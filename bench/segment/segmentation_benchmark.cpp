@@ -303,8 +303,8 @@ int main(int argc, char** argv) {
         .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
         .text("configs", &config_list, "comma-separated configurations (default: all)")
         .real("memory", &memory_gib, {0.0, 1e6, false},
-              "the memory budget in GiB, as c2f-segment --memory (0, the default: half of this "
-              "machine's memory, at most what is available)")
+              "the memory budget in GiB, as c2f-segment --memory (0, the default: a quarter of "
+              "this machine's memory, growing to a run's needs up to half)")
         .flag("header", &header, "print the TSV header first");
     c2f::examples::declare_coop_parameters(options, parameters);
     c2f::examples::declare_data_preparation(options, preparation);

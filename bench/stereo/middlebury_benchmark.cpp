@@ -405,8 +405,8 @@ int main(int argc, char** argv) {
               "prepare the data on one thread first too: its time in the row, and the run stops "
               "when the energy differs from the one prepared on --threads")
         .real("memory", &memory_gib, {0.0, 1e6, false},
-              "each run's memory budget in GiB, as c2f-stereo --memory (0, the default: half of "
-              "this machine's memory, at most what is available)")
+              "each run's memory budget in GiB, as c2f-stereo --memory (0, the default: a "
+              "quarter of this machine's memory, growing to a run's needs up to half)")
         .flag("header", &header, "print the TSV header first");
     const auto arguments = options.parse(argc, argv, {"run SCENE | summarize ROWS.tsv", 2});
     if (!arguments) return 0;

@@ -18,10 +18,11 @@ void SolverFlags::declare(ToolOptions& options) {
             "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
             "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
       .real("memory", &memory_gib_, {0.0, 65536.0},
-            "GiB the whole run may take: the energy and the levels' reduced energies first, what "
-            "they leave for the move graphs the dynamic backend recycles per label (0: half of "
-            "this machine's memory, at most what is available; a run whose energy does not fit "
-            "is refused before it allocates)")
+            "GiB the whole run may take: the energy and the solver's working memory first, what "
+            "they leave for the move graphs the dynamic backend recycles per label and for "
+            "coarse levels (0: a quarter of this machine's memory, growing to the run's needs "
+            "up to half, at most what is available; a run whose floor does not fit is refused "
+            "before it allocates)")
       .text("graph-memory", &graph_memory_text_,
             "at most this many GiB of the budget for recycled move graphs (0: no recycling; "
             "default: all the budget leaves)")

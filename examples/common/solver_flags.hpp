@@ -38,8 +38,9 @@ class SolverFlags {
   bool shift_moves_ = false;
 };
 
-/// "memory budget 11.7 GiB (half of this machine's 23.5 GiB), recycled move graphs up to 10.2
-/// GiB" (the second part for expansion and swap): the budget line of a tool's summary.
+/// "memory budget 5.9 GiB (a quarter of this machine's 23.5 GiB; a run that needs more may take
+/// up to 11.8 GiB), recycled move graphs up to 2.1 GiB" (the second part for expansion and
+/// swap): the budget line of a tool's summary.
 [[nodiscard]] std::string memory_line(const MemoryBudget& budget, const SolverChoice& choice);
 
 /// The options that end levels and the run; the values are public (defaults as shown).

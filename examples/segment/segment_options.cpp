@@ -86,8 +86,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
                "threads preparing the data: the labels' colour models and the edge classes' "
                "k-means (0: the machine's cores); the result is the same for every count")
       .real("memory", &memory_gib, {0.0, 65536.0},
-            "GiB the whole run may take (0: half of this machine's memory, at most what is "
-            "available); the Potts method's recycled move graphs get what the data leave, and a "
+            "GiB the whole run may take (0: a quarter of this machine's memory, growing to "
+            "the run's needs up to half, at most what is available); the Potts method's recycled "
+            "move graphs get what the data leave, and a "
             "run whose data do not fit is refused before it allocates")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
   const auto parsed = options.parse(argc, argv, {"IMAGE SEEDS", 2});

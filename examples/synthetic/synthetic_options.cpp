@@ -56,8 +56,9 @@ std::optional<SyntheticCommand> parse_synthetic_command(int argc, char** argv) {
       .real("time-limit", &command.options.time_limit_seconds, kTimeLimitRange,
             "seconds per run (0: none)")
       .real("memory", &memory_gib, {0.0, 65536.0},
-            "GiB the run may take (0: half of this machine's memory, at most what is "
-            "available); a problem that does not fit is refused before it is made")
+            "GiB the run may take (0: a quarter of this machine's memory, growing to the "
+            "run's needs up to half, at most what is available); a problem that does not fit is "
+            "refused before it is made")
       .path("out,o", &command.out_dir,
             "directory for trace-flat.csv, trace-c2f.csv and PGM images");
   if (!options.parse(argc, argv, {"", 0})) return std::nullopt;

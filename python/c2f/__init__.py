@@ -100,10 +100,11 @@ def solve(
         at_original, labeling: the original variables' labeling this step stands for, in the
         result's shape, a copy made per step); returning False stops the run (None or True
         goes on).
-    memory: the run's memory budget in GiB, as the tools' --memory (0: half of this machine's
-        memory, at most what is available). The run's floor (the energy, a reduced level's
-        energy, the solver's working memory) must fit it, else ValueError naming `memory`;
-        the recycled move graphs get what it leaves.
+    memory: the run's memory budget in GiB, as the tools' --memory (0: a quarter of this
+        machine's memory, growing to the run's needs up to half, at most what is available).
+        The run's floor (the energy, the solver's working memory) must fit it, else ValueError
+        naming `memory`; the recycled move graphs get what it leaves, and a coarse level that
+        does not fit is skipped.
 
     The GIL is released while the solver runs. Ctrl-C ends the run at its next step and raises
     KeyboardInterrupt with the best result so far as its `result` attribute; an exception
@@ -163,9 +164,9 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     preparation's clustering; threads: the cores it runs on (0: all; the result is the same for
     every count). plateau: steps without decrease that end a coarse level (0: the
     number of labels or one sweep when shorter; -1: one sweep). memory: the budget in GiB
-    (0: half of this machine's memory, at most what is available) that the data preparation
-    must fit (ValueError naming `memory` otherwise); the Potts runs' recycled move graphs get
-    what it leaves. result.labeling is (H, W).
+    (0: a quarter of this machine's memory, up to half for a run that needs it) that the data
+    preparation must fit (ValueError naming `memory` otherwise); the Potts runs' recycled move
+    graphs get what it leaves. result.labeling is (H, W).
     """
     return _result(lambda: _segment(image, seeds, method, aux, start, schedule, float(lambda_),
                                     float(theta), float(alpha), int(classes), kmeans,

@@ -153,8 +153,9 @@ void bind_stereo(py::module_& module) {
              "of the left view, a 4-connected grid. Its schedules include the stereo presets "
              "(paper, paper-slic, regions, aggregated, ...) and slic:S levels on the left view. "
              "threads: cores preparing the data (0: all); the energy is the same for every "
-             "count. memory: the budget in GiB the preparation must fit (0: half of this "
-             "machine's memory, at most what is available); ValueError naming it otherwise.");
+             "count. memory: the budget in GiB the preparation must fit (0: a quarter of "
+             "this machine's memory, growing to the run's needs up to half, at most what is "
+             "available); ValueError naming it otherwise.");
   module.def("bad_pixel_rates", &bad_pixel_rates, py::arg("disparity"), py::arg("gt"),
              py::arg("mask") = py::none(),
              "Fractions of pixels with |disparity - gt| above 0.5, 1 and 2, over all pixels of "

@@ -14,14 +14,26 @@
 
 using namespace c2f;
 
-TEST_CASE("the default budget is half the machine's memory, at most what is available",
+TEST_CASE("the default budget is a quarter of the machine, growing to a run's needs up to half",
           "[memory]") {
   const MemoryBudget budget = default_memory_budget();
   const auto available = available_memory_bytes();
   REQUIRE(available.has_value());
   CHECK(budget.bytes > 0);
-  CHECK(budget.bytes <= *available);
+  CHECK(budget.bytes <= budget.ceiling());
+  CHECK(budget.ceiling() <= *available);
   CHECK_THAT(budget.describe(), Catch::Contains(" GiB (") || Catch::Contains(" MiB ("));
+  // A growing budget takes a run's needs up to its ceiling, and says so.
+  const MemoryBudget growing{std::size_t{1} << 30, "a share", std::size_t{3} << 30};
+  CHECK(growing.describe() == "1.0 GiB (a share; a run that needs more may take up to 3.0 GiB)");
+  CHECK(growing.for_need(std::size_t{1} << 20) == std::size_t{1} << 30);
+  CHECK(growing.for_need(std::size_t{2} << 30) == std::size_t{2} << 30);
+  CHECK(growing.for_need(std::size_t{5} << 30) == std::size_t{3} << 30);
+  CHECK_NOTHROW(growing.require_within("a run", std::size_t{2} << 30));
+  CHECK_THROWS_WITH(growing.require_within("a big run", std::size_t{4} << 30),
+                    Catch::Contains("a big run needs 4.0 GiB, more than the run's memory budget "
+                                    "of 1.0 GiB (a share; a run that needs more may take up to "
+                                    "3.0 GiB)"));
   const MemoryBudget two = memory_budget_of_gib(2.0, "--memory 2");
   CHECK(two.bytes == std::size_t{2} << 30);
   CHECK(two.describe() == "2.0 GiB (--memory 2)");

@@ -127,10 +127,12 @@ SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size, const M
                            const std::string& what) {
   const std::optional<std::size_t> floor = run_memory_floor(choice, size);
   budget.require_within(what, floor);
-  choice.graph_memory_limit = std::min(choice.graph_memory_limit, budget.bytes - *floor);
+  // A default budget grows to the floor when that is more.
+  const std::size_t bytes = budget.for_need(*floor);
+  choice.graph_memory_limit = std::min(choice.graph_memory_limit, bytes - *floor);
   // What the budget leaves above the floor, and the original problem's solver's share of the
   // floor: coarse levels run before that solver is built.
-  choice.coarse_level_room = budget.bytes - *floor + *solver_bytes(choice, size);
+  choice.coarse_level_room = bytes - *floor + *solver_bytes(choice, size);
   return choice;
 }
 

@@ -22,12 +22,25 @@ std::optional<std::size_t> physical_memory_bytes() {
 
 }  // namespace
 
+std::size_t MemoryBudget::ceiling() const noexcept {
+  return std::max(bytes, growth_limit);
+}
+
+std::size_t MemoryBudget::for_need(std::size_t need) const noexcept {
+  return std::max(bytes, std::min(need, ceiling()));
+}
+
 std::string MemoryBudget::describe() const {
-  return format_bytes(static_cast<double>(bytes)) + (origin.empty() ? "" : " (" + origin + ")");
+  std::string text = origin;
+  if (ceiling() > bytes) {
+    text += (text.empty() ? "" : "; ") + std::string("a run that needs more may take up to ") +
+            format_bytes(static_cast<double>(ceiling()));
+  }
+  return format_bytes(static_cast<double>(bytes)) + (text.empty() ? "" : " (" + text + ")");
 }
 
 void MemoryBudget::require_within(const std::string& what, std::optional<std::size_t> need) const {
-  if (need && *need <= bytes) return;
+  if (need && *need <= ceiling()) return;
   const std::string text =
       need ? format_bytes(static_cast<double>(*need)) : std::string("more than 16 EiB");
   throw std::invalid_argument(what + " needs " + text + ", more than the run's memory budget of " +
@@ -43,12 +56,13 @@ MemoryBudget default_memory_budget() {
   const std::optional<std::size_t> physical = physical_memory_bytes();
   const std::optional<std::size_t> available = available_memory_bytes();
   if (!physical && !available) return {std::size_t{4} << 30, "this machine's memory is unknown"};
-  if (!physical) return {*available / 2, "half of the memory available"};
-  const std::size_t half = *physical / 2;
+  if (!physical) return {*available / 4, "a quarter of the memory available", *available / 2};
+  const std::size_t quarter = *physical / 4, half = *physical / 2;
   const std::string share =
-      "half of this machine's " + format_bytes(static_cast<double>(*physical));
-  if (available && *available < half) return {*available, "all that is available"};
-  return {half, share};
+      "a quarter of this machine's " + format_bytes(static_cast<double>(*physical));
+  if (available && *available < quarter) return {*available, "all that is available"};
+  if (available && *available < half) return {quarter, share, *available};
+  return {quarter, share, half};
 }
 
 MemoryBudget memory_budget_of_gib(double gib, const std::string& origin) {

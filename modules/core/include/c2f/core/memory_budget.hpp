@@ -14,21 +14,33 @@ namespace c2f {
 
 struct MemoryBudget {
   std::size_t bytes = 0;
-  /// How the budget was chosen, for reports: "--memory 2", "half of this machine's 23.5 GiB".
+  /// How the budget was chosen, for reports: "--memory 2", "a quarter of this machine's ...".
   std::string origin;
+  /// What a run whose needs (its floor, its data preparation) exceed `bytes` may take instead:
+  /// the default budget grows to a run's needs up to half of the machine; a budget given
+  /// explicitly does not grow (0, or anything up to bytes).
+  std::size_t growth_limit = 0;
 
-  /// "11.7 GiB (half of this machine's 23.5 GiB)".
+  /// The most a run may need: bytes, or growth_limit when larger.
+  [[nodiscard]] std::size_t ceiling() const noexcept;
+  /// The budget of a run whose needs are `need` bytes: bytes, grown to `need` up to ceiling().
+  [[nodiscard]] std::size_t for_need(std::size_t need) const noexcept;
+
+  /// "5.9 GiB (a quarter of this machine's 23.5 GiB; a run that needs more may take up to
+  /// 11.8 GiB)", "2.0 GiB (--memory 2)".
   [[nodiscard]] std::string describe() const;
 
   /// Throws std::invalid_argument "<what> needs <bytes>, more than the run's memory budget of
-  /// <budget> (<origin>)" when `bytes` (std::nullopt: beyond std::size_t) exceeds the budget.
+  /// <budget> (<origin>)" when `bytes` (std::nullopt: beyond std::size_t) exceeds ceiling().
   void require_within(const std::string& what, std::optional<std::size_t> bytes) const;
   /// require_within, then require_memory: before allocating, also what the machine has.
   void require(const std::string& what, std::optional<std::size_t> bytes) const;
 };
 
-/// The default: half of the machine's physical memory, at most what it has available
-/// (available_memory_bytes), leaving the rest to the user's other work. A machine that reports
+/// The default: a quarter of the machine's physical memory, growing to what a run needs up to
+/// half of it, and at most what the machine has available (available_memory_bytes), leaving the
+/// rest to the user's other work. The solvers' optional memory (recycled move graphs) buys
+/// little beyond that (docs/performance.md, "One memory budget"). A machine that reports
 /// neither gets 4 GiB.
 [[nodiscard]] MemoryBudget default_memory_budget();
 
