@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -465,17 +466,18 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
   const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
   const SliceSmoother smoother(clusters, neighbours, w, h, options.cell, options.threads);
   // Blocks of kLanes labels, each filtered by one thread straight from the pixel-major volume
-  // (a pixel's labels of a block are side by side); every label's arithmetic is the same
-  // whatever thread and lane run it, so the volume does not depend on the thread count. The
-  // denominators (the smoothed constant slice) are computed by the first thread in its own
-  // workspace while the others smooth their first blocks; each thread waits for them before
-  // its first division.
+  // (a pixel's labels of a block are side by side), taken in order by whichever thread is free;
+  // every label's arithmetic is the same whatever thread and lane run it, so the volume does
+  // not depend on the thread count. The denominators (the smoothed constant slice) are
+  // computed by the first thread in its own workspace while the others smooth their first
+  // blocks; each thread waits for them before its first division.
   const auto labels = static_cast<std::size_t>(volume.labels());
   const std::size_t blocks = (labels + kLanes - 1) / kLanes;
   const std::size_t threads = std::min<std::size_t>(resolved_threads(options.threads), blocks);
   const std::span<float> costs = volume.values();
   std::vector<double> denominator(pixels);
   std::latch denominator_ready(1);
+  std::atomic<std::size_t> next_block{0};
   parallel_for(
       threads,
       [&](std::size_t thread) {
@@ -494,7 +496,7 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
             denominator[p] = out[0];
           }
         }
-        for (std::size_t block = thread; block < blocks; block += threads) {
+        for (std::size_t block; (block = next_block.fetch_add(1)) < blocks;) {
           const std::size_t first = block * kLanes;
           const std::size_t count = std::min<std::size_t>(kLanes, labels - first);
           smoother.smooth(costs.data() + first, labels, count, space);
