@@ -14,13 +14,24 @@
 using namespace c2f;
 using namespace c2f::test;
 
+namespace {
+
+/// A random energy of 2-30 variables, 1-5 labels and up to 3 edges per variable.
+PairwiseEnergy random_small_energy(Rng& rng) {
+  const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 30)(rng);
+  const int num_labels = std::uniform_int_distribution<int>(1, 5)(rng);
+  return random_energy(rng, n, num_labels,
+                       std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
+}
+
+}  // namespace
+
 TEST_CASE("reduced energy of y equals original energy of expand(y)", "[lift][reduce][property]") {
   Rng rng(20261121);
   for (int trial = 0; trial < 400; ++trial) {
-    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 30)(rng);
-    const int num_labels = std::uniform_int_distribution<int>(1, 5)(rng);
-    const PairwiseEnergy energy = random_energy(
-        rng, n, num_labels, std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
+    const PairwiseEnergy energy = random_small_energy(rng);
+    const std::size_t n = energy.num_variables();
+    const int num_labels = energy.num_labels();
     const DensePartition partition = random_partition(rng, n, n);
     const PairwiseEnergy reduced = reduce(energy, partition);
     REQUIRE(reduced.num_variables() == partition.num_groups());
@@ -142,10 +153,9 @@ TEST_CASE("a float energy reduces to the double reduction of its stored costs",
           "[lift][reduce][float]") {
   Rng rng(20261125);
   for (int trial = 0; trial < 100; ++trial) {
-    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 30)(rng);
-    const int num_labels = std::uniform_int_distribution<int>(1, 5)(rng);
-    const PairwiseEnergy energy = random_energy(
-        rng, n, num_labels, std::uniform_int_distribution<std::size_t>(0, 3 * n)(rng));
+    const PairwiseEnergy energy = random_small_energy(rng);
+    const std::size_t n = energy.num_variables();
+    const int num_labels = energy.num_labels();
     std::vector<float> stored(energy.unaries().size());
     energy.unaries().visit([&](auto costs) {
       for (std::size_t i = 0; i < costs.size(); ++i) stored[i] = static_cast<float>(costs[i]);

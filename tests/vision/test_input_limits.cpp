@@ -29,6 +29,9 @@ TEST_CASE("sizes are multiplied without wrapping and memory needs are checked", 
   using c2f::checked_product;
   CHECK(checked_product({3, 5, 7}) == std::size_t{105});
   CHECK(checked_product({}) == std::size_t{1});
+  CHECK(c2f::checked_sum({3, 5, 7}) == std::size_t{15});
+  CHECK(c2f::checked_sum({}) == std::size_t{0});
+  CHECK_FALSE(c2f::checked_sum({std::numeric_limits<std::size_t>::max(), 1}).has_value());
   CHECK(checked_product({0, std::numeric_limits<std::size_t>::max(), 2}) == std::size_t{0});
   CHECK_FALSE(checked_product({std::size_t{1} << 32, std::size_t{1} << 32}).has_value());
   CHECK(c2f::format_bytes(512) == "512 bytes");

@@ -67,22 +67,12 @@ std::optional<std::size_t> run_memory_floor(const SolverChoice& choice, const Pr
   const auto per_variable = checked_product({size.variables, kPerVariableBytes});
   const auto solver = solver_bytes(choice, size);
   if (!per_variable || !solver) return std::nullopt;
-  std::size_t total = kProcessBytes;
-  for (const std::size_t part : {size.energy_bytes, *per_variable, *solver}) {
-    if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
-    total += part;
-  }
-  return total;
+  return checked_sum({kProcessBytes, size.energy_bytes, *per_variable, *solver});
 }
 
 std::optional<std::size_t> coarse_level_memory(const SolverChoice& choice, const ProblemSize& size,
                                                std::size_t groups) {
-  // The coarse levels' solver makes near and shift moves only when every level does.
-  SolverChoice coarse = choice;
-  if (choice.near_levels == NearLevels::original) {
-    coarse.near_radius = 0;
-    coarse.shift_moves = false;
-  }
+  const SolverChoice coarse = choice.coarse_levels_choice();
   const ProblemSize level{groups, size.labels, size.edges, 0};
   const auto labels = static_cast<std::size_t>(std::max(size.labels, 0));
   const auto unaries = checked_product({groups, labels, sizeof(double)});
@@ -99,12 +89,7 @@ std::optional<std::size_t> coarse_level_memory(const SolverChoice& choice, const
     const auto all = one ? checked_product({*one, moves}) : one;
     graphs = std::min(all.value_or(static_cast<std::size_t>(-1)), choice.graph_memory_limit);
   }
-  std::size_t total = 0;
-  for (const std::size_t part : {*unaries, *edges, *solver, graphs}) {
-    if (total > static_cast<std::size_t>(-1) - part) return std::nullopt;
-    total += part;
-  }
-  return total;
+  return checked_sum({*unaries, *edges, *solver, graphs});
 }
 
 CoarseLevelFits coarse_level_admission(const SolverChoice& choice, const ProblemSize& size) {

@@ -22,6 +22,15 @@ std::optional<std::size_t> checked_product(std::initializer_list<std::size_t> fa
   return product;
 }
 
+std::optional<std::size_t> checked_sum(std::initializer_list<std::size_t> terms) {
+  std::size_t sum = 0;
+  for (const std::size_t term : terms) {
+    if (sum > std::numeric_limits<std::size_t>::max() - term) return std::nullopt;
+    sum += term;
+  }
+  return sum;
+}
+
 namespace {
 
 /// MemAvailable from /proc/meminfo, in bytes.

@@ -35,6 +35,7 @@ using c2f::cheapest_label;
 using c2f::check_capacities;
 using c2f::check_topology;
 using c2f::checked_product;
+using c2f::checked_sum;
 using c2f::ClassWeight;
 using c2f::close_checked;
 using c2f::coarse_level_admission;

@@ -92,6 +92,9 @@ struct RangeNeighbour {
   double weight;
 };
 
+/// No slot: the list has no such entry (or the node is off the grid).
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
 /// Sorted lists of cluster ids, one per grid node, stored end to end: node n's list is
 /// ids[offset[n] .. offset[n + 1]). An entry's index in `ids` is its slot.
 struct NodeLists {
@@ -99,11 +102,18 @@ struct NodeLists {
   std::vector<std::size_t> ids;
 
   [[nodiscard]] std::size_t size() const { return ids.size(); }
-  /// The slot of cluster c in node n's list (c must be in it).
-  [[nodiscard]] std::size_t slot(std::size_t n, std::size_t c) const {
-    const auto first = ids.begin() + static_cast<std::ptrdiff_t>(offset[n]);
-    const auto last = ids.begin() + static_cast<std::ptrdiff_t>(offset[n + 1]);
-    return static_cast<std::size_t>(std::lower_bound(first, last, c) - ids.begin());
+  /// Node n's list.
+  [[nodiscard]] std::span<const std::size_t> of(std::size_t n) const {
+    return {ids.data() + offset[n], offset[n + 1] - offset[n]};
+  }
+  /// The slot of cluster c in node n's list, or kNone when the list does not hold c.
+  [[nodiscard]] std::uint32_t find(std::size_t n, std::size_t c) const {
+    const std::span<const std::size_t> list = of(n);
+    const auto found = std::lower_bound(list.begin(), list.end(), c);
+    return found != list.end() && *found == c
+               ? static_cast<std::uint32_t>(offset[n] +
+                                            static_cast<std::size_t>(found - list.begin()))
+               : kNone;
   }
 };
 
@@ -141,26 +151,13 @@ NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, b
           for (std::size_t t = centre >= 2 ? centre - 2 : 0; t <= std::min(centre + 2, size - 1);
                ++t) {
             const std::size_t n = along_y ? t * gw + gx : gy * gw + t;
-            list.insert(list.end(),
-                        lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]),
-                        lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]));
+            const std::span<const std::size_t> window = lists.of(n);
+            list.insert(list.end(), window.begin(), window.end());
           }
         }
       },
       threads);
   return flattened(std::move(unions), threads);
-}
-
-/// No slot: the list has no such entry (or the node is off the grid).
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-/// The slot of cluster c in node n's list, or kNone when the list does not hold c.
-std::uint32_t find_slot(const NodeLists& lists, std::size_t n, std::size_t c) {
-  const auto first = lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n]);
-  const auto last = lists.ids.begin() + static_cast<std::ptrdiff_t>(lists.offset[n + 1]);
-  const auto found = std::lower_bound(first, last, c);
-  return found != last && *found == c ? static_cast<std::uint32_t>(found - lists.ids.begin())
-                                      : kNone;
 }
 
 /// For every entry of `to` (node n, cluster c) and each of the 5 taps j: the slot of c in the
@@ -261,8 +258,7 @@ class SliceSmoother {
             const auto c = static_cast<std::size_t>(clusters.cluster_of[p]);
             const auto nodes = corners(s);
             PixelSplat& pixel = pixels_[p];
-            for (std::size_t k = 0; k < 4; ++k)
-              pixel.slot[k] = static_cast<std::uint32_t>(splatted_.slot(nodes[k], c));
+            for (std::size_t k = 0; k < 4; ++k) pixel.slot[k] = splatted_.find(nodes[k], c);
             pixel.weight = {(1 - s.fx) * (1 - s.fy), s.fx * (1 - s.fy), (1 - s.fx) * s.fy,
                             s.fx * s.fy};
           }
@@ -344,7 +340,7 @@ class SliceSmoother {
             for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
               for (const RangeNeighbour& other : neighbours[splatted_.ids[e]]) {
                 for (std::size_t tx = gx >= 2 ? gx - 2 : 0; tx <= std::min(gx + 2, gw_ - 1); ++tx) {
-                  if (find_slot(blurred_y, gy * gw_ + tx, other.cluster) != kNone) {
+                  if (blurred_y.find(gy * gw_ + tx, other.cluster) != kNone) {
                     lists[n].push_back(other.cluster);
                     break;
                   }
@@ -365,11 +361,7 @@ class SliceSmoother {
     parallel_for(
         gw_ * gh_,
         [&](std::size_t n) {
-          const auto list = [n](const NodeLists& l) {
-            return std::span<const std::size_t>(l.ids.data() + l.offset[n],
-                                                l.offset[n + 1] - l.offset[n]);
-          };
-          const auto a = list(read), b = list(blurred_y);
+          const auto a = read.of(n), b = blurred_y.of(n);
           std::set_intersection(a.begin(), a.end(), b.begin(), b.end(),
                                 std::back_inserter(lists[n]));
         },
@@ -387,7 +379,7 @@ class SliceSmoother {
         [&](std::size_t n) {
           for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
             for (const RangeNeighbour& other : neighbours[splatted_.ids[e]]) {
-              const std::uint32_t slot = find_slot(needed_x_, n, other.cluster);
+              const std::uint32_t slot = needed_x_.find(n, other.cluster);
               if (slot == kNone) continue;
               per_node[n].push_back({slot, other.weight});
               ++counts[e];

@@ -106,9 +106,9 @@ struct SolverChoice {
   /// On the original problem only (the default) was the faster coarse-to-fine run in every
   /// measurement (docs/results.md, "Near moves on the original problem only").
   NearLevels near_levels = NearLevels::original;
-  /// The bytes a coarse level's reduced energy and its solver's working memory may take
-  /// (coarse_level_admission; fit_to_budget sets it from the run's memory budget). The default
-  /// admits every level.
+  /// The bytes a coarse level's reduced energy, its solver's working memory and its recycled
+  /// graphs may take (coarse_level_admission; fit_to_budget sets it from the run's memory
+  /// budget). The default admits every level.
   std::size_t coarse_level_room = static_cast<std::size_t>(-1);
 
   /// Swap's options.
@@ -129,16 +129,19 @@ struct SolverChoice {
     options.shift_moves = shift_moves;
     return options;
   }
-  /// Expansion's options on coarse levels: without near and shift moves unless near_levels is
-  /// all. coarse_to_fine gives the coarse levels a solver of their own exactly when these
-  /// differ from expansion_options().
-  [[nodiscard]] ExpansionOptions coarse_expansion_options() const {
-    ExpansionOptions options = expansion_options();
+  /// The choice the coarse levels run: without near and shift moves unless near_levels is all.
+  [[nodiscard]] SolverChoice coarse_levels_choice() const {
+    SolverChoice coarse = *this;
     if (near_levels == NearLevels::original) {
-      options.near_radius = 0;
-      options.shift_moves = false;
+      coarse.near_radius = 0;
+      coarse.shift_moves = false;
     }
-    return options;
+    return coarse;
+  }
+  /// Expansion's options on coarse levels (coarse_levels_choice). coarse_to_fine gives the
+  /// coarse levels a solver of their own exactly when these differ from expansion_options().
+  [[nodiscard]] ExpansionOptions coarse_expansion_options() const {
+    return coarse_levels_choice().expansion_options();
   }
 
   /// Empty when usable, else a message naming the field (an order the solver cannot take).

@@ -12,6 +12,8 @@ namespace c2f {
 
 /// The product of `factors`, or std::nullopt when it does not fit in std::size_t.
 std::optional<std::size_t> checked_product(std::initializer_list<std::size_t> factors);
+/// The sum of `terms`, or std::nullopt when it does not fit in std::size_t.
+std::optional<std::size_t> checked_sum(std::initializer_list<std::size_t> terms);
 
 /// The bytes this process may still allocate: the smaller of the memory the kernel reports
 /// available (MemAvailable in /proc/meminfo, else the physical memory) and the address-space
