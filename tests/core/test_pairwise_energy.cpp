@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -97,4 +99,27 @@ TEST_CASE("float unaries: the energy is what the stored float costs define",
                     Catch::Contains("unaries: cost of label 1 at variable 1 is not finite"));
   CHECK_THROWS_WITH(PairwiseEnergy::with_float_unaries(2, 2, {0, 0, 0}, terms, {}),
                     Catch::Contains("unaries has 3 entries"));
+}
+
+TEST_CASE("the first non-finite unary is named, wherever it is", "[core][energy][validation]") {
+  // 1500 variables x 3 labels: the costs are scanned in chunks of 1024, so these land in the
+  // first, a middle and the last chunk, in double and in float.
+  const std::vector<PairwiseTerm> terms{PairwiseTerm::potts()};
+  const std::size_t variables = 1500;
+  for (const std::size_t bad : {std::size_t{5}, std::size_t{2049}, std::size_t{4499}}) {
+    for (const double value :
+         {std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()}) {
+      std::vector<double> costs(variables * 3, 1.0);
+      costs[bad] = value;
+      if (bad + 7 < costs.size()) costs[bad + 7] = value;  // a later one is not the one named
+      const std::string named = "cost of label " + std::to_string(bad % 3) + " at variable " +
+                                std::to_string(bad / 3) + " is not finite";
+      INFO("index " << bad << ", value " << value);
+      CHECK_THROWS_WITH(PairwiseEnergy(variables, 3, costs, terms, {}), Catch::Contains(named));
+      const std::vector<float> stored(costs.begin(), costs.end());
+      CHECK_THROWS_WITH(PairwiseEnergy::with_float_unaries(variables, 3, stored, terms, {}),
+                        Catch::Contains(named));
+    }
+  }
+  CHECK_NOTHROW(PairwiseEnergy(variables, 3, std::vector<double>(variables * 3, 1e300), terms, {}));
 }
