@@ -43,8 +43,8 @@ std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t h
   // Per pixel and label: the volume (4 bytes, float), which becomes the unaries. Per pixel: the
   // images, gradient planes, clusters, the filter's lists and slots, and labelings (512), and
   // per filtering thread its two buffers of grid entries, 16 labels in float each (640: up to
-  // 10 entries of 64 bytes; 3-9 on the datasets and on a pair of noise images). Full-size Aloe: 2.9 GiB on
-  // one thread (2.2 measured), 3.7 on two (2.6 measured).
+  // 10 entries of 64 bytes; 3-9 on the datasets and on a pair of noise images). Full-size
+  // Aloe: 2.9 GiB on one thread (2.2 measured), 3.7 on two (2.6 measured).
   const std::optional<std::size_t> pixels = checked_product({width, height});
   if (!pixels || labels < 0) return std::nullopt;
   const auto per_pixel = checked_product({static_cast<std::size_t>(labels), sizeof(float)});
