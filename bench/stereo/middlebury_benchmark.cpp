@@ -6,7 +6,7 @@
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
 //                    [--flat-near-radius R] [--c2f-near-radius R] [--flat-shift-moves]
 //                    [--c2f-shift-moves] [--near-levels original|all] [--threads N]
-//                    [--prep-one-thread] [--memory GIB]
+//                    [--prep-one-thread] [--prep-repeats K] [--memory GIB]
 //       Solves SCENE (a scenes.csv row, middlebury2014/NAME, kitti2015/ID or opencv-doc/aloe)
 //       flat and coarse to fine from the same TSGO cost volume,
 //       with the same solver (alpha-expansion with the given label order on the given max-flow
@@ -22,7 +22,10 @@
 //       c2f-stereo). The row has the peak resident size of the data preparation and of each run
 //       (the process's, reset before each: it includes the scene and energy already resident)
 //       and, with --prep-one-thread, the data preparation's time on one thread (that energy must
-//       equal the one prepared on --threads, else the run stops).
+//       equal the one prepared on --threads, else the run stops). With --prep-repeats K the
+//       preparation is timed K times on --threads (and K times on one thread, alternating with
+//       them), and the row holds the median of each: sub-second preparations vary by a third
+//       from one run to the next.
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
@@ -45,6 +48,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -124,6 +128,7 @@ struct Settings {
   bool c2f_shift_moves = false;   ///< and of the coarse-to-fine run
   NearLevels near_levels = NearLevels::original;  ///< where near and shift moves are made
   bool prep_one_thread = false;  ///< also prepare on one thread first (time, identity check)
+  int prep_repeats = 1;          ///< preparations timed (on each thread count); their medians
   MemoryBudget memory = default_memory_budget();  ///< each run's, as c2f-stereo --memory
 };
 
@@ -190,29 +195,44 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     throw std::invalid_argument("--schedule: " + problem + " (" + std::to_string(tsgo.labels) +
                                 " labels)");
   }
-  // On request the data is first prepared on one thread, timed, fingerprinted and dropped; the
-  // run's own preparation (on tsgo.threads) must give the same energy.
-  double prep_one_thread_seconds = std::nan("");
-  std::uint64_t one_thread_fingerprint = 0;
-  if (settings.prep_one_thread) {
-    TsgoOptions one = tsgo;
-    one.threads = 1;
+  // The data is prepared settings.prep_repeats times on tsgo.threads, each time (on request)
+  // after a preparation on one thread; both are timed, the medians go in the row, and every
+  // energy must equal the first one prepared. The run keeps the last; its peak resident size
+  // is that preparation's.
+  std::vector<double> one_thread_seconds, threads_seconds;
+  std::uint64_t first_fingerprint = 0;
+  // Prepares on `options`, appends the seconds to `seconds` and checks the energy.
+  auto prepare = [&](const TsgoOptions& options, std::vector<double>& seconds) {
+    const bool first = one_thread_seconds.empty() && threads_seconds.empty();
     const auto start = std::chrono::steady_clock::now();
-    one_thread_fingerprint = energy_fingerprint(tsgo_problem(scene.left, scene.right, one).energy);
-    prep_one_thread_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    TsgoProblem prepared = tsgo_problem(scene.left, scene.right, options);
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const std::uint64_t fingerprint = energy_fingerprint(prepared.energy);
+    if (first) first_fingerprint = fingerprint;
+    if (fingerprint != first_fingerprint) {
+      throw std::runtime_error("scene '" + name + "': the energy prepared on " +
+                               std::to_string(resolved_threads(options.threads)) +
+                               " threads differs from the one prepared before");
+    }
+    return prepared;
+  };
+  std::optional<TsgoProblem> prepared;
+  double prep_peak_mib = 0.0;
+  for (int repeat = 0; repeat < settings.prep_repeats; ++repeat) {
+    if (settings.prep_one_thread) {
+      TsgoOptions one = tsgo;
+      one.threads = 1;
+      prepare(one, one_thread_seconds);
+    }
+    prepared.reset();
+    bench::reset_peak_resident();
+    prepared.emplace(prepare(tsgo, threads_seconds));
+    prep_peak_mib = bench::peak_resident_mib();
   }
-  bench::reset_peak_resident();
-  const auto prep_start = std::chrono::steady_clock::now();
-  const TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
-  const double prep_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - prep_start).count();
-  const double prep_peak_mib = bench::peak_resident_mib();
-  if (settings.prep_one_thread && energy_fingerprint(problem.energy) != one_thread_fingerprint) {
-    throw std::runtime_error("scene '" + name + "': the energy prepared on " +
-                             std::to_string(resolved_threads(tsgo.threads)) +
-                             " threads differs from the one prepared on one thread");
-  }
+  const TsgoProblem& problem = *prepared;
+  const double prep_seconds = bench::median(threads_seconds);
+  const double prep_one_thread_seconds = bench::median(one_thread_seconds);
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   // Trace files are named by the scene, its dataset prefix joined by '-' (kitti2015-000000_10).
@@ -404,6 +424,9 @@ int main(int argc, char** argv) {
         .flag("prep-one-thread", &settings.prep_one_thread,
               "prepare the data on one thread first too: its time in the row, and the run stops "
               "when the energy differs from the one prepared on --threads")
+        .integer("prep-repeats", &settings.prep_repeats, {1, 100},
+                 "time the data preparation this many times (on each thread count, alternating "
+                 "with --prep-one-thread); the row holds the medians")
         .real("memory", &memory_gib, {0.0, 1e6, false},
               "each run's memory budget in GiB, as c2f-stereo --memory (0, the default: a "
               "quarter of this machine's memory, growing to a run's needs up to half)")

@@ -108,10 +108,9 @@ TEST_CASE("the benchmark scripts print their usage and refuse a missing data fol
           "[bench][cli][malformed]") {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-scripts";
   std::filesystem::remove_all(out);
-  for (const char* script :
-       {"bench/solvers/run-backends", "bench/stereo/run-middlebury", "bench/stereo/run-scaling",
-        "bench/segment/run-coopcuts",
-        "bench/segment/run-kmeans-seeds", "bench/segment/run-crossval"}) {
+  for (const char* script : {"bench/solvers/run-backends", "bench/stereo/run-middlebury",
+                             "bench/stereo/run-scaling", "bench/segment/run-coopcuts",
+                             "bench/segment/run-kmeans-seeds", "bench/segment/run-crossval"}) {
     const std::string path = std::string(C2F_SOURCE_DIR) + "/" + script;
     const auto help = c2f::test::run_tool(path, "--help");
     INFO(script << "\n" << help.output);
@@ -232,11 +231,12 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
              Catch::Contains("Teddy\t") && Catch::Contains("converged\tconverged\t28\t"));
 
   // A Middlebury 2014 scene: its own label count (ndisp 73 shrunk by 4) and measure, and the
-  // data preparation's time and threads in the row; the summary reads such rows.
+  // data preparation's time (median of three on each thread count) and threads in the row;
+  // the summary reads such rows.
   const auto scene2014 = c2f::test::run_tool(
       bench + "/c2f-bench-stereo",
       "run middlebury2014/Adirondack --schedule aggregated --downscale 4 --threads 2 "
-      "--prep-one-thread --memory 1 --header --out " +
+      "--prep-one-thread --prep-repeats 3 --memory 1 --header --out " +
           (out / "rows2014").string() + " --data " + data.string());
   INFO(scene2014.output);
   REQUIRE(scene2014.exit_code == 0);
@@ -246,8 +246,8 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
                              "memory_gib\n") &&
                  Catch::Contains("middlebury2014/Adirondack\t22196\t") &&
                  Catch::Contains("\t19\t") && Catch::Contains("\t1.00\n"));
-  // The one-thread preparation was timed (the energies matched, else the run stops) and each
-  // stretch's peak resident size is a number of MiB.
+  // The one-thread preparations were timed (the six energies matched, else the run stops) and
+  // each stretch's peak resident size is a number of MiB.
   const std::size_t row_start = scene2014.output.find("\nmiddlebury2014/Adirondack\t") + 1;
   std::stringstream row(
       scene2014.output.substr(row_start, scene2014.output.find('\n', row_start) - row_start));
@@ -268,6 +268,13 @@ TEST_CASE("c2f-bench-stereo and c2f-bench-levels take superpixel schedules, as c
                                Catch::Contains("| 19 | ") && Catch::Contains(" (2) |") &&
                                Catch::Contains("C2F within 1e-4 of flat E (s)") &&
                                Catch::Contains("peak MiB prep / flat / C2F"));
+
+  // A repeat count outside 1..100 is refused before anything is prepared.
+  const auto no_repeats = c2f::test::run_tool(
+      bench + "/c2f-bench-stereo",
+      "run middlebury2014/Adirondack --downscale 4 --prep-repeats 0 --data " + data.string());
+  CHECK(no_repeats.exit_code != 0);
+  CHECK_THAT(no_repeats.output, Catch::Contains("--prep-repeats"));
 
   const auto levels = c2f::test::run_tool(
       bench + "/c2f-bench-levels", "Teddy --schedule \"slic:16 slic:8\" --data " + data.string());
