@@ -229,6 +229,11 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     bench::reset_peak_resident();
     prepared.emplace(prepare(tsgo, threads_seconds));
     prep_peak_mib = bench::peak_resident_mib();
+    std::fprintf(stderr, "c2f-bench-stereo: %s preparation %d of %d: %.3f s on %d threads",
+                 name.c_str(), repeat + 1, settings.prep_repeats, threads_seconds.back(),
+                 resolved_threads(tsgo.threads));
+    if (settings.prep_one_thread) std::fprintf(stderr, ", %.3f s on 1", one_thread_seconds.back());
+    std::fprintf(stderr, "\n");
   }
   const TsgoProblem& problem = *prepared;
   const double prep_seconds = bench::median(threads_seconds);
