@@ -24,8 +24,8 @@
 //       and, with --prep-one-thread, the data preparation's time on one thread (that energy must
 //       equal the one prepared on --threads, else the run stops). With --prep-repeats K the
 //       preparation is timed K times on --threads (and K times on one thread, alternating with
-//       them), and the row holds the median of each: sub-second preparations vary by a third
-//       from one run to the next.
+//       them), and the row holds the median of each: sub-second preparations vary by up to a
+//       third from one run to the next.
 //   c2f-bench-stereo summarize ROWS.tsv
 //       Prints the markdown table of all rows and the medians.
 //
@@ -183,22 +183,20 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   return run;
 }
 
-int run_scene(const std::string& name, const std::string& data, const std::string& out,
-              const Settings& settings, bool header) {
-  const StereoScene scene = downscale(load_named_scene(data, name), settings.downscale);
-  const GridShape shape = scene.shape();
-  TsgoOptions tsgo;
-  tsgo.labels = settings.labels != 0 ? settings.labels : label_count(scene, 85);
-  tsgo.threads = settings.threads;
-  if (const std::string problem = parse_stereo_schedule(settings.schedule).validate(tsgo.labels);
-      !problem.empty()) {
-    throw std::invalid_argument("--schedule: " + problem + " (" + std::to_string(tsgo.labels) +
-                                " labels)");
-  }
-  // The data is prepared settings.prep_repeats times on tsgo.threads, each time (on request)
-  // after a preparation on one thread; both are timed, the medians go in the row, and every
-  // energy must equal the first one prepared. The run keeps the last; its peak resident size
-  // is that preparation's.
+/// The TSGO energy of a scene and how long preparing it took.
+struct Preparation {
+  TsgoProblem problem;        ///< the last one prepared on tsgo.threads
+  double seconds;             ///< median over the preparations on tsgo.threads
+  double one_thread_seconds;  ///< median over those on one thread (NaN without prep_one_thread)
+  double peak_mib;            ///< peak resident size during the last preparation
+};
+
+/// Prepares the scene's energy settings.prep_repeats times on tsgo.threads, each time (with
+/// settings.prep_one_thread) after a preparation on one thread, and times each. Every energy
+/// must equal the first one prepared (the thread count must not change it), else throws
+/// std::runtime_error naming the scene. Each preparation's seconds go to stderr.
+Preparation prepare_timed(const std::string& name, const StereoScene& scene,
+                          const TsgoOptions& tsgo, const Settings& settings) {
   std::vector<double> one_thread_seconds, threads_seconds;
   std::uint64_t first_fingerprint = 0;
   // Prepares on `options`, appends the seconds to `seconds` and checks the energy.
@@ -218,7 +216,7 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     return prepared;
   };
   std::optional<TsgoProblem> prepared;
-  double prep_peak_mib = 0.0;
+  double peak_mib = 0.0;
   for (int repeat = 0; repeat < settings.prep_repeats; ++repeat) {
     if (settings.prep_one_thread) {
       TsgoOptions one = tsgo;
@@ -228,16 +226,31 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
     prepared.reset();
     bench::reset_peak_resident();
     prepared.emplace(prepare(tsgo, threads_seconds));
-    prep_peak_mib = bench::peak_resident_mib();
+    peak_mib = bench::peak_resident_mib();
     std::fprintf(stderr, "c2f-bench-stereo: %s preparation %d of %d: %.3f s on %d threads",
                  name.c_str(), repeat + 1, settings.prep_repeats, threads_seconds.back(),
                  resolved_threads(tsgo.threads));
     if (settings.prep_one_thread) std::fprintf(stderr, ", %.3f s on 1", one_thread_seconds.back());
     std::fprintf(stderr, "\n");
   }
-  const TsgoProblem& problem = *prepared;
-  const double prep_seconds = bench::median(threads_seconds);
-  const double prep_one_thread_seconds = bench::median(one_thread_seconds);
+  return {std::move(*prepared), bench::median(threads_seconds), bench::median(one_thread_seconds),
+          peak_mib};
+}
+
+int run_scene(const std::string& name, const std::string& data, const std::string& out,
+              const Settings& settings, bool header) {
+  const StereoScene scene = downscale(load_named_scene(data, name), settings.downscale);
+  const GridShape shape = scene.shape();
+  TsgoOptions tsgo;
+  tsgo.labels = settings.labels != 0 ? settings.labels : label_count(scene, 85);
+  tsgo.threads = settings.threads;
+  if (const std::string problem = parse_stereo_schedule(settings.schedule).validate(tsgo.labels);
+      !problem.empty()) {
+    throw std::invalid_argument("--schedule: " + problem + " (" + std::to_string(tsgo.labels) +
+                                " labels)");
+  }
+  const Preparation preparation = prepare_timed(name, scene, tsgo, settings);
+  const TsgoProblem& problem = preparation.problem;
   // The scene's traces land together when its row is printed (parallel runs share the folder;
   // each stages its own files).
   // Trace files are named by the scene, its dataset prefix joined by '-' (kitti2015-000000_10).
@@ -300,9 +313,9 @@ int run_scene(const std::string& name, const std::string& data, const std::strin
       c2f.summary.seconds, anytime.reach_seconds, anytime.reach_ratio, anytime.flat_error,
       anytime.run_error, 1.0 - anytime.run_error / anytime.flat_error, sgbm_errors.nonoccluded,
       sgbm_errors.all, sgbm_seconds, std::string(to_string(flat.summary.reason)).c_str(),
-      std::string(to_string(c2f.summary.reason)).c_str(), tsgo.labels, prep_seconds,
+      std::string(to_string(c2f.summary.reason)).c_str(), tsgo.labels, preparation.seconds,
       resolved_threads(tsgo.threads), anytime.band_seconds, anytime.band_ratio,
-      prep_one_thread_seconds, prep_peak_mib, flat_peak_mib, c2f_peak_mib,
+      preparation.one_thread_seconds, preparation.peak_mib, flat_peak_mib, c2f_peak_mib,
       settings.memory.bytes / double(std::size_t{1} << 30));
   output.commit();
   return 0;
