@@ -198,31 +198,28 @@ struct Preparation {
 Preparation prepare_timed(const std::string& name, const StereoScene& scene,
                           const TsgoOptions& tsgo, const Settings& settings) {
   std::vector<double> one_thread_seconds, threads_seconds;
-  std::uint64_t first_fingerprint = 0;
+  std::optional<std::uint64_t> first_fingerprint;
   // Prepares on `options`, appends the seconds to `seconds` and checks the energy.
   auto prepare = [&](const TsgoOptions& options, std::vector<double>& seconds) {
-    const bool first = one_thread_seconds.empty() && threads_seconds.empty();
     const auto start = std::chrono::steady_clock::now();
     TsgoProblem prepared = tsgo_problem(scene.left, scene.right, options);
     seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const std::uint64_t fingerprint = energy_fingerprint(prepared.energy);
-    if (first) first_fingerprint = fingerprint;
-    if (fingerprint != first_fingerprint) {
+    if (!first_fingerprint) first_fingerprint = fingerprint;
+    if (fingerprint != *first_fingerprint) {
       throw std::runtime_error("scene '" + name + "': the energy prepared on " +
                                std::to_string(resolved_threads(options.threads)) +
                                " threads differs from the one prepared before");
     }
     return prepared;
   };
+  TsgoOptions one_thread = tsgo;
+  one_thread.threads = 1;
   std::optional<TsgoProblem> prepared;
   double peak_mib = 0.0;
   for (int repeat = 0; repeat < settings.prep_repeats; ++repeat) {
-    if (settings.prep_one_thread) {
-      TsgoOptions one = tsgo;
-      one.threads = 1;
-      prepare(one, one_thread_seconds);
-    }
+    if (settings.prep_one_thread) prepare(one_thread, one_thread_seconds);
     prepared.reset();
     bench::reset_peak_resident();
     prepared.emplace(prepare(tsgo, threads_seconds));
