@@ -72,7 +72,7 @@ TEST_CASE("float unaries: the energy is what the stored float costs define",
   // Costs that float does not hold exactly: the float energy is the double energy of the
   // float-rounded costs, summed in double.
   const std::vector<double> exact{0.1, 0.7, 1.0 / 3.0, 2.2, 1e-9, 5.0};
-  const std::vector<float> stored(exact.begin(), exact.end());
+  const FloatValues stored(exact.begin(), exact.end());
   const std::vector<double> rounded(stored.begin(), stored.end());
   const std::vector<PairwiseTerm> terms{PairwiseTerm::potts()};
   const std::vector<Edge> edges{Edge{0, 1, 0.3, 0}, Edge{1, 2, 1.5, 0}};
@@ -116,7 +116,7 @@ TEST_CASE("the first non-finite unary is named, wherever it is", "[core][energy]
                                 std::to_string(bad / 3) + " is not finite";
       INFO("index " << bad << ", value " << value);
       CHECK_THROWS_WITH(PairwiseEnergy(variables, 3, costs, terms, {}), Catch::Contains(named));
-      const std::vector<float> stored(costs.begin(), costs.end());
+      const FloatValues stored(costs.begin(), costs.end());
       CHECK_THROWS_WITH(PairwiseEnergy::with_float_unaries(variables, 3, stored, terms, {}),
                         Catch::Contains(named));
     }

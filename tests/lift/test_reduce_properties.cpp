@@ -156,7 +156,7 @@ TEST_CASE("a float energy reduces to the double reduction of its stored costs",
     const PairwiseEnergy energy = random_small_energy(rng);
     const std::size_t n = energy.num_variables();
     const int num_labels = energy.num_labels();
-    std::vector<float> stored(energy.unaries().size());
+    c2f::FloatValues stored(energy.unaries().size());
     energy.unaries().visit([&](auto costs) {
       for (std::size_t i = 0; i < costs.size(); ++i) stored[i] = static_cast<float>(costs[i]);
     });

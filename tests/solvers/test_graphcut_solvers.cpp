@@ -350,7 +350,7 @@ TEST_CASE("expansion and swap read a float energy as the double energy of its st
   // Quarters are exact in float and make the costs non-integral.
   std::vector<double> costs = twin.unaries().to_doubles();
   for (double& c : costs) c += 0.25;
-  const std::vector<float> stored(costs.begin(), costs.end());
+  const c2f::FloatValues stored(costs.begin(), costs.end());
   const std::vector<PairwiseTerm> terms(twin.terms().begin(), twin.terms().end());
   const std::vector<Edge> edges(twin.edges().begin(), twin.edges().end());
   const PairwiseEnergy single =

@@ -73,7 +73,7 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
   // Float unaries: the energy's own bytes as predicted, half the double energy's unaries.
   const std::vector<double> table(36, 1.0);
   const PairwiseEnergy single = PairwiseEnergy::with_float_unaries(
-      600, 6, std::vector<float>(3600, 0.5f), {PairwiseTerm::table(6, table)},
+      600, 6, c2f::FloatValues(3600, 0.5f), {PairwiseTerm::table(6, table)},
       grid_edges({30, 20}, Connectivity::four, [](VariableIndex, VariableIndex) { return 1.0; }));
   const auto single_predicted = grid_problem_size(30, 20, 6, CostStorage::single_precision);
   REQUIRE(single_predicted.has_value());

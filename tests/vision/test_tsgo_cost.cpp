@@ -78,6 +78,44 @@ TEST_CASE("the matching cost sums six plane differences and truncates", "[stereo
   CHECK(std::isnan(volume.at(0, 0, 1)));  // leaves the right image
 }
 
+TEST_CASE("the matching cost is the definition at every cell, on any thread count",
+          "[stereo][tsgo][threads]") {
+  // Random planes (fixed seed), more labels than columns at the left border and a truncation
+  // that some sums exceed: every valid cell is min(sum of |left - right|, truncation), every
+  // invalid one (d > x) NaN, for 1 and 3 threads.
+  cv::RNG rng(17);
+  std::array<cv::Mat, 6> left, right;
+  for (std::size_t p = 0; p < 6; ++p) {
+    left[p] = cv::Mat(5, 23, CV_8U);
+    right[p] = cv::Mat(5, 23, CV_8U);
+    rng.fill(left[p], cv::RNG::UNIFORM, 0, 256);
+    rng.fill(right[p], cv::RNG::UNIFORM, 0, 256);
+  }
+  const int labels = 9;
+  const double truncation = 400.0;
+  for (const int threads : {1, 3}) {
+    const CostVolume volume = gradient_matching_cost(left, right, labels, truncation, threads);
+    int truncated = 0;
+    for (int y = 0; y < 5; ++y) {
+      for (int x = 0; x < 23; ++x) {
+        for (int d = 0; d < labels; ++d) {
+          const float cost = volume.at(static_cast<std::size_t>(x), static_cast<std::size_t>(y), d);
+          if (d > x) {
+            CHECK(std::isnan(cost));
+            continue;
+          }
+          int sum = 0;
+          for (std::size_t p = 0; p < 6; ++p)
+            sum += std::abs(left[p].at<uchar>(y, x) - right[p].at<uchar>(y, x - d));
+          truncated += sum > truncation;
+          CHECK(cost == static_cast<float>(std::min<double>(sum, truncation)));
+        }
+      }
+    }
+    CHECK(truncated > 0);
+  }
+}
+
 TEST_CASE("the erf approximation is within its published error", "[stereo][tsgo]") {
   for (double x = -4.0; x <= 4.0; x += 0.01)
     CHECK(std::abs(erf_approximation(x) - std::erf(x)) < 1.5e-7);

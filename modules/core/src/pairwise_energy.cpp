@@ -21,7 +21,7 @@ PairwiseEnergy::PairwiseEnergy(std::size_t num_variables, int num_labels,
 }
 
 PairwiseEnergy::PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_labels,
-                               std::vector<float> unaries, std::vector<PairwiseTerm> terms,
+                               FloatValues unaries, std::vector<PairwiseTerm> terms,
                                std::vector<Edge> edges)
     : num_variables_(num_variables),
       num_labels_(num_labels),
@@ -33,7 +33,7 @@ PairwiseEnergy::PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_
 }
 
 PairwiseEnergy PairwiseEnergy::with_float_unaries(std::size_t num_variables, int num_labels,
-                                                  std::vector<float> unaries,
+                                                  FloatValues unaries,
                                                   std::vector<PairwiseTerm> terms,
                                                   std::vector<Edge> edges) {
   return {FloatUnaries{},     num_variables,    num_labels,

@@ -17,6 +17,7 @@
 #include "c2f/adapters/solver_choice.hpp"
 #include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/anytime_solver.hpp"
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/enum_names.hpp"

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_term.hpp"
 #include "c2f/core/unary_costs.hpp"
@@ -42,9 +43,12 @@ class PairwiseEnergy {
   PairwiseEnergy(std::size_t num_variables, int num_labels, std::vector<double> unaries,
                  std::vector<PairwiseTerm> terms, std::vector<Edge> edges);
   /// As the constructor, with the unaries stored in float (single_precision()): half the
-  /// memory of the largest array; the energy is what the float costs define.
+  /// memory of the largest array; the energy is what the float costs define. The unaries are
+  /// taken as FloatValues (a std::vector<float> whose allocation writes nothing, so that a
+  /// producer can write a large array in parallel); a braced list converts, and a
+  /// std::vector<float> v is passed as {v.begin(), v.end()}.
   [[nodiscard]] static PairwiseEnergy with_float_unaries(std::size_t num_variables, int num_labels,
-                                                         std::vector<float> unaries,
+                                                         FloatValues unaries,
                                                          std::vector<PairwiseTerm> terms,
                                                          std::vector<Edge> edges);
 
@@ -78,16 +82,15 @@ class PairwiseEnergy {
  private:
   std::size_t num_variables_;
   int num_labels_;
-  std::vector<double> unaries_;       ///< empty when single_precision_
-  std::vector<float> float_unaries_;  ///< empty unless single_precision_
+  std::vector<double> unaries_;  ///< empty when single_precision_
+  FloatValues float_unaries_;    ///< empty unless single_precision_
   bool single_precision_ = false;
   std::vector<PairwiseTerm> terms_;
   std::vector<Edge> edges_;
 
   struct FloatUnaries {};
-  PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_labels,
-                 std::vector<float> unaries, std::vector<PairwiseTerm> terms,
-                 std::vector<Edge> edges);
+  PairwiseEnergy(FloatUnaries, std::size_t num_variables, int num_labels, FloatValues unaries,
+                 std::vector<PairwiseTerm> terms, std::vector<Edge> edges);
   void validate() const;
 };
 

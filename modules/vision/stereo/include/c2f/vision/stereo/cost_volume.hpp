@@ -8,7 +8,8 @@
 
 #include <cstddef>
 #include <span>
-#include <vector>
+
+#include "c2f/core/default_init_allocator.hpp"
 
 namespace c2f::vision {
 
@@ -17,6 +18,12 @@ class CostVolume {
   /// Throws std::invalid_argument unless width, height and labels are >= 1. `fill` is stored
   /// rounded to float.
   CostVolume(std::size_t width, std::size_t height, int labels, double fill = 0.0);
+  /// Tag of the constructor that leaves the cells unwritten.
+  struct Unwritten {};
+  /// As above, with the cells allocated but not written: the producer writes every cell (on
+  /// any threads) before anything reads one, so each page is touched first by the thread that
+  /// computes it, not by a serial fill.
+  CostVolume(std::size_t width, std::size_t height, int labels, Unwritten);
 
   [[nodiscard]] std::size_t width() const noexcept { return width_; }
   [[nodiscard]] std::size_t height() const noexcept { return height_; }
@@ -33,16 +40,16 @@ class CostVolume {
     return data_[(y * width_ + x) * static_cast<std::size_t>(labels_) +
                  static_cast<std::size_t>(d)];
   }
-  [[nodiscard]] const std::vector<float>& data() const noexcept { return data_; }
+  [[nodiscard]] const FloatValues& data() const noexcept { return data_; }
   /// The costs, pixel-major, for passes over the whole volume.
   [[nodiscard]] std::span<float> values() noexcept { return data_; }
   /// Moves the costs out (for PairwiseEnergy); the volume is empty afterwards.
-  std::vector<float> release() noexcept { return std::move(data_); }
+  FloatValues release() noexcept { return std::move(data_); }
 
  private:
   std::size_t width_, height_;
   int labels_;
-  std::vector<float> data_;
+  FloatValues data_;
 };
 
 }  // namespace c2f::vision
