@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/parallel_for.hpp"
 
 namespace c2f::vision {
@@ -95,20 +96,28 @@ struct RangeNeighbour {
 /// No slot: the list has no such entry (or the node is off the grid).
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+/// A vector allocated unwritten: every element is written afterwards by the task that computes
+/// it (so each page is first touched on that task's thread, not by a serial fill of zeros).
+template <typename T>
+using Buffer = std::vector<T, DefaultInitAllocator<T>>;
+
+/// A cluster's index (clusters number at most 2^20).
+using ClusterId = std::uint32_t;
+
 /// Sorted lists of cluster ids, one per grid node, stored end to end: node n's list is
 /// ids[offset[n] .. offset[n + 1]). An entry's index in `ids` is its slot.
 struct NodeLists {
   std::vector<std::size_t> offset;
-  std::vector<std::size_t> ids;
+  std::vector<ClusterId> ids;
 
   [[nodiscard]] std::size_t size() const { return ids.size(); }
   /// Node n's list.
-  [[nodiscard]] std::span<const std::size_t> of(std::size_t n) const {
+  [[nodiscard]] std::span<const ClusterId> of(std::size_t n) const {
     return {ids.data() + offset[n], offset[n + 1] - offset[n]};
   }
   /// The slot of cluster c in node n's list, or kNone when the list does not hold c.
   [[nodiscard]] std::uint32_t find(std::size_t n, std::size_t c) const {
-    const std::span<const std::size_t> list = of(n);
+    const std::span<const ClusterId> list = of(n);
     const auto found = std::lower_bound(list.begin(), list.end(), c);
     return found != list.end() && *found == c
                ? static_cast<std::uint32_t>(offset[n] +
@@ -117,9 +126,27 @@ struct NodeLists {
   }
 };
 
+/// The lists end to end in list order (each copied by one task on `threads` threads); each
+/// must already be sorted and without repeats.
+NodeLists concatenated(const std::vector<std::vector<ClusterId>>& lists, int threads) {
+  NodeLists flat;
+  flat.offset.reserve(lists.size() + 1);
+  flat.offset.push_back(0);
+  for (const auto& list : lists) flat.offset.push_back(flat.offset.back() + list.size());
+  flat.ids.resize(flat.offset.back());
+  parallel_for(
+      lists.size(),
+      [&](std::size_t n) {
+        std::copy(lists[n].begin(), lists[n].end(),
+                  flat.ids.begin() + static_cast<std::ptrdiff_t>(flat.offset[n]));
+      },
+      threads);
+  return flat;
+}
+
 /// The lists sorted and without repeats (each list by one task on `threads` threads), end to
 /// end in list order.
-NodeLists flattened(std::vector<std::vector<std::size_t>> lists, int threads) {
+NodeLists flattened(std::vector<std::vector<ClusterId>> lists, int threads) {
   parallel_for(
       lists.size(),
       [&](std::size_t n) {
@@ -127,46 +154,64 @@ NodeLists flattened(std::vector<std::vector<std::size_t>> lists, int threads) {
         lists[n].erase(std::unique(lists[n].begin(), lists[n].end()), lists[n].end());
       },
       threads);
-  NodeLists flat;
-  flat.offset.reserve(lists.size() + 1);
-  flat.offset.push_back(0);
-  for (const auto& list : lists) {
-    flat.ids.insert(flat.ids.end(), list.begin(), list.end());
-    flat.offset.push_back(flat.ids.size());
+  return concatenated(lists, threads);
+}
+
+/// The union of up to 5 sorted lists without repeats, sorted, appended to `out`: a merge that
+/// takes the smallest head each step.
+void merge_union(std::span<const std::span<const ClusterId>> lists, std::vector<ClusterId>& out) {
+  std::array<std::span<const ClusterId>, 5> rest{};
+  std::size_t count = 0, total = 0;
+  for (const std::span<const ClusterId> list : lists) {
+    if (!list.empty()) rest[count++] = list;
+    total += list.size();
   }
-  return flat;
+  out.reserve(out.size() + total);
+  while (count > 0) {
+    ClusterId smallest = rest[0].front();
+    for (std::size_t k = 1; k < count; ++k) smallest = std::min(smallest, rest[k].front());
+    out.push_back(smallest);
+    for (std::size_t k = 0; k < count;) {
+      if (rest[k].front() == smallest) rest[k] = rest[k].subspan(1);
+      if (rest[k].empty()) {
+        rest[k] = rest[--count];
+      } else {
+        ++k;
+      }
+    }
+  }
 }
 
 /// Each node's window list: the union of `lists` over the nodes `step` apart within +-2 of it
 /// (step gw: the column window of the blur along y; step 1: the row window along x).
 NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, bool along_y,
                        int threads) {
-  std::vector<std::vector<std::size_t>> unions(gw * gh);
+  std::vector<std::vector<ClusterId>> unions(gw * gh);
   parallel_for(
       gh,
       [&](std::size_t gy) {
         for (std::size_t gx = 0; gx < gw; ++gx) {
           const std::size_t centre = along_y ? gy : gx, size = along_y ? gh : gw;
-          auto& list = unions[gy * gw + gx];
+          std::array<std::span<const ClusterId>, 5> windows;
+          std::size_t count = 0;
           for (std::size_t t = centre >= 2 ? centre - 2 : 0; t <= std::min(centre + 2, size - 1);
                ++t) {
-            const std::size_t n = along_y ? t * gw + gx : gy * gw + t;
-            const std::span<const std::size_t> window = lists.of(n);
-            list.insert(list.end(), window.begin(), window.end());
+            windows[count++] = lists.of(along_y ? t * gw + gx : gy * gw + t);
           }
+          merge_union(std::span(windows.data(), count), unions[gy * gw + gx]);
         }
       },
       threads);
-  return flattened(std::move(unions), threads);
+  return concatenated(unions, threads);
 }
 
 /// For every entry of `to` (node n, cluster c) and each of the 5 taps j: the slot of c in the
 /// `from` list of the node at offset j - 2 along the axis, or kNone when that node is off the
 /// grid or its list does not hold c. Both lists are sorted: one merge per node and tap.
-std::vector<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to, const NodeLists& from,
-                                                      std::size_t gw, std::size_t gh, bool along_y,
-                                                      int threads) {
-  std::vector<std::array<std::uint32_t, 5>> sources(to.size());
+Buffer<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to, const NodeLists& from,
+                                                 std::size_t gw, std::size_t gh, bool along_y,
+                                                 int threads) {
+  Buffer<std::array<std::uint32_t, 5>> sources(to.size());
   parallel_for(
       gh,
       [&](std::size_t gy) {
@@ -247,10 +292,10 @@ class SliceSmoother {
       return std::array<std::size_t, 4>{s.gy * gw_ + s.gx, s.gy * gw_ + s.gx + 1,
                                         (s.gy + 1) * gw_ + s.gx, (s.gy + 1) * gw_ + s.gx + 1};
     };
-    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    std::vector<std::vector<ClusterId>> lists(gw_ * gh_);
     for (std::size_t p = 0; p < splats.size(); ++p) {
       for (const std::size_t n : corners(splats[p]))
-        lists[n].push_back(static_cast<std::size_t>(clusters.cluster_of[p]));
+        lists[n].push_back(static_cast<ClusterId>(clusters.cluster_of[p]));
     }
     splatted_ = flattened(std::move(lists), threads);
     const NodeLists blurred_y = window_union(splatted_, gw_, gh_, true, threads);
@@ -348,7 +393,7 @@ class SliceSmoother {
   /// x of `blurred_y` (else their blurred entry there is an exact zero).
   [[nodiscard]] NodeLists needed_blurred(const std::vector<std::vector<RangeNeighbour>>& neighbours,
                                          const NodeLists& blurred_y, int threads) const {
-    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    std::vector<std::vector<ClusterId>> lists(gw_ * gh_);
     parallel_for(
         gh_,
         [&](std::size_t gy) {
@@ -358,7 +403,7 @@ class SliceSmoother {
               for (const RangeNeighbour& other : neighbours[splatted_.ids[e]]) {
                 for (std::size_t tx = gx >= 2 ? gx - 2 : 0; tx <= std::min(gx + 2, gw_ - 1); ++tx) {
                   if (blurred_y.find(gy * gw_ + tx, other.cluster) != kNone) {
-                    lists[n].push_back(other.cluster);
+                    lists[n].push_back(static_cast<ClusterId>(other.cluster));
                     break;
                   }
                 }
@@ -374,7 +419,7 @@ class SliceSmoother {
   /// x reads.
   [[nodiscard]] NodeLists needed_blurred_y(const NodeLists& blurred_y, int threads) const {
     const NodeLists read = window_union(needed_x_, gw_, gh_, false, threads);
-    std::vector<std::vector<std::size_t>> lists(gw_ * gh_);
+    std::vector<std::vector<ClusterId>> lists(gw_ * gh_);
     parallel_for(
         gw_ * gh_,
         [&](std::size_t n) {
@@ -383,7 +428,7 @@ class SliceSmoother {
                                 std::back_inserter(lists[n]));
         },
         threads);
-    return flattened(std::move(lists), threads);
+    return concatenated(lists, threads);  // intersections of sorted lists are sorted
   }
 
   /// The terms of every splatted entry's mix: its cluster's range neighbours (in their order)
@@ -407,14 +452,21 @@ class SliceSmoother {
     mix_offset_.assign(splatted_.size() + 1, 0);
     for (std::size_t e = 0; e < splatted_.size(); ++e)
       mix_offset_[e + 1] = mix_offset_[e] + counts[e];
-    mix_.reserve(mix_offset_.back());
-    for (const auto& terms : per_node) mix_.insert(mix_.end(), terms.begin(), terms.end());
+    // Node n's terms are those of its entries, which start at its first slot.
+    mix_.resize(mix_offset_.back());
+    parallel_for(
+        gw_ * gh_,
+        [&](std::size_t n) {
+          std::copy(per_node[n].begin(), per_node[n].end(),
+                    mix_.begin() + static_cast<std::ptrdiff_t>(mix_offset_[splatted_.offset[n]]));
+        },
+        threads);
   }
 
   /// One blur pass with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2] along an axis: out[i] = the sum
   /// over j = 0..4 of tap[j] * in[sources[i][j]], the present terms added in the order of j.
   static void blur_pass(const std::vector<Value>& in,
-                        const std::vector<std::array<std::uint32_t, 5>>& sources,
+                        const Buffer<std::array<std::uint32_t, 5>>& sources,
                         std::vector<Value>& out) {
     static const Value taps[5] = {Value(std::exp(-2.0)), Value(std::exp(-0.5)), Value(1.0),
                                   Value(std::exp(-0.5)), Value(std::exp(-2.0))};
@@ -431,10 +483,10 @@ class SliceSmoother {
 
   std::size_t gw_, gh_;
   NodeLists splatted_, needed_x_, needed_y_;
-  std::vector<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
+  Buffer<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
   std::vector<std::size_t> mix_offset_;
-  std::vector<MixTerm> mix_;
-  std::vector<PixelSplat> pixels_;
+  Buffer<MixTerm> mix_;
+  Buffer<PixelSplat> pixels_;
 };
 
 }  // namespace
