@@ -35,34 +35,38 @@ ColourClusters median_cut_clusters(const cv::Mat& image, int levels, int threads
       for (int c = 0; c < 3; ++c) channels[c][static_cast<std::size_t>(pixel)] = colour[c];
     }
   }
-  // Clusters as consecutive ranges of one permutation of the pixels (raster order at first).
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
+  // Clusters as consecutive ranges of one permutation of the pixels: cluster k of a level is
+  // order[bounds[k] .. bounds[k + 1]). Each level is one counting sort of all pixels by the key
+  // (cluster, value), pixels taken in raster order, so that within a cluster the members are
+  // ordered by value and equal values by pixel index: each cluster's range is sorted by
+  // (value, pixel), then split in halves, the first half becoming cluster 2k, the second 2k + 1.
+  std::vector<std::uint32_t> cluster_of(n, 0), order(n);
+  std::iota(order.begin(), order.end(), 0U);
   std::vector<std::size_t> bounds{0, n};
+  std::vector<std::size_t> next_slot;
+  constexpr std::size_t kValues = 256;
   for (int level = 0; level < levels; ++level) {
     const std::vector<std::uint8_t>& value = channels[static_cast<std::size_t>((level + 1) % 3)];
     const std::size_t count = bounds.size() - 1;
-    // Each cluster sorts its own range by (value, pixel index): a strict total order, so the
-    // permutation is the same whatever sorts it and whichever thread does.
-    parallel_for(
-        count,
-        [&](std::size_t k) {
-          std::vector<std::uint64_t> keys(bounds[k + 1] - bounds[k]);
-          for (std::size_t i = 0; i < keys.size(); ++i) {
-            const auto pixel = static_cast<std::uint32_t>(order[bounds[k] + i]);
-            keys[i] = (std::uint64_t{value[pixel]} << 32) | pixel;
-          }
-          std::sort(keys.begin(), keys.end());
-          for (std::size_t i = 0; i < keys.size(); ++i)
-            order[bounds[k] + i] = static_cast<int>(keys[i] & 0xFFFFFFFFU);
-        },
-        threads);
+    const auto key = [&](std::size_t pixel) { return cluster_of[pixel] * kValues + value[pixel]; };
+    next_slot.assign(count * kValues + 1, 0);
+    for (std::size_t pixel = 0; pixel < n; ++pixel) ++next_slot[key(pixel) + 1];
+    std::partial_sum(next_slot.begin(), next_slot.end(), next_slot.begin());
+    for (std::size_t pixel = 0; pixel < n; ++pixel)
+      order[next_slot[key(pixel)]++] = static_cast<std::uint32_t>(pixel);
     std::vector<std::size_t> next{0};
     for (std::size_t k = 0; k < count; ++k) {
       next.push_back(bounds[k] + (bounds[k + 1] - bounds[k]) / 2);
       next.push_back(bounds[k + 1]);
     }
     bounds = std::move(next);
+    parallel_for(
+        bounds.size() - 1,
+        [&](std::size_t k) {
+          for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i)
+            cluster_of[order[i]] = static_cast<std::uint32_t>(k);
+        },
+        threads);
   }
   ColourClusters clusters;
   const std::size_t count = bounds.size() - 1;

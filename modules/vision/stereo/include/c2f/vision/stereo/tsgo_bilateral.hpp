@@ -20,9 +20,10 @@ struct ColourClusters {
 /// median of channel (l + 1) mod 3 (B = 0, G = 1, R = 2: G, R, B, G, ...). The members of a
 /// cluster are ordered by that channel, stably (raster order among equal values), and split
 /// into halves by count, so pixels equal to the median are divided in raster order. Cluster
-/// colour = mean of its members. A level's clusters are sorted on `threads` threads (0: the
-/// machine's cores); the clusters are the same for every count. Throws std::invalid_argument
-/// for an empty or non-8-bit 3-channel image or levels outside [0, 20].
+/// colour = mean of its members. Each level is one counting sort of every pixel by (cluster,
+/// value), linear in the pixels; the new cluster of each member is written on `threads` threads
+/// (0: the machine's cores), and the clusters are the same for every count. Throws
+/// std::invalid_argument for an empty or non-8-bit 3-channel image or levels outside [0, 20].
 ColourClusters median_cut_clusters(const cv::Mat& image, int levels, int threads = 0);
 
 struct BilateralOptions {
