@@ -248,6 +248,10 @@ Buffer<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to, const Node
 /// the filter in double (tested against the dense grid in double).
 using Value = float;
 
+/// The blur's taps along each axis (a spatial sigma of one cell, 5 nodes wide).
+const std::array<Value, 5> kTaps = {Value(std::exp(-2.0)), Value(std::exp(-0.5)), Value(1.0),
+                                    Value(std::exp(-0.5)), Value(std::exp(-2.0))};
+
 /// Slices smoothed together: every grid entry holds one value per lane (label), side by side
 /// (64 bytes), so that each scattered access of a pass serves all of them.
 constexpr std::size_t kLanes = 16;
@@ -256,11 +260,11 @@ constexpr std::size_t kLanes = 16;
 /// row of labels apart, a stride the hardware prefetchers do not follow across pages.
 constexpr std::size_t kPrefetchAhead = 16;
 
-/// One thread's memory for smoothing slices: two buffers of grid entries (kLanes values each)
-/// that the passes alternate between: `first` holds the splatted entries, then the entries
-/// blurred along x; `second` those blurred along y, then the mixed ones.
+/// One thread's memory for smoothing slices, in grid entries of kLanes values each.
 struct Workspace {
-  std::vector<Value> first, second;
+  std::vector<Value> splatted;   ///< the splatted entries, then the mixed ones (read() reads them)
+  std::vector<Value> blurred_y;  ///< the entries blurred along y
+  std::vector<Value> node_blurred;  ///< one node's entries blurred along x
 };
 
 /// The cross-bilateral smoothing of image-sized slices, with everything that does not depend on
@@ -326,8 +330,12 @@ class SliceSmoother {
   }
 
   [[nodiscard]] Workspace workspace() const {
-    return {std::vector<Value>(std::max(splatted_.size(), needed_x_.size()) * kLanes),
-            std::vector<Value>(std::max(needed_y_.size(), splatted_.size()) * kLanes)};
+    std::size_t node_entries = 0;
+    for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n)
+      node_entries = std::max(node_entries, needed_x_.offset[n + 1] - needed_x_.offset[n]);
+    return {std::vector<Value>(splatted_.size() * kLanes),
+            std::vector<Value>(needed_y_.size() * kLanes),
+            std::vector<Value>(node_entries * kLanes)};
   }
 
   /// Smooths `count` slices at once, slice k's value at pixel p being values[p * stride + k],
@@ -337,7 +345,7 @@ class SliceSmoother {
   void smooth(const float* values, std::size_t stride, std::size_t count, bool with_ones,
               Workspace& space) const {
     // Splat: each pixel's values into its cluster at the 4 surrounding nodes, pixels in order.
-    const std::span<Value> splatted(space.first.data(), splatted_.size() * kLanes);
+    const std::span<Value> splatted(space.splatted);
     std::fill(splatted.begin(), splatted.end(), Value{0});
     std::array<Value, kLanes> value{};
     if (with_ones) value[count] = Value{1};
@@ -353,16 +361,25 @@ class SliceSmoother {
         for (std::size_t k = 0; k < kLanes; ++k) target[k] += weight * value[k];
       }
     }
-    blur_pass(space.first, y_sources_, space.second);  // blurred along y
-    blur_pass(space.second, x_sources_, space.first);  // then along x
-    // Mix: each splatted entry gathers its range neighbours' blurred entries at its node.
-    for (std::size_t e = 0; e < splatted_.size(); ++e) {
-      std::array<Value, kLanes> sum{};
-      for (std::size_t t = mix_offset_[e]; t < mix_offset_[e + 1]; ++t) {
-        const Value* source = space.first.data() + mix_[t].slot * kLanes;
-        for (std::size_t k = 0; k < kLanes; ++k) sum[k] += mix_[t].weight * source[k];
+    // Blurred along y.
+    for (std::size_t i = 0; i < y_sources_.size(); ++i)
+      blur_entry(space.splatted, y_sources_[i], space.blurred_y.data() + i * kLanes);
+    // Then along x, and mixed: each splatted entry gathers its range neighbours' entries
+    // blurred along x at its node. Node by node, since only a node's own mixed entries read
+    // its entries blurred along x: those stay in a buffer of one node's size, and the mixed
+    // entries replace the splatted ones, which nothing reads after the blur along y.
+    for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n) {
+      const std::size_t base = needed_x_.offset[n];
+      for (std::size_t i = base; i < needed_x_.offset[n + 1]; ++i)
+        blur_entry(space.blurred_y, x_sources_[i], space.node_blurred.data() + (i - base) * kLanes);
+      for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
+        std::array<Value, kLanes> sum{};
+        for (std::size_t t = mix_offset_[e]; t < mix_offset_[e + 1]; ++t) {
+          const Value* source = space.node_blurred.data() + (mix_[t].slot - base) * kLanes;
+          for (std::size_t k = 0; k < kLanes; ++k) sum[k] += mix_[t].weight * source[k];
+        }
+        std::copy(sum.begin(), sum.end(), space.splatted.data() + e * kLanes);
       }
-      std::copy(sum.begin(), sum.end(), space.second.data() + e * kLanes);
     }
   }
 
@@ -371,7 +388,7 @@ class SliceSmoother {
   void read(const Workspace& space, std::size_t p, std::array<Value, kLanes>& out) const {
     const PixelSplat& pixel = pixels_[p];
     const Value* corner[4];
-    for (std::size_t c = 0; c < 4; ++c) corner[c] = space.second.data() + pixel.slot[c] * kLanes;
+    for (std::size_t c = 0; c < 4; ++c) corner[c] = space.splatted.data() + pixel.slot[c] * kLanes;
     const std::array<Value, 4> weight = pixel.weight;  // not reloaded after each store to out
     for (std::size_t k = 0; k < kLanes; ++k) {
       out[k] = weight[0] * corner[0][k] + weight[1] * corner[1][k] + weight[2] * corner[2][k] +
@@ -467,22 +484,17 @@ class SliceSmoother {
         threads);
   }
 
-  /// One blur pass with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2] along an axis: out[i] = the sum
-  /// over j = 0..4 of tap[j] * in[sources[i][j]], the present terms added in the order of j.
-  static void blur_pass(const std::vector<Value>& in,
-                        const Buffer<std::array<std::uint32_t, 5>>& sources,
-                        std::vector<Value>& out) {
-    static const Value taps[5] = {Value(std::exp(-2.0)), Value(std::exp(-0.5)), Value(1.0),
-                                  Value(std::exp(-0.5)), Value(std::exp(-2.0))};
-    for (std::size_t i = 0; i < sources.size(); ++i) {
-      std::array<Value, kLanes> sum{};
-      for (std::size_t j = 0; j < 5; ++j) {
-        if (sources[i][j] == kNone) continue;
-        const Value* source = in.data() + sources[i][j] * kLanes;
-        for (std::size_t k = 0; k < kLanes; ++k) sum[k] += taps[j] * source[k];
-      }
-      std::copy(sum.begin(), sum.end(), out.data() + i * kLanes);
+  /// One entry of a blur along an axis with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2]: out = the sum
+  /// over j = 0..4 of tap[j] * in[sources[j]], the present terms added in the order of j.
+  static void blur_entry(const std::vector<Value>& in, const std::array<std::uint32_t, 5>& sources,
+                         Value* out) {
+    std::array<Value, kLanes> sum{};
+    for (std::size_t j = 0; j < 5; ++j) {
+      if (sources[j] == kNone) continue;
+      const Value* source = in.data() + sources[j] * kLanes;
+      for (std::size_t k = 0; k < kLanes; ++k) sum[k] += kTaps[j] * source[k];
     }
+    std::copy(sum.begin(), sum.end(), out);
   }
 
   std::size_t gw_, gh_;
