@@ -50,9 +50,16 @@ std::size_t first_non_finite(std::span<const Cost> values) {
   constexpr std::size_t kChunk = 1024;
   for (std::size_t begin = 0; begin < values.size(); begin += kChunk) {
     const std::size_t end = std::min(begin + kChunk, values.size());
-    bool finite = true;
-    for (std::size_t i = begin; i < end; ++i) finite &= (values[i] - values[i] == Cost{0});
-    if (finite) continue;
+    // A whole chunk's loop has a constant trip count, which GCC vectorises at -O2 (its cheap
+    // cost model leaves a loop of unknown count scalar): twice as fast on 1.4 GB of floats.
+    const Cost* chunk = values.data() + begin;
+    unsigned finite = 1;
+    if (end - begin == kChunk) {
+      for (std::size_t i = 0; i < kChunk; ++i) finite &= (chunk[i] - chunk[i] == Cost{0});
+    } else {
+      for (std::size_t i = 0; i < end - begin; ++i) finite &= (chunk[i] - chunk[i] == Cost{0});
+    }
+    if (finite != 0) continue;
     for (std::size_t i = begin; i < end; ++i)
       if (!std::isfinite(values[i])) return i;
   }

@@ -55,7 +55,7 @@ EqualisedPair equalise_photometry(const cv::Mat& left, const cv::Mat& right, dou
   return result;
 }
 
-std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image) {
+std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image, int threads) {
   if (image.type() != CV_8UC3 || image.empty()) {
     throw std::invalid_argument(
         "signed_sqrt_gradients: the image must be non-empty 8-bit 3-channel");
@@ -68,23 +68,27 @@ std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image) {
     return static_cast<double>(
         image.at<cv::Vec3b>(std::clamp(y, 0, h - 1), std::clamp(x, 0, w - 1))[c]);
   };
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        const double dx = at(x + 1, y, c) - at(x - 1, y, c);
-        const double dy = at(x, y + 1, c) - at(x, y - 1, c);
-        const double dx1 = (at(x + 1, y - 1, c) - at(x - 1, y + 1, c)) / root2;
-        const double dy1 = (at(x + 1, y + 1, c) - at(x - 1, y - 1, c)) / root2;
-        planes[2 * c].at<double>(y, x) = signed_sqrt(4.0 * (dx + (dx1 + dy1) / root2));
-        planes[2 * c + 1].at<double>(y, x) = signed_sqrt(4.0 * (dy + (dy1 - dx1) / root2));
-      }
-    }
-  }
+  parallel_for(
+      static_cast<std::size_t>(h),
+      [&](std::size_t row) {
+        const auto y = static_cast<int>(row);
+        for (int x = 0; x < w; ++x) {
+          for (int c = 0; c < 3; ++c) {
+            const double dx = at(x + 1, y, c) - at(x - 1, y, c);
+            const double dy = at(x, y + 1, c) - at(x, y - 1, c);
+            const double dx1 = (at(x + 1, y - 1, c) - at(x - 1, y + 1, c)) / root2;
+            const double dy1 = (at(x + 1, y + 1, c) - at(x - 1, y - 1, c)) / root2;
+            planes[2 * c].at<double>(y, x) = signed_sqrt(4.0 * (dx + (dx1 + dy1) / root2));
+            planes[2 * c + 1].at<double>(y, x) = signed_sqrt(4.0 * (dy + (dy1 - dx1) / root2));
+          }
+        }
+      },
+      threads);
   return planes;
 }
 
-double gradient_scale(const cv::Mat& image) {
-  const auto gradients = signed_sqrt_gradients(image);
+double gradient_scale(const cv::Mat& image, int threads) {
+  const auto gradients = signed_sqrt_gradients(image, threads);
   cv::Scalar mean, stddev;
   cv::meanStdDev(image, mean, stddev);
   const double sigma_colour =
@@ -95,18 +99,22 @@ double gradient_scale(const cv::Mat& image) {
   return sigma_gradient > 0.0 ? sigma_colour / sigma_gradient : 1.0;
 }
 
-std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul) {
-  const auto gradients = signed_sqrt_gradients(image);
+std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul, int threads) {
+  const auto gradients = signed_sqrt_gradients(image, threads);
   std::array<cv::Mat, 6> planes;
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    planes[p] = cv::Mat(image.rows, image.cols, CV_8U);
-    for (int y = 0; y < image.rows; ++y) {
-      for (int x = 0; x < image.cols; ++x) {
-        planes[p].at<uchar>(y, x) =
-            static_cast<uchar>(std::clamp(mul * gradients[p].at<double>(y, x) + 128.0, 0.0, 255.0));
-      }
-    }
-  }
+  for (cv::Mat& plane : planes) plane = cv::Mat(image.rows, image.cols, CV_8U);
+  parallel_for(
+      static_cast<std::size_t>(image.rows),
+      [&](std::size_t row) {
+        const auto y = static_cast<int>(row);
+        for (std::size_t p = 0; p < planes.size(); ++p) {
+          for (int x = 0; x < image.cols; ++x) {
+            planes[p].at<uchar>(y, x) = static_cast<uchar>(
+                std::clamp(mul * gradients[p].at<double>(y, x) + 128.0, 0.0, 255.0));
+          }
+        }
+      },
+      threads);
   return planes;
 }
 

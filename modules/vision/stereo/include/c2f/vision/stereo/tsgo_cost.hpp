@@ -33,18 +33,19 @@ EqualisedPair equalise_photometry(const cv::Mat& left, const cv::Mat& right,
 /// root, before scaling: gx = 4 (dx + (dx1 + dy1) / sqrt2), gy = 4 (dy + (dy1 - dx1) / sqrt2)
 /// with dx = I(x+1,y) - I(x-1,y), dy = I(x,y+1) - I(x,y-1), dx1 = (I(x+1,y-1) - I(x-1,y+1)) /
 /// sqrt2, dy1 = (I(x+1,y+1) - I(x-1,y-1)) / sqrt2 and coordinates clamped at the borders.
-/// Six CV_64F planes.
-std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image);
+/// Six CV_64F planes. Rows are computed on `threads` threads (0: the machine's cores); every
+/// value is the same for any count, as in the stages below.
+std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image, int threads = 1);
 
 /// mul = sigma_colour / sigma_gradient of an image: sigma_colour = sqrt(mean over pixels of the
 /// summed squared deviations of the 3 channels from their means), sigma_gradient = sqrt(mean
 /// over pixels of the summed squares of the 6 signed-square-rooted gradient planes). (The
 /// reference reads the gradient planes that mul then scales; we take them after the signed
 /// square root.) Returns 1 for an image without gradients.
-double gradient_scale(const cv::Mat& image);
+double gradient_scale(const cv::Mat& image, int threads = 1);
 
 /// The six gradient byte planes: clamp(mul * signed_sqrt_gradient + 128, 0, 255), truncated.
-std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul);
+std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul, int threads = 1);
 
 /// C0(x, y, d) = min(sum over the 6 planes of |left(x, y) - right(x - d, y)|, truncation) for
 /// valid (x, d); invalid cells are set to NaN (fill_left_border replaces them). Rows are
