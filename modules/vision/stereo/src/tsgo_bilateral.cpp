@@ -522,16 +522,33 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
   const ColourClusters clusters =
       median_cut_clusters(guide, options.cluster_levels, options.threads);
   const std::size_t q = clusters.means.size();
-  // Range neighbours of every non-empty cluster (including itself, weight 1).
-  // Each cluster's list is built by one task, in cluster order: the same for any thread count.
+  // Range neighbours of every non-empty cluster (including itself, weight 1), in cluster order.
+  // Candidates first: the clusters whose green mean is within the cutoff (a looser bound by a
+  // relative 1e-9, so that no pair the exact test keeps is left out by rounding), found in the
+  // clusters sorted by green; each candidate then takes the exact test. Each cluster's list is
+  // built by one task: the same for any thread count.
   std::vector<std::vector<RangeNeighbour>> neighbours(q);
   const double cutoff = options.cutoff_sigmas * options.colour_sigma;
+  const double candidate_bound = cutoff * (1.0 + 1e-9);
+  std::vector<std::size_t> by_green;
+  for (std::size_t k = 0; k < q; ++k)
+    if (clusters.sizes[k] > 0) by_green.push_back(k);
+  const auto green = [&](std::size_t k) { return clusters.means[k][1]; };
+  std::stable_sort(by_green.begin(), by_green.end(),
+                   [&](std::size_t a, std::size_t b) { return green(a) < green(b); });
   parallel_for(
       q,
       [&](std::size_t a) {
         if (clusters.sizes[a] == 0) return;
-        for (std::size_t b = 0; b < q; ++b) {
-          if (clusters.sizes[b] == 0) continue;
+        const auto first = std::partition_point(
+            by_green.begin(), by_green.end(),
+            [&](std::size_t k) { return green(k) < green(a) - candidate_bound; });
+        const auto last = std::partition_point(first, by_green.end(), [&](std::size_t k) {
+          return green(k) <= green(a) + candidate_bound;
+        });
+        std::vector<std::size_t> candidates(first, last);
+        std::sort(candidates.begin(), candidates.end());
+        for (const std::size_t b : candidates) {
           const double distance = cv::norm(clusters.means[a] - clusters.means[b]);
           if (distance > cutoff) continue;
           const double r = std::round(distance);
