@@ -47,7 +47,7 @@ TEST_CASE("sizes are multiplied without wrapping and memory needs are checked", 
   // The TSGO estimate grows with pixels x labels and overflows into "unknown", not a wrap.
   const auto teddy = c2f::vision::tsgo_memory_estimate(450, 375, 85, 2);
   REQUIRE(teddy.has_value());
-  CHECK(*teddy == 450u * 375u * (85u * 4u + 512u + 2u * 640u));
+  CHECK(*teddy == 450u * 375u * (85u * 4u + 512u + 640u) + 2u * 4096u * 64u);
   CHECK_FALSE(c2f::vision::tsgo_memory_estimate(std::size_t{1} << 40, std::size_t{1} << 30, 256)
                   .has_value());
 }

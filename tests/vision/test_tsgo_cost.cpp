@@ -280,6 +280,13 @@ TEST_CASE("TSGO step 1 gives the same volume, bit for bit, on any number of thre
     REQUIRE(many.size() == one.size());
     CHECK(std::memcmp(many.data(), one.data(), one.size() * sizeof(float)) == 0);
   }
+  // Cells of 18 pixels: 4 grid node rows, so 8 threads make a team of 4, one row each.
+  options.bilateral.cell = 18;
+  options.threads = 1;
+  const auto coarse_one = c2f::vision::tsgo_cost(left, right, options).volume.data();
+  options.threads = 8;
+  const auto coarse_many = c2f::vision::tsgo_cost(left, right, options).volume.data();
+  CHECK(std::memcmp(coarse_many.data(), coarse_one.data(), coarse_one.size() * sizeof(float)) == 0);
   options.threads = -1;
   CHECK_THROWS_WITH(c2f::vision::tsgo_cost(left, right, options),
                     Catch::Contains("threads must be >= 0"));

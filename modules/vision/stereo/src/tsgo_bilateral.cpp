@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
+#include <barrier>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -12,6 +12,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "c2f/core/default_init_allocator.hpp"
@@ -260,12 +261,42 @@ constexpr std::size_t kLanes = 16;
 /// row of labels apart, a stride the hardware prefetchers do not follow across pages.
 constexpr std::size_t kPrefetchAhead = 16;
 
-/// One thread's memory for smoothing slices, in grid entries of kLanes values each.
+/// The memory for smoothing slices, in grid entries of kLanes values each, shared by a team.
 struct Workspace {
   std::vector<Value> splatted;   ///< the splatted entries, then the mixed ones (read() reads them)
   std::vector<Value> blurred_y;  ///< the entries blurred along y
-  std::vector<Value> node_blurred;  ///< one node's entries blurred along x
+  std::vector<std::vector<Value>> node_blurred;  ///< per member, one node's entries blurred along x
 };
+
+/// Member m's share [share(total, m, members), share(total, m + 1, members)) of `total` items.
+std::size_t share(std::size_t total, std::size_t m, std::size_t members) {
+  return total * m / members;
+}
+
+/// Runs member(m) for every m < members, each on a thread of its own (the calling thread is
+/// member 0), and returns when all have returned. Members may wait for each other (at a
+/// std::barrier of `members`), so none starts before every thread exists: when a thread cannot
+/// be started, none has begun, and the std::system_error is rethrown. A member must not throw.
+template <typename Member>
+void run_team(std::size_t members, const Member& member) {
+  std::latch started(1);
+  bool abandoned = false;             // written before `started` opens
+  std::vector<std::jthread> helpers;  // joined when this returns or throws
+  try {
+    for (std::size_t m = 1; m < members; ++m) {
+      helpers.emplace_back([&, m] {
+        started.wait();
+        if (!abandoned) member(m);
+      });
+    }
+  } catch (...) {
+    abandoned = true;
+    started.count_down();
+    throw;
+  }
+  started.count_down();
+  member(0);
+}
 
 /// The cross-bilateral smoothing of image-sized slices, with everything that does not depend on
 /// the slice computed once. The grid has one entry per node and cluster; only the entries the
@@ -285,7 +316,9 @@ class SliceSmoother {
                 const std::vector<std::vector<RangeNeighbour>>& neighbours, std::size_t width,
                 std::size_t height, int cell, int threads)
       : gw_((width - 1) / static_cast<std::size_t>(cell) + 2),
-        gh_((height - 1) / static_cast<std::size_t>(cell) + 2) {
+        gh_((height - 1) / static_cast<std::size_t>(cell) + 2),
+        width_(width),
+        row_node_(height) {
     std::vector<Splat> splats(width * height);
     const auto size = static_cast<double>(cell);
     for (std::size_t y = 0; y < height; ++y) {
@@ -295,6 +328,7 @@ class SliceSmoother {
         splats[y * width + x] = {gx, gy, sx - static_cast<double>(gx),
                                  sy - static_cast<double>(gy)};
       }
+      row_node_[y] = splats[y * width].gy;
     }
     const auto corners = [&](const Splat& s) {
       return std::array<std::size_t, 4>{s.gy * gw_ + s.gx, s.gy * gw_ + s.gx + 1,
@@ -329,58 +363,96 @@ class SliceSmoother {
         threads);
   }
 
-  [[nodiscard]] Workspace workspace() const {
+  /// The grid's node rows: a team has at most this many members.
+  [[nodiscard]] std::size_t node_rows() const { return gh_; }
+
+  /// The workspace of a team of `members`.
+  [[nodiscard]] Workspace workspace(std::size_t members) const {
     std::size_t node_entries = 0;
     for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n)
       node_entries = std::max(node_entries, needed_x_.offset[n + 1] - needed_x_.offset[n]);
     return {std::vector<Value>(splatted_.size() * kLanes),
             std::vector<Value>(needed_y_.size() * kLanes),
-            std::vector<Value>(node_entries * kLanes)};
+            std::vector<std::vector<Value>>(members, std::vector<Value>(node_entries * kLanes))};
   }
 
   /// Smooths `count` slices at once, slice k's value at pixel p being values[p * stride + k],
   /// plus, when `with_ones`, the constant slice 1 in lane `count` (count + with_ones <= kLanes),
   /// and leaves them in `space` (read() reads them). Each lane's arithmetic is the one-slice
-  /// filter's, term for term and in the same order; the remaining lanes hold zeros.
+  /// filter's, term for term and in the same order; the remaining lanes hold zeros. Called by
+  /// every member m of a team of `members` threads (run_team) with the same arguments; each
+  /// pass is split into the members' shares, which write disjoint entries, and `sync` (a
+  /// barrier of `members`) ends each pass, so every entry is the same sum in the same order
+  /// whatever the team's size.
   void smooth(const float* values, std::size_t stride, std::size_t count, bool with_ones,
-              Workspace& space) const {
+              Workspace& space, std::size_t m, std::size_t members, std::barrier<>& sync) const {
     // Splat: each pixel's values into its cluster at the 4 surrounding nodes, pixels in order.
-    const std::span<Value> splatted(space.splatted);
-    std::fill(splatted.begin(), splatted.end(), Value{0});
+    // Member m owns the entries of node rows [r0, r1) and takes the pixel rows that splat
+    // there (a pixel splats into its node row and the next), adding only into its own rows.
+    const std::size_t r0 = share(gh_, m, members), r1 = share(gh_, m + 1, members);
+    const auto entry = [&](std::size_t slot) {
+      return space.splatted.begin() + static_cast<std::ptrdiff_t>(slot * kLanes);
+    };
+    std::fill(entry(splatted_.offset[r0 * gw_]), entry(splatted_.offset[r1 * gw_]), Value{0});
+    const auto row = [&](auto before) {
+      return static_cast<std::size_t>(
+          std::partition_point(row_node_.begin(), row_node_.end(), before) - row_node_.begin());
+    };
+    const std::size_t y0 = row([&](std::size_t g) { return g + 1 < r0; });
+    const std::size_t y1 = row([&](std::size_t g) { return g < r1; });
     std::array<Value, kLanes> value{};
     if (with_ones) value[count] = Value{1};
-    for (std::size_t p = 0; p < pixels_.size(); ++p) {
-      if (count > 0 && p + kPrefetchAhead < pixels_.size())
-        __builtin_prefetch(values + (p + kPrefetchAhead) * stride);
-      for (std::size_t k = 0; k < count; ++k) value[k] = values[p * stride + k];
-      const PixelSplat& pixel = pixels_[p];
-      for (std::size_t c = 0; c < 4; ++c) {
-        // A local copy: a store through `target` cannot change it, so the lanes vectorise.
-        const Value weight = pixel.weight[c];
-        Value* target = splatted.data() + pixel.slot[c] * kLanes;
-        for (std::size_t k = 0; k < kLanes; ++k) target[k] += weight * value[k];
+    for (std::size_t y = y0; y < y1; ++y) {
+      // Corners 0 and 1 are in the pixel's node row, 2 and 3 in the next.
+      const std::size_t first_corner = row_node_[y] >= r0 ? 0 : 2;
+      const std::size_t end_corner = row_node_[y] + 1 < r1 ? 4 : 2;
+      const std::size_t end = (y + 1) * width_;
+      for (std::size_t p = y * width_; p < end; ++p) {
+        if (count > 0 && p + kPrefetchAhead < pixels_.size())
+          __builtin_prefetch(values + (p + kPrefetchAhead) * stride);
+        for (std::size_t k = 0; k < count; ++k) value[k] = values[p * stride + k];
+        const PixelSplat& pixel = pixels_[p];
+        for (std::size_t c = first_corner; c < end_corner; ++c) {
+          // A local copy: a store through `target` cannot change it, so the lanes vectorise.
+          const Value weight = pixel.weight[c];
+          Value* target = space.splatted.data() + pixel.slot[c] * kLanes;
+          for (std::size_t k = 0; k < kLanes; ++k) target[k] += weight * value[k];
+        }
       }
     }
-    // Blurred along y.
-    for (std::size_t i = 0; i < y_sources_.size(); ++i)
+    sync.arrive_and_wait();
+    // Blurred along y: member m's share of the entries.
+    const std::size_t blurred = y_sources_.size();
+    for (std::size_t i = share(blurred, m, members); i < share(blurred, m + 1, members); ++i)
       blur_entry(space.splatted, y_sources_[i], space.blurred_y.data() + i * kLanes);
+    sync.arrive_and_wait();
     // Then along x, and mixed: each splatted entry gathers its range neighbours' entries
     // blurred along x at its node. Node by node, since only a node's own mixed entries read
     // its entries blurred along x: those stay in a buffer of one node's size, and the mixed
-    // entries replace the splatted ones, which nothing reads after the blur along y.
-    for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n) {
+    // entries replace the splatted ones, which nothing reads after the blur along y. Member m
+    // starts at the node that holds the first entry of its share of the x-blurred entries.
+    const auto first_node = [&](std::size_t k) {
+      if (k == members) return gw_ * gh_;
+      return static_cast<std::size_t>(std::lower_bound(needed_x_.offset.begin(),
+                                                       needed_x_.offset.end(),
+                                                       share(needed_x_.size(), k, members)) -
+                                      needed_x_.offset.begin());
+    };
+    Value* node_blurred = space.node_blurred[m].data();
+    for (std::size_t n = first_node(m); n < first_node(m + 1); ++n) {
       const std::size_t base = needed_x_.offset[n];
       for (std::size_t i = base; i < needed_x_.offset[n + 1]; ++i)
-        blur_entry(space.blurred_y, x_sources_[i], space.node_blurred.data() + (i - base) * kLanes);
+        blur_entry(space.blurred_y, x_sources_[i], node_blurred + (i - base) * kLanes);
       for (std::size_t e = splatted_.offset[n]; e < splatted_.offset[n + 1]; ++e) {
         std::array<Value, kLanes> sum{};
         for (std::size_t t = mix_offset_[e]; t < mix_offset_[e + 1]; ++t) {
-          const Value* source = space.node_blurred.data() + (mix_[t].slot - base) * kLanes;
+          const Value* source = node_blurred + (mix_[t].slot - base) * kLanes;
           for (std::size_t k = 0; k < kLanes; ++k) sum[k] += mix_[t].weight * source[k];
         }
         std::copy(sum.begin(), sum.end(), space.splatted.data() + e * kLanes);
       }
     }
+    sync.arrive_and_wait();
   }
 
   /// Pixel p's values of the smoothed slices (lane k: slice k): its cluster's bilinear
@@ -497,7 +569,8 @@ class SliceSmoother {
     std::copy(sum.begin(), sum.end(), out);
   }
 
-  std::size_t gw_, gh_;
+  std::size_t gw_, gh_, width_;
+  std::vector<std::size_t> row_node_;  ///< per pixel row, its node row (non-decreasing)
   NodeLists splatted_, needed_x_, needed_y_;
   Buffer<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
   std::vector<std::size_t> mix_offset_;
@@ -559,55 +632,47 @@ void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
       options.threads);
   const std::size_t w = volume.width(), h = volume.height(), pixels = w * h;
   const SliceSmoother smoother(clusters, neighbours, w, h, options.cell, options.threads);
-  // Blocks of kLanes labels, each filtered by one thread straight from the pixel-major volume
-  // (a pixel's labels of a block are side by side), taken in order by whichever thread is free;
-  // every label's arithmetic is the same whatever thread and lane run it, so the volume does
-  // not depend on the thread count. The first unit of work is the denominator (the smoothed
-  // constant slice), in the spare lane of the last label block when it has one, else alone;
-  // each other thread waits for it before its first division.
+  // Blocks of kLanes labels, each filtered straight from the pixel-major volume (a pixel's
+  // labels of a block are side by side) by a team of threads that split each pass (smooth())
+  // and then the pixels; every label's arithmetic is the same whatever the team's size, so the
+  // volume does not depend on the thread count, and the work of each block divides evenly
+  // (blocks handed to threads whole left one thread idle at the end whenever their number
+  // was odd). The first unit of work is the denominator (the smoothed constant slice), in the
+  // spare lane of the last label block when it has one, else alone.
   const auto labels = static_cast<std::size_t>(volume.labels());
   const std::size_t blocks = (labels + kLanes - 1) / kLanes;
   const bool spare_lane = labels % kLanes != 0;
   // Unit 0: the denominator (with label block blocks - 1 when it has a spare lane); unit u >= 1:
   // label block u - 1.
   const std::size_t units = spare_lane ? blocks : blocks + 1;
-  const std::size_t threads = std::min<std::size_t>(resolved_threads(options.threads), units);
+  const std::size_t members =
+      std::min<std::size_t>(resolved_threads(options.threads), smoother.node_rows());
   const std::span<float> costs = volume.values();
   std::vector<Value> denominator(pixels);
-  std::latch denominator_ready(1);
-  std::atomic<std::size_t> next_unit{0};
-  parallel_for(
-      threads,
-      [&](std::size_t) {
-        Workspace space = smoother.workspace();
-        std::array<Value, kLanes> out{};
-        for (std::size_t unit; (unit = next_unit.fetch_add(1)) < units;) {
-          const bool with_ones = unit == 0;
-          const bool with_labels = unit > 0 || spare_lane;
-          const std::size_t block = unit > 0 ? unit - 1 : blocks - 1;
-          const std::size_t first = block * kLanes;
-          const std::size_t count = with_labels ? std::min(kLanes, labels - first) : 0;
-          // Counted down however unit 0 ends, so that no thread waits for ever.
-          struct Ready {
-            std::latch* latch;
-            ~Ready() {
-              if (latch != nullptr) latch->count_down();
-            }
-          } ready{with_ones ? &denominator_ready : nullptr};
-          smoother.smooth(costs.data() + first, labels, count, with_ones, space);
-          if (!with_ones) denominator_ready.wait();
-          for (std::size_t p = 0; p < pixels; ++p) {
-            if (count > 0 && p + kPrefetchAhead < pixels)
-              __builtin_prefetch(costs.data() + (p + kPrefetchAhead) * labels + first, 1);
-            smoother.read(space, p, out);
-            if (with_ones) denominator[p] = out[count];
-            for (std::size_t k = 0; k < count; ++k)
-              costs[p * labels + first + k] = static_cast<float>(
-                  static_cast<double>(out[k]) / static_cast<double>(denominator[p]));
-          }
-        }
-      },
-      static_cast<int>(threads));
+  Workspace space = smoother.workspace(members);
+  std::barrier sync(static_cast<std::ptrdiff_t>(members));
+  run_team(members, [&](std::size_t m) noexcept {
+    std::array<Value, kLanes> out{};
+    const std::size_t p0 = share(pixels, m, members), p1 = share(pixels, m + 1, members);
+    for (std::size_t unit = 0; unit < units; ++unit) {
+      const bool with_ones = unit == 0;
+      const bool with_labels = unit > 0 || spare_lane;
+      const std::size_t block = unit > 0 ? unit - 1 : blocks - 1;
+      const std::size_t first = block * kLanes;
+      const std::size_t count = with_labels ? std::min(kLanes, labels - first) : 0;
+      smoother.smooth(costs.data() + first, labels, count, with_ones, space, m, members, sync);
+      for (std::size_t p = p0; p < p1; ++p) {
+        if (count > 0 && p + kPrefetchAhead < p1)
+          __builtin_prefetch(costs.data() + (p + kPrefetchAhead) * labels + first, 1);
+        smoother.read(space, p, out);
+        if (with_ones) denominator[p] = out[count];
+        for (std::size_t k = 0; k < count; ++k)
+          costs[p * labels + first + k] =
+              static_cast<float>(static_cast<double>(out[k]) / static_cast<double>(denominator[p]));
+      }
+      sync.arrive_and_wait();  // the next unit's splat overwrites the entries this one read
+    }
+  });
 }
 
 }  // namespace c2f::vision

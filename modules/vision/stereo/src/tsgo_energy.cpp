@@ -42,17 +42,18 @@ std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t h
                                                 int threads) {
   // Per pixel and label: the volume (4 bytes, float), which becomes the unaries. Per pixel: the
   // images, gradient planes, clusters, the filter's lists and slots, and labelings (512), and
-  // per filtering thread its two buffers of grid entries, 16 labels in float each (640: up to
-  // 10 entries of 64 bytes; 3-9 on the datasets and on a pair of noise images). Full-size
-  // Aloe: 2.9 GiB on one thread (2.2 measured), 3.7 on two (2.6 measured).
+  // the filter's two buffers of grid entries, 16 labels in float each, which its threads share
+  // (640: up to 10 entries of 64 bytes; 3-9 on the datasets and on a pair of noise images).
+  // Per filtering thread: one node's entries (at most the 4096 clusters, 64 bytes each).
+  // Full-size Aloe: 2.9 GiB (2.0 measured on two threads).
   const std::optional<std::size_t> pixels = checked_product({width, height});
   if (!pixels || labels < 0) return std::nullopt;
   const auto per_pixel = checked_product({static_cast<std::size_t>(labels), sizeof(float)});
-  const auto per_thread = checked_product({resolved_threads(threads), 640});
-  if (!per_pixel || !per_thread ||
-      *per_pixel > std::numeric_limits<std::size_t>::max() - 512 - *per_thread)
-    return std::nullopt;
-  return checked_product({*pixels, *per_pixel + 512 + *per_thread});
+  const auto volume_and_images =
+      per_pixel ? checked_product({*pixels, *per_pixel + 512 + 640}) : std::nullopt;
+  const auto per_thread = checked_product({resolved_threads(threads), 4096 * 64});
+  if (!volume_and_images || !per_thread) return std::nullopt;
+  return checked_sum({*volume_and_images, *per_thread});
 }
 
 TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions& options) {

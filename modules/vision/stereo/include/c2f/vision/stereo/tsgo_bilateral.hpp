@@ -45,11 +45,12 @@ struct BilateralOptions {
 /// floats rounded once), so a constant slice stays constant to a few float roundings, and the
 /// volume is within about 1e-6 relative of the same filter in double. Only the grid entries the
 /// result reads are stored and computed (per node, the clusters splatted there and those the
-/// blurs and the range mixing carry them to), 16 labels at a time side by side; label blocks
-/// run on options.threads threads, each holding two buffers of entries (64 bytes each, 3-9
-/// entries per pixel in all on Middlebury, KITTI, Aloe and a pair of noise images). Every value
-/// is the dense float grid's, bit for bit, whatever the thread count. Throws
-/// std::invalid_argument when the guide does not match the volume.
+/// blurs and the range mixing carry them to), 16 labels at a time side by side, in two buffers
+/// of entries (64 bytes each, 3-9 entries per pixel in all on Middlebury, KITTI, Aloe and a
+/// pair of noise images). options.threads threads share each block of labels, each pass split
+/// between them; each holds one grid node's entries of its own. Every value is the dense float
+/// grid's, bit for bit, whatever the thread count. Throws std::invalid_argument when the guide
+/// does not match the volume.
 void cross_bilateral_filter(CostVolume& volume, const cv::Mat& guide,
                             const BilateralOptions& options = {});
 

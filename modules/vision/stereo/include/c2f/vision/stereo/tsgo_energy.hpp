@@ -48,9 +48,9 @@ struct TsgoCost {
 
 /// An estimate of the bytes TSGO step 1 takes at its peak for width x height pixels and
 /// `labels` labels on `threads` threads (0: the machine's cores): the cost volume, which
-/// becomes the energy's unaries, the images and their features, and each thread's filter
-/// workspace. A run's solver needs more (run_memory_floor). std::nullopt when the count
-/// overflows.
+/// becomes the energy's unaries, the images and their features, the filter's workspace and
+/// each filtering thread's buffer of one grid node. A run's solver needs more (run_memory_floor).
+/// std::nullopt when the count overflows.
 std::optional<std::size_t> tsgo_memory_estimate(std::size_t width, std::size_t height, int labels,
                                                 int threads = 1);
 
