@@ -261,11 +261,12 @@ constexpr std::size_t kLanes = 16;
 /// row of labels apart, a stride the hardware prefetchers do not follow across pages.
 constexpr std::size_t kPrefetchAhead = 16;
 
-/// The memory for smoothing slices, in grid entries of kLanes values each, shared by a team.
+/// The memory for smoothing slices, in grid entries of kLanes values each, shared by a team;
+/// allocated unwritten (every pass writes each entry it owns before anything reads it).
 struct Workspace {
-  std::vector<Value> splatted;   ///< the splatted entries, then the mixed ones (read() reads them)
-  std::vector<Value> blurred_y;  ///< the entries blurred along y
-  std::vector<std::vector<Value>> node_blurred;  ///< per member, one node's entries blurred along x
+  Buffer<Value> splatted;   ///< the splatted entries, then the mixed ones (read() reads them)
+  Buffer<Value> blurred_y;  ///< the entries blurred along y
+  std::vector<Buffer<Value>> node_blurred;  ///< per member, one node's entries blurred along x
 };
 
 /// Member m's share [share(total, m, members), share(total, m + 1, members)) of `total` items.
@@ -371,9 +372,8 @@ class SliceSmoother {
     std::size_t node_entries = 0;
     for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n)
       node_entries = std::max(node_entries, needed_x_.offset[n + 1] - needed_x_.offset[n]);
-    return {std::vector<Value>(splatted_.size() * kLanes),
-            std::vector<Value>(needed_y_.size() * kLanes),
-            std::vector<std::vector<Value>>(members, std::vector<Value>(node_entries * kLanes))};
+    return {Buffer<Value>(splatted_.size() * kLanes), Buffer<Value>(needed_y_.size() * kLanes),
+            std::vector<Buffer<Value>>(members, Buffer<Value>(node_entries * kLanes))};
   }
 
   /// Smooths `count` slices at once, slice k's value at pixel p being values[p * stride + k],
@@ -558,7 +558,7 @@ class SliceSmoother {
 
   /// One entry of a blur along an axis with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2]: out = the sum
   /// over j = 0..4 of tap[j] * in[sources[j]], the present terms added in the order of j.
-  static void blur_entry(const std::vector<Value>& in, const std::array<std::uint32_t, 5>& sources,
+  static void blur_entry(const Buffer<Value>& in, const std::array<std::uint32_t, 5>& sources,
                          Value* out) {
     std::array<Value, kLanes> sum{};
     for (std::size_t j = 0; j < 5; ++j) {
