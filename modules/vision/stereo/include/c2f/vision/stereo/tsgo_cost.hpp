@@ -41,10 +41,12 @@ std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image, int threads =
 /// summed squared deviations of the 3 channels from their means), sigma_gradient = sqrt(mean
 /// over pixels of the summed squares of the 6 signed-square-rooted gradient planes). (The
 /// reference reads the gradient planes that mul then scales; we take them after the signed
-/// square root.) Returns 1 for an image without gradients.
+/// square root.) Returns 1 for an image without gradients. The gradients are computed on
+/// `threads` threads (as signed_sqrt_gradients); the sums are OpenCV's, in one thread.
 double gradient_scale(const cv::Mat& image, int threads = 1);
 
 /// The six gradient byte planes: clamp(mul * signed_sqrt_gradient + 128, 0, 255), truncated.
+/// Rows are computed on `threads` threads; every value is the same for any count.
 std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul, int threads = 1);
 
 /// C0(x, y, d) = min(sum over the 6 planes of |left(x, y) - right(x - d, y)|, truncation) for
