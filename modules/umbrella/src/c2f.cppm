@@ -61,6 +61,7 @@ using c2f::cut_capacity;
 using c2f::Decision;
 using c2f::default_memory_budget;
 using c2f::DefaultInitAllocator;
+using c2f::DefaultInitVector;
 using c2f::DensePartition;
 using c2f::DynamicMaxFlow;
 using c2f::DynamicSolveStats;

@@ -101,11 +101,6 @@ struct RangeNeighbour {
 /// No slot: the list has no such entry (or the node is off the grid).
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-/// A vector allocated unwritten: every element is written afterwards by the task that computes
-/// it (so each page is first touched on that task's thread, not by a serial fill of zeros).
-template <typename T>
-using Buffer = std::vector<T, DefaultInitAllocator<T>>;
-
 /// A cluster's index (clusters number at most 2^20).
 using ClusterId = std::uint32_t;
 
@@ -213,10 +208,11 @@ NodeLists window_union(const NodeLists& lists, std::size_t gw, std::size_t gh, b
 /// For every entry of `to` (node n, cluster c) and each of the 5 taps j: the slot of c in the
 /// `from` list of the node at offset j - 2 along the axis, or kNone when that node is off the
 /// grid or its list does not hold c. Both lists are sorted: one merge per node and tap.
-Buffer<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to, const NodeLists& from,
-                                                 std::size_t gw, std::size_t gh, bool along_y,
-                                                 int threads) {
-  Buffer<std::array<std::uint32_t, 5>> sources(to.size());
+DefaultInitVector<std::array<std::uint32_t, 5>> tap_sources(const NodeLists& to,
+                                                            const NodeLists& from, std::size_t gw,
+                                                            std::size_t gh, bool along_y,
+                                                            int threads) {
+  DefaultInitVector<std::array<std::uint32_t, 5>> sources(to.size());
   parallel_for(
       gh,
       [&](std::size_t gy) {
@@ -264,9 +260,11 @@ constexpr std::size_t kPrefetchAhead = 16;
 /// The memory for smoothing slices, in grid entries of kLanes values each, shared by a team;
 /// allocated unwritten (every pass writes each entry it owns before anything reads it).
 struct Workspace {
-  Buffer<Value> splatted;   ///< the splatted entries, then the mixed ones (read() reads them)
-  Buffer<Value> blurred_y;  ///< the entries blurred along y
-  std::vector<Buffer<Value>> node_blurred;  ///< per member, one node's entries blurred along x
+  DefaultInitVector<Value>
+      splatted;  ///< the splatted entries, then the mixed ones (read() reads them)
+  DefaultInitVector<Value> blurred_y;  ///< the entries blurred along y
+  std::vector<DefaultInitVector<Value>>
+      node_blurred;  ///< per member, one node's entries blurred along x
 };
 
 /// Member m's share [share(total, m, members), share(total, m + 1, members)) of `total` items.
@@ -372,8 +370,10 @@ class SliceSmoother {
     std::size_t node_entries = 0;
     for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n)
       node_entries = std::max(node_entries, needed_x_.offset[n + 1] - needed_x_.offset[n]);
-    return {Buffer<Value>(splatted_.size() * kLanes), Buffer<Value>(needed_y_.size() * kLanes),
-            std::vector<Buffer<Value>>(members, Buffer<Value>(node_entries * kLanes))};
+    return {DefaultInitVector<Value>(splatted_.size() * kLanes),
+            DefaultInitVector<Value>(needed_y_.size() * kLanes),
+            std::vector<DefaultInitVector<Value>>(members,
+                                                  DefaultInitVector<Value>(node_entries * kLanes))};
   }
 
   /// Smooths `count` slices at once, slice k's value at pixel p being values[p * stride + k],
@@ -558,8 +558,8 @@ class SliceSmoother {
 
   /// One entry of a blur along an axis with taps [e^-2, e^-1/2, 1, e^-1/2, e^-2]: out = the sum
   /// over j = 0..4 of tap[j] * in[sources[j]], the present terms added in the order of j.
-  static void blur_entry(const Buffer<Value>& in, const std::array<std::uint32_t, 5>& sources,
-                         Value* out) {
+  static void blur_entry(const DefaultInitVector<Value>& in,
+                         const std::array<std::uint32_t, 5>& sources, Value* out) {
     std::array<Value, kLanes> sum{};
     for (std::size_t j = 0; j < 5; ++j) {
       if (sources[j] == kNone) continue;
@@ -572,10 +572,10 @@ class SliceSmoother {
   std::size_t gw_, gh_, width_;
   std::vector<std::size_t> row_node_;  ///< per pixel row, its node row (non-decreasing)
   NodeLists splatted_, needed_x_, needed_y_;
-  Buffer<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
+  DefaultInitVector<std::array<std::uint32_t, 5>> y_sources_, x_sources_;
   std::vector<std::size_t> mix_offset_;
-  Buffer<MixTerm> mix_;
-  Buffer<PixelSplat> pixels_;
+  DefaultInitVector<MixTerm> mix_;
+  DefaultInitVector<PixelSplat> pixels_;
 };
 
 }  // namespace

@@ -29,8 +29,13 @@ class DefaultInitAllocator : public std::allocator<T> {
   }
 };
 
+/// A vector allocated unwritten: every element is written after allocation by whoever computes
+/// it (so each page is first touched on that thread, not by a serial fill of zeros).
+template <typename T>
+using DefaultInitVector = std::vector<T, DefaultInitAllocator<T>>;
+
 /// Float values that a producer writes in full (on as many threads as it likes) after
 /// allocating: the storage of cost volumes and of PairwiseEnergy's float unaries.
-using FloatValues = std::vector<float, DefaultInitAllocator<float>>;
+using FloatValues = DefaultInitVector<float>;
 
 }  // namespace c2f
