@@ -88,7 +88,10 @@ std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image, int threads) 
 }
 
 double gradient_scale(const cv::Mat& image, int threads) {
-  const auto gradients = signed_sqrt_gradients(image, threads);
+  return gradient_scale(image, signed_sqrt_gradients(image, threads));
+}
+
+double gradient_scale(const cv::Mat& image, const std::array<cv::Mat, 6>& gradients) {
   cv::Scalar mean, stddev;
   cv::meanStdDev(image, mean, stddev);
   const double sigma_colour =
@@ -100,15 +103,20 @@ double gradient_scale(const cv::Mat& image, int threads) {
 }
 
 std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul, int threads) {
-  const auto gradients = signed_sqrt_gradients(image, threads);
+  return gradient_planes(signed_sqrt_gradients(image, threads), mul, threads);
+}
+
+std::array<cv::Mat, 6> gradient_planes(const std::array<cv::Mat, 6>& gradients, double mul,
+                                       int threads) {
+  const int rows = gradients[0].rows, cols = gradients[0].cols;
   std::array<cv::Mat, 6> planes;
-  for (cv::Mat& plane : planes) plane = cv::Mat(image.rows, image.cols, CV_8U);
+  for (cv::Mat& plane : planes) plane = cv::Mat(rows, cols, CV_8U);
   parallel_for(
-      static_cast<std::size_t>(image.rows),
+      static_cast<std::size_t>(rows),
       [&](std::size_t row) {
         const auto y = static_cast<int>(row);
         for (std::size_t p = 0; p < planes.size(); ++p) {
-          for (int x = 0; x < image.cols; ++x) {
+          for (int x = 0; x < cols; ++x) {
             planes[p].at<uchar>(y, x) = static_cast<uchar>(
                 std::clamp(mul * gradients[p].at<double>(y, x) + 128.0, 0.0, 255.0));
           }
@@ -166,7 +174,7 @@ CostVolume gradient_matching_cost(const std::array<cv::Mat, 6>& left,
         for (std::size_t x = 0; x < w; ++x) {
           const std::array<std::uint8_t, 8>& l = left_pixels[y * w + x];
           float* costs = &volume.at(x, y, 0);
-          const std::size_t valid = std::min(label_count, x + 1);
+          const std::size_t valid = volume.valid_labels(x);
           // The left values held in registers across the labels (a loop over the 6 planes
           // compiles to reloads from the stack and took 3 times as long).
           const int l0 = l[0], l1 = l[1], l2 = l[2], l3 = l[3], l4 = l[4], l5 = l[5];

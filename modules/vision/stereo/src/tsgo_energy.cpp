@@ -66,9 +66,10 @@ TsgoCost tsgo_cost(const cv::Mat& left, const cv::Mat& right, const TsgoOptions&
       tsgo_memory_estimate(static_cast<std::size_t>(left.cols), static_cast<std::size_t>(left.rows),
                            options.labels, options.threads));
   EqualisedPair pair = equalise_photometry(left, right, options.equalise_tolerance);
-  const double mul = gradient_scale(pair.left, options.threads);
+  const std::array<cv::Mat, 6> left_gradients = signed_sqrt_gradients(pair.left, options.threads);
+  const double mul = gradient_scale(pair.left, left_gradients);
   CostVolume volume =
-      gradient_matching_cost(gradient_planes(pair.left, mul, options.threads),
+      gradient_matching_cost(gradient_planes(left_gradients, mul, options.threads),
                              gradient_planes(pair.right, mul, options.threads), options.labels,
                              options.cost_truncation, options.threads);
   robust_transform(volume, options.transform_threshold, options.threads);

@@ -6,6 +6,7 @@
 // pixel (x, y) with disparity d matches the right pixel (x - d, y); (x, d) is "valid" when
 // d <= x.
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 
@@ -30,6 +31,10 @@ class CostVolume {
   [[nodiscard]] int labels() const noexcept { return labels_; }
   [[nodiscard]] bool valid(std::size_t x, int d) const noexcept {
     return static_cast<std::size_t>(d) <= x;
+  }
+  /// How many labels are valid at column x: d = 0 .. valid_labels(x) - 1.
+  [[nodiscard]] std::size_t valid_labels(std::size_t x) const noexcept {
+    return std::min(static_cast<std::size_t>(labels_), x + 1);
   }
 
   float& at(std::size_t x, std::size_t y, int d) noexcept {

@@ -44,10 +44,15 @@ std::array<cv::Mat, 6> signed_sqrt_gradients(const cv::Mat& image, int threads =
 /// square root.) Returns 1 for an image without gradients. The gradients are computed on
 /// `threads` threads (as signed_sqrt_gradients); the sums are OpenCV's, in one thread.
 double gradient_scale(const cv::Mat& image, int threads = 1);
+/// As above with the image's signed_sqrt_gradients given (computed once for scale and planes).
+double gradient_scale(const cv::Mat& image, const std::array<cv::Mat, 6>& gradients);
 
 /// The six gradient byte planes: clamp(mul * signed_sqrt_gradient + 128, 0, 255), truncated.
 /// Rows are computed on `threads` threads; every value is the same for any count.
 std::array<cv::Mat, 6> gradient_planes(const cv::Mat& image, double mul, int threads = 1);
+/// As above from the image's signed_sqrt_gradients.
+std::array<cv::Mat, 6> gradient_planes(const std::array<cv::Mat, 6>& gradients, double mul,
+                                       int threads = 1);
 
 /// C0(x, y, d) = min(sum over the 6 planes of |left(x, y) - right(x - d, y)|, truncation) for
 /// valid (x, d); invalid cells are set to NaN (fill_left_border replaces them). Rows are
