@@ -118,9 +118,8 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   };
   if (config.potts) {
     // As in c2f-segment: the recycled move graphs get what the budget leaves.
-    SolverChoice choice;
-    choice.graph_memory_limit = static_cast<std::size_t>(-1);
-    choice = fit_to_budget(choice, problem_size(problem.potts), memory, "the Potts energy");
+    const SolverChoice choice =
+        fit_to_budget({}, problem_size(problem.potts), memory, "the Potts energy");
     ExpansionSolver<> solver(choice.expansion_options());
     run.summary =
         coarse_to_fine(problem.potts, levels, solver,

@@ -156,7 +156,6 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   const Schedule parsed = parse_stereo_schedule(schedule);
   ScheduleProvider provider(parsed, scene.shape(), slic_source(problem.guide));
   SolverChoice expansion;
-  expansion.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
   expansion.order = settings.label_order;
   expansion.maxflow = settings.maxflow;
   expansion.near_radius = near_radius;

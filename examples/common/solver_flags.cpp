@@ -77,8 +77,6 @@ SolverChoice SolverFlags::choice() const {
     const double gib = parse_real_option("--graph-memory", graph_memory_text_, {0.0, 65536.0});
     choice.graph_memory_limit =
         static_cast<std::size_t>(gib * static_cast<double>(std::size_t{1} << 30));
-  } else {
-    choice.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
   }
   return choice;
 }
@@ -92,7 +90,7 @@ std::string memory_line(const MemoryBudget& budget, const SolverChoice& choice) 
   std::string line = "memory budget " + budget.describe();
   if (choice.kind == SolverKind::expansion || choice.kind == SolverKind::swap) {
     line += ", recycled move graphs up to " +
-            format_bytes(static_cast<double>(choice.graph_memory_limit));
+            format_bytes(static_cast<double>(choice.graph_memory_bytes()));
   }
   return line;
 }

@@ -82,9 +82,8 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
   const int num_labels = problem.coop.num_labels();
   if (command.method == examples::SegmentMethod::potts) {
     // Its recycled move graphs get what the budget leaves; coarse levels the room it gives them.
-    SolverChoice choice;
-    choice.graph_memory_limit = static_cast<std::size_t>(-1);
-    choice = fit_to_budget(choice, problem_size(problem.potts), command.memory, "the Potts energy");
+    const SolverChoice choice =
+        fit_to_budget({}, problem_size(problem.potts), command.memory, "the Potts energy");
     ExpansionSolver<> solver(choice.expansion_options());
     Options options =
         examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));

@@ -30,7 +30,6 @@ void require_memory_within(const MemoryBudget& budget, const std::string& what,
 
 SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy,
                            const MemoryBudget& budget) {
-  choice.graph_memory_limit = static_cast<std::size_t>(-1);  // what the budget leaves
   try {
     return fit_to_budget(choice, problem_size(energy), budget, "the energy");
   } catch (const std::invalid_argument& error) {

@@ -88,6 +88,14 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
   const MemoryBudget budget{*floor + 12345, "a test"};
   const SolverChoice fitted = fit_to_budget(choice, size, budget, "the run");
   CHECK(fitted.graph_memory_limit == 12345);
+  // No limit of its own: unfitted, the solvers get MoveOptions' default; fitted, what the
+  // budget leaves.
+  const SolverChoice unset;
+  CHECK(unset.expansion_options().graph_memory_limit == MoveOptions{}.graph_memory_limit);
+  const MemoryBudget roomy{*floor + MoveOptions{}.graph_memory_limit + 1, "a test"};
+  CHECK(fit_to_budget(unset, size, roomy, "the run").expansion_options().graph_memory_limit ==
+        MoveOptions{}.graph_memory_limit + 1);
+  CHECK(fit_to_budget(unset, size, budget, "the run").swap_options().graph_memory_limit == 12345);
   choice.graph_memory_limit = 100;  // a smaller limit given stays
   CHECK(fit_to_budget(choice, size, budget, "the run").graph_memory_limit == 100);
   const MemoryBudget small{*floor - 1, "a test"};

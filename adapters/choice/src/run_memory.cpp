@@ -87,7 +87,7 @@ std::optional<std::size_t> coarse_level_memory(const SolverChoice& choice, const
         choice.kind == SolverKind::expansion ? labels : labels * (labels + 1) / 2;
     const auto one = graph_cut_bytes(choice.maxflow, level);
     const auto all = one ? checked_product({*one, moves}) : one;
-    graphs = std::min(all.value_or(static_cast<std::size_t>(-1)), choice.graph_memory_limit);
+    graphs = std::min(all.value_or(static_cast<std::size_t>(-1)), choice.graph_memory_bytes());
   }
   return checked_sum({*unaries, *edges, *solver, graphs});
 }
@@ -114,7 +114,8 @@ SolverChoice fit_to_budget(SolverChoice choice, const ProblemSize& size, const M
   budget.require_within(what, floor);
   // A default budget grows to the floor when that is more.
   const std::size_t bytes = budget.for_need(*floor);
-  choice.graph_memory_limit = std::min(choice.graph_memory_limit, bytes - *floor);
+  choice.graph_memory_limit =
+      std::min(choice.graph_memory_limit.value_or(static_cast<std::size_t>(-1)), bytes - *floor);
   // What the budget leaves above the floor, and the original problem's solver's share of the
   // floor: coarse levels run before that solver is built.
   choice.coarse_level_room = bytes - *floor + *solver_bytes(choice, size);

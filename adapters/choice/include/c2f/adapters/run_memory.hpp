@@ -68,9 +68,9 @@ using CoarseLevelFits = std::function<bool(std::size_t groups)>;
 [[nodiscard]] CoarseLevelFits coarse_level_admission(const SolverChoice& choice,
                                                      const ProblemSize& size);
 
-/// `choice` fitted to `budget`: graph_memory_limit lowered to what `budget` leaves above
+/// `choice` fitted to `budget`: graph_memory_limit set to what `budget` leaves above
 /// run_memory_floor (a default budget first grown to the floor when that is more:
-/// MemoryBudget::for_need; a smaller limit already in `choice` stays), and coarse_level_room
+/// MemoryBudget::for_need; a smaller limit already set in `choice` stays), and coarse_level_room
 /// what the budget leaves above the floor plus the original problem's solver's working memory (not
 /// yet built while coarse levels run). Throws std::invalid_argument "<what> needs N, more than the
 /// run's memory budget of M" (MemoryBudget::require) when the floor does not fit.

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -98,8 +99,10 @@ struct SolverChoice {
   VisitOrder order = VisitOrder::sequential;   ///< expansion, swap (labels), icm (variables)
   std::uint64_t seed = 1;                      ///< for VisitOrder::random
   MaxFlowKind maxflow = MaxFlowKind::dynamic;  ///< expansion, swap
-  /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend)
-  std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
+  /// expansion, swap: MoveOptions::graph_memory_limit (for the dynamic backend). Unset: what
+  /// the run's memory budget leaves above its floor once fit_to_budget has fitted the choice,
+  /// MoveOptions' default before (graph_memory_bytes).
+  std::optional<std::size_t> graph_memory_limit = std::nullopt;
   int near_radius = 0;       ///< expansion: ExpansionOptions::near_radius (0: whole moves only)
   bool shift_moves = false;  ///< expansion: ExpansionOptions::shift_moves
   /// expansion with near_radius > 0 or shift_moves: the levels that make near and shift moves.
@@ -111,12 +114,16 @@ struct SolverChoice {
   /// budget). The default admits every level.
   std::size_t coarse_level_room = static_cast<std::size_t>(-1);
 
+  /// The limit the solvers get: graph_memory_limit, or MoveOptions' default when unset.
+  [[nodiscard]] std::size_t graph_memory_bytes() const {
+    return graph_memory_limit.value_or(MoveOptions{}.graph_memory_limit);
+  }
   /// Swap's options.
   [[nodiscard]] SwapOptions swap_options() const {
     SwapOptions options;
     options.order = order;
     options.seed = seed;
-    options.graph_memory_limit = graph_memory_limit;
+    options.graph_memory_limit = graph_memory_bytes();
     return options;
   }
   /// Expansion's options on the original problem.
@@ -124,7 +131,7 @@ struct SolverChoice {
     ExpansionOptions options;
     options.order = order;
     options.seed = seed;
-    options.graph_memory_limit = graph_memory_limit;
+    options.graph_memory_limit = graph_memory_bytes();
     options.near_radius = near_radius;
     options.shift_moves = shift_moves;
     return options;
