@@ -116,22 +116,25 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
     run.trace.push_back({event.time_s, event.energy, error(ground)});
     return ObserverDecision::continue_run;
   };
+  // As in c2f-segment: the recycled move graphs get what the budget leaves (and with Potts,
+  // coarse levels the room it gives them).
   if (config.potts) {
-    // As in c2f-segment: the recycled move graphs get what the budget leaves.
     const SolverChoice choice =
         fit_to_budget({}, problem_size(problem.potts), memory, "the Potts energy");
     ExpansionSolver<> solver(choice.expansion_options());
-    run.summary =
-        coarse_to_fine(problem.potts, levels, solver,
-                       options_for(solver.quiet_steps_to_converge(problem.potts)), observer);
+    Options options = options_for(solver.quiet_steps_to_converge(problem.potts));
+    options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
+    run.summary = coarse_to_fine(problem.potts, levels, solver, options, observer);
   } else {
     CoopSolverOptions solver_options;
     solver_options.strategy = config.strategy;
     solver_options.start = config.start;
-    CoopSolver solver(solver_options);
-    run.summary =
-        coarse_to_fine(problem.coop, levels, solver,
-                       options_for(solver.quiet_steps_to_converge(problem.coop)), observer);
+    const CoopSolverOptions fitted =
+        fit_to_budget(solver_options, problem.coop, energy_memory_bytes(problem.potts), memory,
+                      "the cooperative energy");
+    CoopSolver solver(fitted);
+    Options options = options_for(solver.quiet_steps_to_converge(problem.coop));
+    run.summary = coarse_to_fine(problem.coop, levels, solver, options, observer);
   }
   close_checked(file, trace_path);
   run.error = error(run.summary.labeling);

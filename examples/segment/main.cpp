@@ -90,8 +90,13 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
     options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
     return coarse_to_fine(problem.potts, levels, solver, options, observer);
   }
-  CoopSolver solver(command.coop);
-  const Options options =
+  // The cooperative energy beside the Potts one: its expansion's recycled graphs get what the
+  // budget leaves.
+  const CoopSolverOptions fitted =
+      fit_to_budget(command.coop, problem.coop, energy_memory_bytes(problem.potts), command.memory,
+                    "the cooperative energy");
+  CoopSolver solver(fitted);
+  Options options =
       examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.coop));
   return coarse_to_fine(problem.coop, levels, solver, options, observer);
 }

@@ -173,10 +173,12 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
       options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
       summary = coarse_to_fine(problem.potts, levels, solver, options, std::ref(record));
     } else {
-      CoopSolver solver(coop);
-      summary = coarse_to_fine(problem.coop, levels, solver,
-                               options_for(solver.quiet_steps_to_converge(problem.coop)),
-                               std::ref(record));
+      // As in c2f-segment: the cooperative energy beside the Potts one.
+      const CoopSolverOptions fitted =
+          fit_coop_to_memory(coop, problem.coop, problem.potts, budget);
+      CoopSolver solver(fitted);
+      Options options = options_for(solver.quiet_steps_to_converge(problem.coop));
+      summary = coarse_to_fine(problem.coop, levels, solver, options, std::ref(record));
     }
     report = summary.report();
   }

@@ -37,4 +37,14 @@ SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy,
   }
 }
 
+CoopSolverOptions fit_coop_to_memory(const CoopSolverOptions& options, const CoopEnergy& coop,
+                                     const PairwiseEnergy& potts, const MemoryBudget& budget) {
+  try {
+    return fit_to_budget(options, coop, energy_memory_bytes(potts), budget,
+                         "the cooperative energy");
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("memory: ") + error.what());
+  }
+}
+
 }  // namespace c2f::python

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "c2f/adapters/coop/coop_memory.hpp"
 #include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
@@ -27,5 +28,11 @@ void require_memory_within(const MemoryBudget& budget, const std::string& what,
 /// ValueError naming `memory` when the floor does not fit.
 SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy,
                            const MemoryBudget& budget);
+
+/// The cooperative-cut solver's `options` fitted to `budget` for a run on `coop` with `potts`
+/// kept beside it (fit_to_budget of coop_memory.hpp); a ValueError naming `memory` when the
+/// floor does not fit.
+CoopSolverOptions fit_coop_to_memory(const CoopSolverOptions& options, const CoopEnergy& coop,
+                                     const PairwiseEnergy& potts, const MemoryBudget& budget);
 
 }  // namespace c2f::python

@@ -85,8 +85,10 @@ def test_segment_inputs_are_checked(rng):
     with pytest.raises(ValueError, match="memory: segmenting 30x20 pixels into 2 labels needs .* "
                                          "more than the run's memory budget"):
         c2f.segment(image, seeds, memory=1e-6)
-    # A budget that holds the data but not the Potts run's floor is refused too.
+    # A budget that holds the data but not the run's floor is refused too, for both methods.
     with pytest.raises(ValueError, match="memory: the energy needs "):
         c2f.segment(image, seeds, method="potts", memory=0.01)
+    with pytest.raises(ValueError, match="memory: the cooperative energy needs "):
+        c2f.segment(image, seeds, memory=0.01)
     result = c2f.segment(image, seeds, schedule="flat")
     assert result.labeling[2, 2] == 0 and result.labeling[15, 25] == 1

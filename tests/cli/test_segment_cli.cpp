@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 #include "support/run_tool.hpp"
@@ -67,4 +68,38 @@ TEST_CASE("c2f-segment stopped by SIGTERM writes the best labeling so far and ex
   const std::string text((std::istreambuf_iterator<char>(summary)), {});
   CHECK_THAT(text, Catch::Contains("interrupted by SIGTERM after"));
   CHECK(std::filesystem::exists(out + "/labels.png"));
+}
+
+TEST_CASE("c2f-segment's cooperative run stays within its memory budget, or says what it needs",
+          "[segment][cli][memory]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-memory";
+  std::filesystem::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 240, 180, 4);
+  const std::string inputs = files.image + " " + files.seeds + " -q --classes 4 --threads 1";
+  // 0.1 GiB holds the data preparation but not the run's floor: refused, with what it needs.
+  const c2f::test::ToolResult refused =
+      run(inputs + " -o " + (dir / "refused").string() + " --memory 0.1");
+  INFO(refused.output);
+  CHECK(refused.exit_code != 0);
+  std::smatch need;
+  const std::regex needs(
+      "the cooperative energy needs ([0-9.]+) MiB, more than the run's "
+      "memory budget of 102.4 MiB \\(--memory 0.1\\)");
+  REQUIRE(std::regex_search(refused.output, need, needs));
+  CHECK_FALSE(std::filesystem::exists(dir / "refused" / "labels.png"));
+  // A budget 32 MiB above the floor: the run's peak stays within it.
+  const double budget_mib = std::stod(need[1].str()) + 32.0;
+  const std::string memory = std::to_string(budget_mib / 1024.0);
+  const c2f::test::ToolResult r = c2f::test::run_tool_measured(
+      C2F_SEGMENT_BINARY, inputs + " -o " + (dir / "fits").string() + " --memory " + memory);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(std::filesystem::exists(dir / "fits" / "labels.png"));
+#if defined(__SANITIZE_ADDRESS__)
+  // Resident sizes there include the sanitizer's shadow memory and quarantine.
+  WARN("AddressSanitizer build: peak resident size " << r.peak_kib
+                                                     << " KiB not compared with the budget");
+#else
+  CHECK(static_cast<double>(r.peak_kib) <= budget_mib * 1024.0);
+#endif
 }

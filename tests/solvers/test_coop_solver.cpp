@@ -1,12 +1,13 @@
 // The cooperative-cut solvers: every strategy keeps the true energy monotone and exact, mm ends
 // at a minimiser of its own E_h (exact for two labels), h carries over between levels, and the
-// driver runs them coarse to fine on schedule levels.
+// driver runs them coarse to fine on schedule levels, within a memory budget.
 
 #include <catch2/catch.hpp>
 
 #include <random>
 #include <vector>
 
+#include "c2f/adapters/coop/coop_memory.hpp"
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
@@ -166,4 +167,51 @@ TEST_CASE("cooperative cuts run coarse to fine on colour-passing levels",
     CHECK(summary.energy == energy.evaluate(summary.labeling));
     CHECK(levels.reports().front().level == "cp:2,1");
   }
+}
+
+TEST_CASE("a cooperative-cut run fits its memory budget: its floor and its recycled graphs",
+          "[coop][solver][memory]") {
+  Rng rng(45);
+  const CoopEnergy energy = region_coop(rng, 30, 20, 4, 3, true);
+  const std::size_t kept = 1000;  // e.g. the Potts energy the caller keeps
+  const CoopSolverOptions mm = options_for(AuxStrategy::mm, ExpansionStart::current);
+  // The floor, as the contract composes it: alpha-expansion's floor on E_h's sizes with the
+  // cooperative energy, E_h, the caller's bytes and the solver's own beside it.
+  ProblemSize size = problem_size(pairwise_energy(energy, CoopAuxiliary(4, 3)));
+  const auto own = coop_solver_bytes(mm, size);
+  REQUIRE(own.has_value());
+  size.energy_bytes += coop_energy_bytes(energy) + kept + *own;
+  const auto floor = run_memory_floor(SolverChoice{}, size);
+  REQUIRE(floor.has_value());
+  CHECK(coop_energy_bytes(energy) >= energy.unaries().size_bytes() + energy.edges().size_bytes());
+
+  // The recycled graphs get what the budget leaves above the floor; a smaller limit stays.
+  CHECK(fit_to_budget(mm, energy, kept, MemoryBudget{*floor + 12345, "a test"}, "the run")
+            .graph_memory_limit == 12345);
+  CoopSolverOptions capped = mm;
+  capped.graph_memory_limit = 100;
+  const CoopSolverOptions fitted =
+      fit_to_budget(capped, energy, kept, MemoryBudget{*floor + 12345, "a test"}, "the run");
+  CHECK(fitted.graph_memory_limit == 100);
+  CHECK(fitted.strategy == AuxStrategy::mm);
+  CHECK(fitted.start == ExpansionStart::current);
+  CHECK_THROWS_WITH(
+      fit_to_budget(mm, energy, kept, MemoryBudget{*floor - 1, "a test"}, "the run"),
+      Catch::StartsWith("the run needs ") && Catch::Contains("more than the run's memory budget"));
+  // The relaxation's L-BFGS history counts for the ceres strategy.
+  const auto ceres = coop_solver_bytes(options_for(AuxStrategy::ceres, ExpansionStart::zero), size);
+  REQUIRE(ceres.has_value());
+  CHECK(*ceres >= *own + 600 * 4 * 40 * sizeof(double));
+
+  // The recycled graphs' limit changes how fast, not where mm goes on this energy.
+  std::vector<std::vector<double>> runs;
+  for (const std::size_t limit : {std::size_t{0}, MoveOptions{}.graph_memory_limit}) {
+    CoopSolverOptions options = mm;
+    options.graph_memory_limit = limit;
+    CoopSolver solver(options);
+    solver.bind(energy, Labeling(energy.num_variables(), 0));
+    std::vector<double>& energies = runs.emplace_back();
+    for (int step = 0; step < 4; ++step) energies.push_back(solver.step());
+  }
+  CHECK(runs[0] == runs[1]);
 }

@@ -115,7 +115,9 @@ double CoopSolver::step() {
 
 Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> start) {
   const PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
-  ExpansionSolver<> expansion;
+  ExpansionOptions expansion_options;
+  expansion_options.graph_memory_limit = options_.graph_memory_limit;
+  ExpansionSolver<> expansion(expansion_options);
   expansion.bind(pairwise, start);
   const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);
   for (int cycle = 0; cycle < options_.expansion_cycles; ++cycle) {

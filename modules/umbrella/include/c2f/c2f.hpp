@@ -2,6 +2,7 @@
 // Umbrella header: every public header of the c2f library (the optional GPL-3 max-flow backend,
 // c2f/adapters/maxflow/kolmogorov_maxflow.hpp, is left out: include it by name).
 
+#include "c2f/adapters/coop/coop_memory.hpp"
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"

@@ -27,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/labeling.hpp"
@@ -63,6 +64,10 @@ struct CoopSolverOptions {
   /// does not lower E_h), as the reference's expansion(10).
   int expansion_cycles = 10;
   RelaxationOptions relaxation;  ///< ceres only
+  /// Bytes each step's alpha-expansion may keep in recycled move graphs
+  /// (MoveOptions::graph_memory_limit); fit_to_budget (coop_memory.hpp) sets it from a run's
+  /// memory budget.
+  std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
