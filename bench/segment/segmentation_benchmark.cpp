@@ -133,8 +133,9 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
         fit_to_budget(solver_options, problem.coop, energy_memory_bytes(problem.potts), memory,
                       "the cooperative energy");
     CoopSolver solver(fitted);
-    Options options = options_for(solver.quiet_steps_to_converge(problem.coop));
-    run.summary = coarse_to_fine(problem.coop, levels, solver, options, observer);
+    run.summary =
+        coarse_to_fine(problem.coop, levels, solver,
+                       options_for(solver.quiet_steps_to_converge(problem.coop)), observer);
   }
   close_checked(file, trace_path);
   run.error = error(run.summary.labeling);

@@ -96,7 +96,7 @@ Summary solve(const examples::SegmentCommand& command, const SegmentationProblem
       fit_to_budget(command.coop, problem.coop, energy_memory_bytes(problem.potts), command.memory,
                     "the cooperative energy");
   CoopSolver solver(fitted);
-  Options options =
+  const Options options =
       examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.coop));
   return coarse_to_fine(problem.coop, levels, solver, options, observer);
 }

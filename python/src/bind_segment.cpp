@@ -177,8 +177,9 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
       const CoopSolverOptions fitted =
           fit_coop_to_memory(coop, problem.coop, problem.potts, budget);
       CoopSolver solver(fitted);
-      Options options = options_for(solver.quiet_steps_to_converge(problem.coop));
-      summary = coarse_to_fine(problem.coop, levels, solver, options, std::ref(record));
+      summary = coarse_to_fine(problem.coop, levels, solver,
+                               options_for(solver.quiet_steps_to_converge(problem.coop)),
+                               std::ref(record));
     }
     report = summary.report();
   }

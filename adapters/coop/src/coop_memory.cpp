@@ -46,13 +46,13 @@ CoopSolverOptions fit_to_budget(CoopSolverOptions options, const CoopEnergy& ene
   const std::optional<std::size_t> own = coop_solver_bytes(options, size);
   const std::optional<std::size_t> beside =
       own ? checked_sum({size.energy_bytes, coop_bytes, kept_bytes, *own}) : own;
-  const SolverChoice expansion;  // CoopSolver's alpha-expansion: whole moves, our max-flow
   if (!beside) {
     budget.require_within(what, std::nullopt);
     return options;
   }
   size.energy_bytes = *beside;
-  const SolverChoice fitted = fit_to_budget(expansion, size, budget, what);
+  // CoopSolver's alpha-expansion: whole moves on our max-flow, SolverChoice's defaults.
+  const SolverChoice fitted = fit_to_budget(SolverChoice{}, size, budget, what);
   options.graph_memory_limit = std::min(options.graph_memory_limit, fitted.graph_memory_bytes());
   return options;
 }
