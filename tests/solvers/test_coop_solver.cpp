@@ -180,10 +180,10 @@ TEST_CASE("a cooperative-cut run fits its memory budget: its floor and its recyc
   ProblemSize size = problem_size(pairwise_energy(energy, CoopAuxiliary(4, 3)));
   const auto own = coop_solver_bytes(mm, size);
   REQUIRE(own.has_value());
-  size.energy_bytes += coop_energy_bytes(energy) + kept + *own;
+  size.energy_bytes += energy_memory_bytes(energy) + kept + *own;
   const auto floor = run_memory_floor(SolverChoice{}, size);
   REQUIRE(floor.has_value());
-  CHECK(coop_energy_bytes(energy) >= energy.unaries().size_bytes() + energy.edges().size_bytes());
+  CHECK(energy_memory_bytes(energy) >= energy.unaries().size_bytes() + energy.edges().size_bytes());
 
   // The recycled graphs get what the budget leaves above the floor; a smaller limit stays.
   CHECK(fit_to_budget(mm, energy, kept, MemoryBudget{*floor + 12345, "a test"}, "the run")

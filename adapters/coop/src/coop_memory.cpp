@@ -15,11 +15,6 @@ constexpr std::size_t kRelaxationDoublesPerUnknown = 43;
 
 }  // namespace
 
-std::size_t coop_energy_bytes(const CoopEnergy& energy) {
-  return energy.unaries().size_bytes() + energy.class_totals().size_bytes() +
-         energy.edges().size_bytes() + energy.entries().size_bytes();
-}
-
 std::optional<std::size_t> coop_solver_bytes(const CoopSolverOptions& options,
                                              const ProblemSize& size) {
   const auto labels = static_cast<std::size_t>(std::max(size.labels, 0));
@@ -42,14 +37,10 @@ CoopSolverOptions fit_to_budget(CoopSolverOptions options, const CoopEnergy& ene
   const PairwiseEnergy all_linear =
       pairwise_energy(energy, CoopAuxiliary(energy.num_labels(), energy.num_classes()));
   ProblemSize size = problem_size(all_linear);
-  const std::size_t coop_bytes = coop_energy_bytes(energy);
   const std::optional<std::size_t> own = coop_solver_bytes(options, size);
   const std::optional<std::size_t> beside =
-      own ? checked_sum({size.energy_bytes, coop_bytes, kept_bytes, *own}) : own;
-  if (!beside) {
-    budget.require_within(what, std::nullopt);
-    return options;
-  }
+      own ? checked_sum({size.energy_bytes, energy_memory_bytes(energy), kept_bytes, *own}) : own;
+  if (!beside) budget.require_within(what, std::nullopt);  // throws: the count overflows
   size.energy_bytes = *beside;
   // CoopSolver's alpha-expansion: whole moves on our max-flow, SolverChoice's defaults.
   const SolverChoice fitted = fit_to_budget(SolverChoice{}, size, budget, what);

@@ -303,6 +303,11 @@ double aux_constant(const CoopEnergy& energy, const CoopAuxiliary& h) {
   return energy.parameters().lambda * total;
 }
 
+std::size_t energy_memory_bytes(const CoopEnergy& energy) {
+  return energy.unaries().size_bytes() + energy.class_totals().size_bytes() +
+         energy.edges().size_bytes() + energy.entries().size_bytes();
+}
+
 PairwiseEnergy potts_energy(const CoopEnergy& energy) {
   std::vector<Edge> edges;
   edges.reserve(energy.edges().size());

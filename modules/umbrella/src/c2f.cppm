@@ -48,7 +48,6 @@ using c2f::ColourPassingLevel;
 using c2f::connected_components;
 using c2f::Connectivity;
 using c2f::ConvergingSolver;
-using c2f::coop_energy_bytes;
 using c2f::coop_solver_bytes;
 using c2f::CoopAuxiliary;
 using c2f::coopcuts_example_parameters;

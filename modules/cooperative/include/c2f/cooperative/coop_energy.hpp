@@ -113,6 +113,10 @@ class CoopEnergy {
   std::vector<ClassWeight> entries_;
 };
 
+/// The bytes the arrays of `energy` take (as energy_memory_bytes of a PairwiseEnergy, in
+/// c2f/core/memory_budget.hpp).
+[[nodiscard]] std::size_t energy_memory_bytes(const CoopEnergy& energy);
+
 /// The reduced energy over the groups of `partition`: group unaries are sums, edges inside a
 /// group are dropped, edges between two groups are merged per group pair (smaller group id as
 /// u) with the weights of equal classes summed per side; the class totals T_g and parameters

@@ -13,9 +13,6 @@
 
 namespace c2f {
 
-/// The bytes the arrays of `energy` take.
-[[nodiscard]] std::size_t coop_energy_bytes(const CoopEnergy& energy);
-
 /// The bytes CoopSolver with `options` works in on an energy of `size` besides its
 /// alpha-expansion: the labelings it tries and keeps, and with AuxStrategy::ceres the
 /// relaxation's logits, probabilities and L-BFGS history (Ceres' default rank 20: 43 doubles
