@@ -370,10 +370,13 @@ class SliceSmoother {
     std::size_t node_entries = 0;
     for (std::size_t n = 0; n + 1 < needed_x_.offset.size(); ++n)
       node_entries = std::max(node_entries, needed_x_.offset[n + 1] - needed_x_.offset[n]);
-    return {DefaultInitVector<Value>(splatted_.size() * kLanes),
-            DefaultInitVector<Value>(needed_y_.size() * kLanes),
-            std::vector<DefaultInitVector<Value>>(members,
-                                                  DefaultInitVector<Value>(node_entries * kLanes))};
+    Workspace space{DefaultInitVector<Value>(splatted_.size() * kLanes),
+                    DefaultInitVector<Value>(needed_y_.size() * kLanes),
+                    std::vector<DefaultInitVector<Value>>(members)};
+    // Each sized on its own: copies of one unwritten buffer would read its unset values.
+    for (DefaultInitVector<Value>& buffer : space.node_blurred)
+      buffer.resize(node_entries * kLanes);
+    return space;
   }
 
   /// Smooths `count` slices at once, slice k's value at pixel p being values[p * stride + k],
