@@ -217,8 +217,7 @@ struct Study {
 };
 
 std::vector<Row> read_rows(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::invalid_argument("cannot read '" + path + "'");
+  std::istringstream file(read_input_file(path, "rows file", kMaxTextInputBytes));
   std::vector<Row> rows;
   std::string line;
   std::getline(file, line);

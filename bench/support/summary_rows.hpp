@@ -3,23 +3,30 @@
 // `summarize`.
 
 #include <cstddef>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "c2f/core/input_file.hpp"
+
 namespace c2f::bench {
 
 /// The rows of `path` with their fields: empty lines and header lines (beginning with
 /// `header_start`, e.g. "scene\t") are skipped. Throws std::runtime_error naming the file when it
-/// cannot be opened or a row has other than `columns` fields, and std::invalid_argument when it
+/// cannot be read (c2f/core/input_file.hpp: a regular file of at most 64 MiB) or a row has other
+/// than `columns` fields, and std::invalid_argument when it
 /// holds no row (a summary of nothing is no summary).
 inline std::vector<std::vector<std::string>> read_summary_rows(const std::string& path,
                                                                const std::string& header_start,
                                                                std::size_t columns) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::string text;
+  try {
+    text = read_input_file(path, "rows file", kMaxTextInputBytes);
+  } catch (const std::invalid_argument& error) {
+    throw std::runtime_error(error.what());
+  }
+  std::istringstream in(text);
   std::vector<std::vector<std::string>> rows;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line.rfind(header_start, 0) == 0) continue;

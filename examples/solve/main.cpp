@@ -28,7 +28,7 @@ struct TimedModel {
 
 TimedModel read_model(const examples::SolveCommand& command) {
   const auto start = Clock::now();
-  PairwiseEnergy energy = read_uai_file(command.model);
+  PairwiseEnergy energy = read_uai_file(command.model, command.memory);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet) {
     std::fprintf(stderr, "c2f-solve: %s: %zu variables, %d labels, %zu pairwise factors (%.2f s)\n",

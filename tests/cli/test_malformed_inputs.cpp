@@ -121,6 +121,12 @@ struct Inputs {
     table("scenes-fields", "2003,Pair,pair,48,32\n");
     table("scenes-divisor", "2003,Pair,pair,48,32,native,inf,left.png\n");
     table("scenes-twice", "2003,Pair,a,48,32,native,4,x\n2005,Pair,b,48,32,native,4,x\n");
+    // Scene tables that are no regular file: refused at once, never waited on or read.
+    fs::create_directories(dir / "scenes-fifo");
+    REQUIRE(::mkfifo((dir / "scenes-fifo" / "scenes.csv").c_str(), 0600) == 0);
+    fs::create_directories(dir / "scenes-zero");
+    fs::create_symlink("/dev/zero", dir / "scenes-zero" / "scenes.csv");
+    fs::create_directories(dir / "scenes-folder" / "scenes.csv");
     fs::create_directories(dir / "scenes-nocolumn");
     write_bytes(dir / "scenes-nocolumn" / "scenes.csv", "year,scene\n2003,Pair\n");
 
@@ -334,7 +340,19 @@ std::vector<Case> stereo_cases() {
        "-o {out}/stereo --scene Nowhere --data {dir}/scenes-good",
        2,
        {"no scene 'Nowhere' in ", "scenes.csv (have: Pair)"}},
-      {"stereo", scene + "missing-folder", 2, {"cannot open scene table '", "missing-folder"}},
+      {"stereo", scene + "missing-folder", 2, {"scene table '", "missing-folder/scenes.csv' does not exist"}},
+      {"stereo",
+       scene + "scenes-fifo",
+       2,
+       {"scene table '", "scenes-fifo/scenes.csv' is not a regular file (a FIFO)"}},
+      {"stereo",
+       scene + "scenes-zero",
+       2,
+       {"scene table '", "scenes-zero/scenes.csv' is not a regular file (a device)"}},
+      {"stereo",
+       scene + "scenes-folder",
+       2,
+       {"scene table '", "scenes-folder/scenes.csv' is a folder, not a file"}},
       {"stereo",
        scene + "scenes-width",
        2,

@@ -3,6 +3,8 @@
 // toulbar2 on small random and stereo models, when it is installed), and bad input is an error
 // naming it. toulbar2 must also read every model c2f writes.
 
+#include <sys/stat.h>
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -91,6 +93,13 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
   write_model(c2f::test::random_grid_energy(rng, 4, 3, 4), dir / "grid.uai");
   std::ofstream(dir / "zero.uai") << "MARKOV\n1\n2\n1\n1 0\n2\n0 1\n";
   std::ofstream(dir / "text.uai") << "hello\n";
+  {  // 4 GiB of unary costs declared in a few kilobytes: refused before they are allocated
+    std::ofstream huge(dir / "huge.uai");
+    huge << "MARKOV\n512\n";
+    for (int v = 0; v < 512; ++v) huge << "1048576 ";
+    huge << "\n0\n";
+  }
+  REQUIRE(::mkfifo((dir / "fifo.uai").c_str(), 0600) == 0);
   const std::string out = " -o " + (dir / "out").string();
   const std::string grid = (dir / "grid.uai").string();
   for (const auto& [arguments, expected] : std::vector<std::pair<std::string, std::string>>{
@@ -112,6 +121,10 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
            {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
+           {(dir / "huge.uai").string() + out + " --memory 0.5",
+            "huge.uai (512 variables x 1048576 labels, 0 factors) needs 4.0 GiB, more than the "
+            "run's memory budget of 512.0 MiB (--memory 0.5)"},
+           {(dir / "fifo.uai").string() + out, "fifo.uai' is not a regular file (a FIFO)"},
            {grid + out + " --memory 0.01",
             "grid.uai' solved by expansion needs 128.0 MiB, more than the run's memory budget of "
             "10.2 MiB (--memory 0.01)"},

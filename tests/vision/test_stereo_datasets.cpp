@@ -144,8 +144,10 @@ TEST_CASE("ndisp is read from calib.txt, strictly", "[stereo][middlebury2014]") 
   CHECK_THROWS_WITH(parse_ndisp("width=718\n", "c.txt"),
                     Catch::Contains("'c.txt' has no ndisp= line"));
   CHECK_THROWS_WITH(parse_ndisp("ndisp=7x\n", "c.txt"),
-                    Catch::Contains("line 1: ndisp: expected an integer in [1, 65536], got '7x'"));
+                    Catch::Contains("line 1: ndisp: expected an integer in [2, 65536] (one label "
+                                    "is no stereo), got '7x'"));
   CHECK_THROWS_WITH(parse_ndisp("ndisp=0\n", "c.txt"), Catch::Contains("got '0'"));
+  CHECK_THROWS_WITH(parse_ndisp("ndisp=1\n", "c.txt"), Catch::Contains("got '1'"));
   CHECK_THROWS_WITH(parse_ndisp("ndisp=7\nndisp=8\n", "c.txt"),
                     Catch::Contains("line 2: ndisp is given twice"));
 }
@@ -157,6 +159,13 @@ TEST_CASE("a Middlebury 2014 folder loads with its GT, mask and range",
   CHECK(scene.name == "Toy");
   CHECK(scene.disparity_range == 9);
   CHECK(scene.measure == middlebury2014_measure(Middlebury2014Size::quarter));
+  // A downscale that leaves fewer than 2 of the scene's labels is an error, not a silent
+  // fallback to another label count.
+  StereoScene two_labels = scene;
+  two_labels.disparity_range = 2;
+  CHECK_THROWS_WITH(downscale(two_labels, 2),
+                    Catch::Contains("the scene's 2 disparities shrunk by 2 leave fewer than 2 "
+                                    "labels"));
   CHECK(std::isnan(scene.gt.at<float>(0, 0)));  // +inf is unknown
   CHECK(scene.gt.at<float>(3, 5) == 3.0F);
   CHECK(scene.nonoccluded.at<uchar>(1, 1) == 0);  // 128: occluded

@@ -4,11 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "c2f/core/number_text.hpp"
 
 namespace c2f {
 
@@ -71,9 +72,8 @@ std::string format_bytes(double bytes) {
     bytes /= 1024.0;
     ++unit;
   }
-  char text[48];
-  std::snprintf(text, sizeof text, unit == 0 ? "%.0f %s" : "%.1f %s", bytes, units[unit]);
-  return text;
+  return unit == 0 ? c_format("%.0f %s", bytes, units[unit])
+                   : c_format("%.1f %s", bytes, units[unit]);
 }
 
 void require_memory(const std::string& what, std::optional<std::size_t> bytes) {

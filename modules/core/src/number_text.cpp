@@ -1,7 +1,10 @@
 #include "c2f/core/number_text.hpp"
 
+#include <locale.h>
+
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <system_error>
 
@@ -37,9 +40,27 @@ std::optional<long long> parse_integer(std::string_view text) {
   return value;
 }
 
-std::string format_real(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
+std::string format_real(double value) { return c_format("%g", value); }
+
+std::string c_format(const char* format, ...) {
+  static const locale_t c_locale = newlocale(LC_ALL_MASK, "C", locale_t{});
+  const locale_t previous = uselocale(c_locale);  // this thread only; restored below
+  std::va_list arguments;
+  va_start(arguments, format);
+  std::va_list again;
+  va_copy(again, arguments);
+  char small[256];
+  const int length = std::vsnprintf(small, sizeof small, format, arguments);
+  va_end(arguments);
+  std::string text;
+  if (length >= 0 && static_cast<std::size_t>(length) < sizeof small) {
+    text.assign(small, static_cast<std::size_t>(length));
+  } else if (length >= 0) {
+    text.resize(static_cast<std::size_t>(length));
+    std::vsnprintf(text.data(), text.size() + 1, format, again);
+  }
+  va_end(again);
+  uselocale(previous);
   return text;
 }
 

@@ -1,7 +1,8 @@
 #include "c2f/core/trace.hpp"
 
-#include <cstdio>
 #include <stdexcept>
+
+#include "c2f/core/number_text.hpp"
 
 namespace c2f {
 
@@ -21,14 +22,11 @@ TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error, std::string nam
 }
 
 ObserverDecision TraceWriter::operator()(const StepEvent& event) {
-  char row[160];
-  std::snprintf(row, sizeof row, "%.6f,%d,%ld,%.17g,%zu", event.time_s, event.level, event.step,
-                event.energy, event.num_variables);
-  *out_ << row;
+  *out_ << c_format("%.6f,%d,%ld,%.17g,%zu", event.time_s, event.level, event.step, event.energy,
+                     event.num_variables);
   if (error_) {
     const Labeling ground = event.ground_labeling();
-    std::snprintf(row, sizeof row, ",%.9g", error_(ground));
-    *out_ << row;
+    *out_ << c_format(",%.9g", error_(ground));
   }
   *out_ << '\n';
   if (!*out_) throw std::runtime_error("writing a row of " + name_ + " failed");

@@ -1,5 +1,7 @@
 #include "c2f/core/uai.hpp"
 
+#include "c2f/core/input_file.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/output_file.hpp"
 #include "c2f/core/text_input.hpp"
@@ -7,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <istream>
@@ -66,17 +67,18 @@ class TokenReader {
 
 double cost_of(double potential, TokenReader& reader, const std::string& where) {
   if (!(potential > 0.0))
-    reader.fail(where + ": potential " + std::to_string(potential) + " is not > 0 (infinite cost)");
+    reader.fail(where + ": potential " + format_real(potential) + " is not > 0 (infinite cost)");
   return -std::log(potential);
 }
 
 }  // namespace
 
-PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
-  // The whole text first: its size bounds every count the file declares, so a short file
-  // cannot make the reader allocate for 2^40 entries it does not hold.
-  const std::string whole((std::istreambuf_iterator<char>(stream)),
-                          std::istreambuf_iterator<char>());
+namespace {
+
+/// The energy of the UAI text `whole` (named `source`); when `budget` is given, the memory its
+/// declarations imply must fit it before the unary costs are allocated.
+PairwiseEnergy parse_uai(const std::string& whole, std::string_view source,
+                         const MemoryBudget* budget) {
   if (is_gzip(whole)) {
     throw std::invalid_argument(std::string(source) +
                                 ": a gzip-compressed file, not UAI text: decompress it first "
@@ -124,6 +126,22 @@ PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
     if (arity == 2 && scopes[f][0] == scopes[f][1])
       reader.fail(name + " joins variable " + std::to_string(scopes[f][0]) + " to itself");
   }
+  if (budget != nullptr) {
+    // The unary costs, a pairwise table in reading and as a term (when there is a pairwise
+    // factor), a scope and an edge per factor, and the text (kept twice while it is parsed).
+    const double labels = static_cast<double>(num_labels);
+    const bool pairwise = std::any_of(scopes.begin(), scopes.end(),
+                                      [](const auto& scope) { return scope.size() == 2; });
+    const double need = 8.0 * static_cast<double>(num_variables) * labels +
+                        (pairwise ? 16.0 * labels * labels : 0.0) +
+                        64.0 * static_cast<double>(num_factors) +
+                        2.0 * static_cast<double>(whole.size());
+    budget->require(std::string(source) + " (" + std::to_string(num_variables) +
+                        " variables x " + std::to_string(num_labels) + " labels, " +
+                        std::to_string(num_factors) + " factors)",
+                    need < 1.8e19 ? std::optional<std::size_t>(static_cast<std::size_t>(need))
+                                  : std::nullopt);
+  }
   const auto L = static_cast<std::size_t>(num_labels);
   constexpr std::size_t kMaxCosts = std::size_t{1} << 30;  // 8 GiB of unary costs
   if (static_cast<std::size_t>(num_variables) > kMaxCosts / L) {
@@ -162,10 +180,24 @@ PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
                         std::move(unaries), std::move(terms), std::move(edges));
 }
 
+}  // namespace
+
+PairwiseEnergy read_uai(std::istream& stream, std::string_view source) {
+  // The whole text first: its size bounds every count the file declares, so a short file
+  // cannot make the reader allocate for 2^40 entries it does not hold.
+  const std::string whole((std::istreambuf_iterator<char>(stream)),
+                          std::istreambuf_iterator<char>());
+  return parse_uai(whole, source, nullptr);
+}
+
+PairwiseEnergy read_uai_file(const std::string& path, const MemoryBudget& budget) {
+  // The text is kept twice while it is parsed: the file may take half the budget.
+  const std::string whole = read_input_file(path, "UAI file", budget.ceiling() / 2);
+  return parse_uai(whole, path, &budget);
+}
+
 PairwiseEnergy read_uai_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open UAI file '" + path + "'");
-  return read_uai(in, path);
+  return read_uai_file(path, default_memory_budget());
 }
 
 void write_uai(const PairwiseEnergy& energy, std::ostream& out, const std::function<bool()>& stop) {
@@ -176,7 +208,6 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out, const std::funct
   // the factors' minima, a constant).
   // Tables are written from their costs directly, in two passes (the lowest cost, then the
   // potentials): nothing of size L x L is allocated, whatever the label count.
-  char number[40];
   std::size_t tables = 0;
   auto write_table = [&](std::size_t count, const auto& cost, const std::string& where) {
     if (stop && ++tables % 1024 == 0 && stop())
@@ -187,12 +218,11 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out, const std::funct
     for (std::size_t k = 0; k < count; ++k) {
       const double value = std::exp(-(cost(k) - lowest));
       if (!(value >= std::numeric_limits<double>::min())) {
-        throw std::invalid_argument("write_uai: " + where + ": costs " + std::to_string(lowest) +
-                                    " and " + std::to_string(cost(k)) +
+        throw std::invalid_argument("write_uai: " + where + ": costs " + format_real(lowest) +
+                                    " and " + format_real(cost(k)) +
                                     " are too far apart for a UAI potential (spread > 708)");
       }
-      std::snprintf(number, sizeof number, "%.17g", value);
-      out << number << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
+      out << c_format("%.17g", value) << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
     }
   };
   const auto labels = static_cast<std::size_t>(L);
@@ -244,9 +274,7 @@ void write_uai_file(const PairwiseEnergy& energy, const std::string& path,
     const std::uintmax_t needed = uai_bytes_estimate(energy);
     if (!error && needed > space.available) {
       auto gb = [](std::uintmax_t bytes) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
-        return std::string(text);
+        return c_format("%.1f GB", static_cast<double>(bytes) / 1e9);
       };
       throw std::runtime_error("writing the UAI model '" + path + "' needs about " + gb(needed) +
                                " (" + std::to_string(energy.num_labels()) + "^2 potentials on " +

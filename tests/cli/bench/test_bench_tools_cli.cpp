@@ -88,13 +88,13 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-crossval", "run --plateau later", "--plateau: expected auto or sweep"},
       {"c2f-bench-crossval", "run --method annealing", "--method: unknown auxiliary-variable"},
       {"c2f-bench-crossval", "run --kmeans fast", "--kmeans: expected reference or plusplus"},
-      {"c2f-bench-crossval", "summarize /nonexistent.tsv", "cannot read '/nonexistent.tsv'"},
+      {"c2f-bench-crossval", "summarize /nonexistent.tsv", "rows file '/nonexistent.tsv' does not exist"},
       {"c2f-bench-crossval", "walk", "expected 'run' or 'summarize ROWS.tsv...'"},
-      // A summary of nothing is an error, not an empty table with nan medians.
-      {"c2f-bench-stereo", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
-      {"c2f-bench-segment", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
-      {"c2f-bench-expansion", "summarize /dev/null", "'/dev/null' holds no rows to summarize"},
-      {"c2f-bench-crossval", "summarize /dev/null", "'/dev/null' is not a c2f-bench-crossval rows"},
+      // A device is refused by the input layer before it is read.
+      {"c2f-bench-stereo", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-segment", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-expansion", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-crossval", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
   };
   for (const auto& [tool, arguments, expected] : cases) {
     const auto r = c2f::test::run_tool(bench + "/" + tool, arguments);

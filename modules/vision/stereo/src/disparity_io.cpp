@@ -125,10 +125,14 @@ cv::Mat parse_pfm(std::string_view bytes, const std::string& source) {
 }
 
 cv::Mat read_pfm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open PFM file '" + path + "'");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::runtime_error("reading PFM file '" + path + "' failed");
+  // The largest PFM an image may be: 2^30 pixels of 3 floats, and its header.
+  constexpr std::size_t kMaxPfmBytes = (std::size_t{12} << 30) + 4096;
+  std::string bytes;
+  try {
+    bytes = read_input_file(path, "PFM file", kMaxPfmBytes);
+  } catch (const std::invalid_argument& error) {
+    throw std::runtime_error(error.what());  // read_pfm's contract: runtime_error
+  }
   return parse_pfm(bytes, path);
 }
 

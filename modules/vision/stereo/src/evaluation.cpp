@@ -1,27 +1,23 @@
 #include "c2f/vision/stereo/evaluation.hpp"
 
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 namespace c2f::vision {
 
 std::string BadPixelRates::brief() const {
-  char text[200];
   if (nonoccluded_pixels == 0) {
-    std::snprintf(text, sizeof text,
-                  "bad>1: all %.2f%% (bad>0.5 %.2f%%, bad>2 %.2f%%; no occlusion mask)",
-                  100 * all[1], 100 * all[0], 100 * all[2]);
-  } else {
-    std::snprintf(text, sizeof text,
-                  "bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
-                  100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0],
-                  100 * nonoccluded[2], 100 * all[2]);
+    return c_format("bad>1: all %.2f%% (bad>0.5 %.2f%%, bad>2 %.2f%%; no occlusion mask)",
+                    100 * all[1], 100 * all[0], 100 * all[2]);
   }
-  return text;
+  return c_format(
+      "bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
+      100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0],
+      100 * nonoccluded[2], 100 * all[2]);
 }
 
 BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
@@ -69,21 +65,16 @@ BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,
 }
 
 std::string SceneErrors::brief(const ErrorMeasure& measure) const {
-  char bound[80] = "";
+  std::string bound;
   if (measure.relative > 0.0) {
-    std::snprintf(bound, sizeof bound, " (> %g px and > %g%% here)", measure.absolute,
-                  100 * measure.relative);
+    bound = c_format(" (> %g px and > %g%% here)", measure.absolute, 100 * measure.relative);
   } else if (measure.follows_downscale) {
-    std::snprintf(bound, sizeof bound, " (> %g px here)", measure.absolute);
+    bound = c_format(" (> %g px here)", measure.absolute);
   }
-  char text[240];
-  if (nonoccluded_pixels == 0) {
-    std::snprintf(text, sizeof text, "%s%s: all %.2f%%", measure.name.c_str(), bound, 100 * all);
-  } else {
-    std::snprintf(text, sizeof text, "%s%s: nonocc %.2f%%, all %.2f%%", measure.name.c_str(), bound,
+  if (nonoccluded_pixels == 0)
+    return c_format("%s%s: all %.2f%%", measure.name.c_str(), bound.c_str(), 100 * all);
+  return c_format("%s%s: nonocc %.2f%%, all %.2f%%", measure.name.c_str(), bound.c_str(),
                   100 * nonoccluded, 100 * all);
-  }
-  return text;
 }
 
 std::string scene_error_line(std::span<const Label> labeling, const StereoScene& scene) {

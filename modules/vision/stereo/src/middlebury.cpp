@@ -4,13 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "c2f/core/input_file.hpp"
 #include "c2f/core/number_text.hpp"
 #include "c2f/core/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
@@ -93,11 +92,7 @@ std::vector<SceneRow> parse_scene_table(std::string_view text, const std::string
 }
 
 std::vector<SceneRow> read_scene_table(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot open scene table '" + path + "'");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::invalid_argument("reading scene table '" + path + "' failed");
-  return parse_scene_table(text, path);
+  return parse_scene_table(read_input_file(path, "scene table", kMaxTextInputBytes), path);
 }
 
 cv::Mat load_gt_disparity(const std::string& path, double divisor) {

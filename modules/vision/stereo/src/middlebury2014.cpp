@@ -1,12 +1,13 @@
 #include "c2f/vision/stereo/middlebury2014.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "c2f/core/input_file.hpp"
 #include "c2f/core/number_text.hpp"
+#include "c2f/core/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "stereo_pair_checks.hpp"
@@ -29,9 +30,9 @@ int parse_ndisp(std::string_view calibration, const std::string& source) {
     const std::optional<long long> parsed = parse_integer(value);
     const auto where = "calibration '" + source + "' line " + std::to_string(number) + ": ";
     if (ndisp != 0) throw std::invalid_argument(where + "ndisp is given twice");
-    if (!parsed || *parsed < 1 || *parsed > 65536) {
-      throw std::invalid_argument(where + "ndisp: expected an integer in [1, 65536], got '" +
-                                  value + "'");
+    if (!parsed || *parsed < 2 || *parsed > 65536) {
+      throw std::invalid_argument(where + "ndisp: expected an integer in [2, 65536] (one label "
+                                  "is no stereo), got '" + printable(value) + "'");
     }
     ndisp = static_cast<int>(*parsed);
   }
@@ -70,13 +71,8 @@ StereoScene load_middlebury2014_scene(const std::string& dir, Middlebury2014Size
   scene.left = load_colour_image(file("im0.png"));
   scene.right = load_colour_image(file("im1.png"));
   detail::require_view_size(scene.right, scene.left, file("im1.png"));
-  {
-    std::ifstream in(file("calib.txt"), std::ios::binary);
-    if (!in) throw std::invalid_argument("cannot open '" + file("calib.txt") + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    scene.disparity_range = parse_ndisp(text.str(), file("calib.txt"));
-  }
+  scene.disparity_range = parse_ndisp(
+      read_input_file(file("calib.txt"), "calibration", kMaxTextInputBytes), file("calib.txt"));
   scene.measure = middlebury2014_measure(size);
   scene.nonoccluded_source = "none";
   const bool has_gt = std::filesystem::exists(folder / "disp0GT.pfm");

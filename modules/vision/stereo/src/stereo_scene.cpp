@@ -68,6 +68,13 @@ StereoScene downscale(StereoScene scene, int factor) {
     throw std::invalid_argument("downscale: " + size_text(scene.left) + " views shrunk by " +
                                 std::to_string(factor) + " would be smaller than 2x2");
   }
+  if (scene.disparity_range > 0 && (scene.disparity_range + factor - 1) / factor < 2) {
+    throw std::invalid_argument(
+        "downscale: the scene's " + std::to_string(scene.disparity_range) +
+        " disparities shrunk by " + std::to_string(factor) +
+        " leave fewer than 2 labels; a factor below " + std::to_string(scene.disparity_range) +
+        " is needed");
+  }
   cv::resize(scene.left, scene.left, size, 0, 0, cv::INTER_AREA);
   cv::resize(scene.right, scene.right, size, 0, 0, cv::INTER_AREA);
   if (!scene.gt.empty()) {

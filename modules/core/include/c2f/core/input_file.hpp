@@ -1,15 +1,31 @@
 #pragma once
-// Whether a path names a file that can be read, asked without throwing: a name too long for the
-// system, a loop of links or a folder without permission gives a reason, not a
-// std::filesystem::filesystem_error from deep inside a loader.
+// The input layer: every file the library or a tool reads is checked here before it is read.
+// A path is examined without throwing (a name too long for the system, a loop of links or a
+// folder without permission gives a reason, not a std::filesystem::filesystem_error from deep
+// inside a loader), opened so that it cannot block (a FIFO without a writer, a device), and read
+// only when it is a regular file of bounded size (a link to /dev/zero is refused, not read until
+// memory runs out).
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace c2f {
 
 /// Empty when `path` names a regular file (after following links); otherwise why it cannot be
-/// read as one: "does not exist", "is a folder, not a file", "is not a regular file" or
-/// "cannot be examined (<system message>)".
+/// read as one: "does not exist", "is a folder, not a file", "is not a regular file (a FIFO)"
+/// (or a device, a socket) or "cannot be examined (<system message>)".
 std::string why_not_a_file(const std::string& path);
+
+/// The whole content of the file `path`, read as the input layer promises: the file is opened
+/// without blocking and read only when it is a regular file of at most `max_bytes` bytes.
+/// Throws std::invalid_argument "<what> '<path>' <why>" otherwise ("is not a regular file (a
+/// FIFO)", "is 3.2 GiB; a <what> of at most 64.0 MiB is expected"), and std::runtime_error
+/// naming it when reading fails.
+std::string read_input_file(const std::string& path, std::string_view what, std::size_t max_bytes);
+
+/// The size bound for small text inputs people write by hand or tools write as tables
+/// (calib.txt, scene tables, bench rows, traces): 64 MiB.
+inline constexpr std::size_t kMaxTextInputBytes = std::size_t{64} << 20;
 
 }  // namespace c2f

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "c2f/core/labeling.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -25,7 +26,13 @@ namespace c2f {
 /// arity, counts larger than the file can hold or than 8 GiB of unary costs, and any data after
 /// the last table. Reads the whole stream before parsing.
 PairwiseEnergy read_uai(std::istream& in, std::string_view source = "<stream>");
-/// read_uai on a file; throws std::runtime_error naming the path when it cannot be opened.
+/// read_uai on a file read through the input layer (c2f/core/input_file.hpp: a regular file,
+/// refused by name before it could block), within `budget`: the file may take half of it, and
+/// the memory its declarations imply (the unary costs of every variable and label, the largest
+/// table, the factors) must fit it and the machine (MemoryBudget::require) before the costs
+/// are allocated. Throws std::invalid_argument naming the path otherwise.
+PairwiseEnergy read_uai_file(const std::string& path, const MemoryBudget& budget);
+/// read_uai_file within the default budget (default_memory_budget).
 PairwiseEnergy read_uai_file(const std::string& path);
 
 /// Writes one unary factor per variable and one pairwise factor per edge (table
