@@ -113,8 +113,8 @@ def solve(
     """
     return _result(lambda: _solve(
         energy, list(schedule) if isinstance(schedule, tuple) else schedule, solver, maxflow,
-        order, int(seed), int(near_radius), bool(shift_moves), near_levels, float(time_limit),
-        int(max_steps), int(plateau), float(plateau_tolerance), start, callback, float(memory)))
+        order, seed, near_radius, bool(shift_moves), near_levels, time_limit, max_steps, plateau,
+        plateau_tolerance, start, callback, memory))
 
 
 def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
@@ -128,7 +128,7 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Sche
     preparation as well as the run. The same energy and run as `c2f-stereo LEFT RIGHT --labels L
     --schedule S`."""
     energy = stereo_energy(left, right, labels, smoothness, truncation, threads,
-                           float(options.get("memory", 0.0)))
+                           options.get("memory", 0.0))
     return solve(energy, schedule, **options)
 
 
@@ -168,7 +168,6 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     preparation must fit (ValueError naming `memory` otherwise); the Potts runs' recycled move
     graphs get what it leaves. result.labeling is (H, W).
     """
-    return _result(lambda: _segment(image, seeds, method, aux, start, schedule, float(lambda_),
-                                    float(theta), float(alpha), int(classes), kmeans,
-                                    int(gmm_seed), int(edge_seed), int(threads), float(time_limit),
-                                    int(max_steps), int(plateau), callback, float(memory)))
+    return _result(lambda: _segment(image, seeds, method, aux, start, schedule, lambda_, theta,
+                                    alpha, classes, kmeans, gmm_seed, edge_seed, threads,
+                                    time_limit, max_steps, plateau, callback, memory))

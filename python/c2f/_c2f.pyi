@@ -53,8 +53,10 @@ class Energy:
         down neighbours (and down-right, down-left when connectivity is 8), of weight `weight`
         or weights[y, x, k] (shape (H, W, connectivity / 2)). Labelings come back as (H, W)."""
     @staticmethod
-    def read_uai(path: str) -> Energy:
-        """A pairwise MARKOV model in the UAI format (energy = -ln potential)."""
+    def read_uai(path: str, memory: float = 0.0) -> Energy:
+        """A pairwise MARKOV model in the UAI format (energy = -ln potential). The path must be a
+        regular file; `memory` is the budget in GiB (0: the default) that the file and the costs
+        its declarations imply must fit before they are read (ValueError naming the file)."""
     def write_uai(self, path: str) -> None:
         """Writes the energy as a UAI MARKOV model (potentials exp(-cost), scaled per factor)."""
     def evaluate(self, labeling: npt.ArrayLike) -> float:

@@ -11,8 +11,10 @@ matplotlib is needed (Debian: python3-matplotlib); it is imported when a functio
 from __future__ import annotations
 
 import csv
+import io
 import math
 import os
+import stat
 import sys
 from typing import Any, Dict, Mapping, Optional, Union
 
@@ -26,10 +28,12 @@ def read_trace(path: Union[str, os.PathLike]) -> Trace:
     """A tool's trace.csv (time_s,level,step,energy,num_vars[,error]) as arrays named like
     Result.trace: time, level, step, energy, variables (and error). Raises ValueError naming the
     file, line, column and text when the file has no rows, lacks a column, or holds a value that
-    is not a finite number within +-1e300 (a time must also be at least 0)."""
+    is not a finite number within +-1e300 (a time must also be at least 0), and when the path is
+    not a regular file of at most 64 MiB (a FIFO is refused, never waited on). A UTF-8 byte-order
+    mark is allowed."""
     name = os.fspath(path)
-    with open(path, newline="") as file:
-        rows = list(csv.DictReader(file))
+    text = _read_text_file(name, "trace")
+    rows = list(csv.DictReader(io.StringIO(text, newline="")))
     if not rows:
         raise ValueError(f"trace '{name}' has no rows")
     names = {"time": "time_s", "level": "level", "step": "step", "energy": "energy",
@@ -45,6 +49,40 @@ def read_trace(path: Union[str, os.PathLike]) -> Trace:
             values[index] = _plottable(row[column], name, index + 2, column)
         trace[key] = values
     return trace
+
+
+_MAX_TEXT_BYTES = 64 << 20
+
+
+def _read_text_file(name: str, what: str) -> str:
+    """The text of the regular file `name`, as the library's input layer reads files: opened
+    without blocking, refused by name unless it is a regular file of at most 64 MiB, decoded as
+    UTF-8 (a byte-order mark dropped)."""
+    try:
+        fd = os.open(name, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    except FileNotFoundError:
+        raise ValueError(f"{what} '{name}' does not exist") from None
+    except IsADirectoryError:
+        raise ValueError(f"{what} '{name}' is a folder, not a file") from None
+    except OSError as error:
+        raise ValueError(f"{what} '{name}' cannot be opened ({error.strerror})") from None
+    with os.fdopen(fd, "rb") as file:
+        status = os.fstat(file.fileno())
+        if stat.S_ISDIR(status.st_mode):
+            raise ValueError(f"{what} '{name}' is a folder, not a file")
+        if not stat.S_ISREG(status.st_mode):
+            kind = "a FIFO" if stat.S_ISFIFO(status.st_mode) else "a device or socket"
+            raise ValueError(f"{what} '{name}' is not a regular file ({kind})")
+        if status.st_size > _MAX_TEXT_BYTES:
+            raise ValueError(f"{what} '{name}' is {status.st_size} bytes; a {what} of at most "
+                             f"{_MAX_TEXT_BYTES} bytes is expected")
+        data = file.read(_MAX_TEXT_BYTES + 1)
+    if len(data) > _MAX_TEXT_BYTES:
+        raise ValueError(f"{what} '{name}' grew past {_MAX_TEXT_BYTES} bytes while it was read")
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise ValueError(f"{what} '{name}' is not UTF-8 text (byte {error.start})") from None
 
 
 def _plottable(text: Optional[str], name: str, line: int, column: str) -> float:
@@ -76,8 +114,8 @@ def energy_against_time(traces: Mapping[str, TraceSource], *, gap_to: Optional[f
     """One line per named trace. Without `gap_to`: the energy normalised as the paper does,
     E / E_first of the first trace (so every run starts near 1). With `gap_to` (a reference
     energy, e.g. the best one any run reached): log10 of the gap E - gap_to, which shows the
-    late differences a linear axis hides (a gap of 0 is drawn at the lowest gap seen). Returns
-    the figure."""
+    late differences a linear axis hides (a gap of 0 is drawn at the lowest gap seen); a
+    `gap_to` above some trace's lowest energy is a ValueError. Returns the figure."""
     import matplotlib.pyplot as plt
 
     figure, ax = (ax.figure, ax) if ax is not None else plt.subplots(figsize=(7, 4.5))
@@ -85,6 +123,14 @@ def energy_against_time(traces: Mapping[str, TraceSource], *, gap_to: Optional[f
     first = next(iter(loaded.values()))["energy"][0]
     gaps = []
     if gap_to is not None:
+        if not math.isfinite(gap_to):
+            raise ValueError(f"gap_to: expected a finite energy, got {gap_to}")
+        for name, trace in loaded.items():
+            lowest = float(np.min(trace["energy"]))
+            if gap_to > lowest:
+                raise ValueError(f"gap_to: {gap_to:.17g} lies above the lowest energy of trace "
+                                 f"'{name}' ({lowest:.17g}); expected a reference at most every "
+                                 "energy plotted (the best one any run reached)")
         gaps = [t["energy"] - gap_to for t in loaded.values()]
         positive = np.concatenate([g[g > 0] for g in gaps] or [np.array([1.0])])
         floor = positive.min() if positive.size else 1.0
@@ -166,6 +212,11 @@ def main(argv: Optional[list] = None) -> int:
         if not sep or not name or not path:
             parser.error(f"expected NAME=TRACE.csv, got '{item}'")
         traces[name] = path
+    out_path = os.path.realpath(arguments.out)
+    for name, path in traces.items():
+        if os.path.realpath(path) == out_path:
+            parser.error(f"-o: '{arguments.out}' is also the trace {name}={path}: the plot would "
+                         "replace its own input")
     import matplotlib
 
     matplotlib.use("Agg")

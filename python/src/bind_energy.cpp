@@ -10,8 +10,10 @@
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/uai.hpp"
+#include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 
 namespace c2f::python {
 
@@ -19,10 +21,18 @@ namespace py = pybind11;
 
 namespace {
 
-PairwiseTerm truncated_quadratic(double truncation, int num_labels) {
-  if (!std::isfinite(truncation) || truncation <= 0)
-    throw py::value_error("truncation: expected a finite number > 0");
-  if (num_labels < 1) throw py::value_error("num_labels: expected an integer >= 1");
+PairwiseTerm truncated_linear(const py::handle& truncation_argument) {
+  const double truncation = real_argument(truncation_argument, "truncation");
+  if (truncation <= 0) throw py::value_error("truncation: expected a finite number > 0");
+  return PairwiseTerm::truncated_linear(truncation);
+}
+
+PairwiseTerm truncated_quadratic(const py::handle& truncation_argument,
+                                 const py::handle& labels_argument) {
+  const double truncation = real_argument(truncation_argument, "truncation");
+  if (truncation <= 0) throw py::value_error("truncation: expected a finite number > 0");
+  const int num_labels =  // a table of L^2 costs: 128 MiB at 4096 labels
+      static_cast<int>(integer_argument(labels_argument, "num_labels", 1, 4096));
   std::vector<double> costs(static_cast<std::size_t>(num_labels) * num_labels);
   for (int a = 0; a < num_labels; ++a)
     for (int b = 0; b < num_labels; ++b)
@@ -47,8 +57,8 @@ ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edg
   const int labels = static_cast<int>(unary.shape[1]);
   std::vector<Edge> edges;
   if (!edges_object.is_none()) {
-    const py::array raw = py::array::ensure(edges_object);
-    if (raw && raw.ndim() == 2 && raw.shape(0) == 0 && raw.shape(1) == 2) {
+    const py::array raw = array_argument(edges_object, "edges", "an integer array of shape (E, 2)");
+    if (raw.ndim() == 2 && raw.shape(0) == 0 && raw.shape(1) == 2) {
       // No edge: a unary-only energy.
     } else {
       const auto pairs = integer_array(edges_object, "edges", 2, "(E, 2)");
@@ -84,16 +94,19 @@ ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edg
   } else if (!weights_object.is_none()) {
     throw py::value_error("weights: given without edges");
   }
-  py::gil_scoped_release free;
+  const ReleasedGil free;
   return ModelEnergy{PairwiseEnergy(n, labels, std::move(unary.values), {term}, std::move(edges)),
                      {}};
 }
 
-ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term, double weight,
-                 const py::handle& weights_object, int connectivity) {
+ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term,
+                 const py::handle& weight_argument, const py::handle& weights_object,
+                 const py::handle& connectivity_argument) {
+  const auto connectivity =
+      static_cast<int>(integer_argument(connectivity_argument, "connectivity", 4, 8));
   if (connectivity != 4 && connectivity != 8)
     throw py::value_error("connectivity: expected 4 or 8, got " + std::to_string(connectivity));
-  if (!std::isfinite(weight)) throw py::value_error("weight: expected a finite number");
+  const double weight = real_argument(weight_argument, "weight");
   FloatValues unary = float_values(unary_object, "unary", 3, "(H, W, L)");
   const py::ssize_t height = unary.shape[0], width = unary.shape[1];
   const int labels = static_cast<int>(unary.shape[2]);
@@ -120,7 +133,7 @@ ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term, doubl
     const std::size_t k = right ? 0 : down ? 1 : v == u + shape.width + 1 ? 2 : 3;
     return given[u * per_pixel + k];
   };
-  py::gil_scoped_release free;
+  const ReleasedGil free;
   return ModelEnergy{
       make_grid_energy(shape, connectivity == 8 ? Connectivity::eight : Connectivity::four, labels,
                        std::move(unary.values), term, edge_weight),
@@ -135,9 +148,7 @@ void bind_energy(py::module_& module) {
                            "edge's weight.")
       .def_static("potts", &PairwiseTerm::potts, "cost(a, b) = 0 if a == b else 1.")
       .def_static(
-          "truncated_linear",
-          [](double truncation) { return PairwiseTerm::truncated_linear(truncation); },
-          py::arg("truncation"), "cost(a, b) = min(|a - b|, truncation); truncation > 0.")
+          "truncated_linear", &truncated_linear, py::arg("truncation"), "cost(a, b) = min(|a - b|, truncation); truncation > 0.")
       .def_static("truncated_quadratic", &truncated_quadratic, py::arg("truncation"),
                   py::arg("num_labels"),
                   "cost(a, b) = min((a - b)^2, truncation), as a num_labels x num_labels table.")
@@ -150,12 +161,11 @@ void bind_energy(py::module_& module) {
                              "The truncation of a truncated-linear term (0 otherwise).")
       .def(
           "cost",
-          [](const PairwiseTerm& term, int a, int b) {
+          [](const PairwiseTerm& term, const py::handle& a, const py::handle& b) {
             const int limit = term.table_labels();
-            if (a < 0 || b < 0 || (limit > 0 && (a >= limit || b >= limit)))
-              throw py::value_error("labels: expected labels in [0, " +
-                                    std::to_string(limit > 0 ? limit - 1 : INT32_MAX) + "]");
-            return term.cost(a, b);
+            const long long highest = limit > 0 ? limit - 1 : INT32_MAX;
+            return term.cost(static_cast<Label>(integer_argument(a, "a", 0, highest)),
+                             static_cast<Label>(integer_argument(b, "b", 0, highest)));
           },
           py::arg("a"), py::arg("b"), "The cost of labels a and b.")
       .def("__repr__", [](const PairwiseTerm& term) {
@@ -183,14 +193,20 @@ void bind_energy(py::module_& module) {
                   "(weights of shape (H, W, connectivity / 2)). Labelings come back as (H, W).")
       .def_static(
           "read_uai",
-          [](const std::string& path) {
-            return ModelEnergy{read_uai_file(path), {}};
+          [](const std::string& path, const py::handle& memory) {
+            const MemoryBudget budget = memory_budget_from(memory);
+            const ReleasedGil free;  // a slow disk or a large model stalls no other thread
+            return ModelEnergy{read_uai_file(path, budget), {}};
           },
-          py::arg("path"), "A pairwise MARKOV model in the UAI format (energy = -ln potential).")
+          py::arg("path"), py::arg("memory") = 0.0,
+          "A pairwise MARKOV model in the UAI format (energy = -ln potential). The path must be "
+          "a regular file; `memory` is the budget in GiB (0: the default) that the file and the "
+          "costs its declarations imply must fit before they are read (ValueError naming the "
+          "file otherwise).")
       .def(
           "write_uai",
           [](const ModelEnergy& model, const std::string& path) {
-            py::gil_scoped_release free;
+            const ReleasedGil free;
             write_uai_file(model.energy, path);
           },
           py::arg("path"), "Writes the energy as a UAI MARKOV model (potentials exp(-cost)).")

@@ -5,12 +5,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <string>
 
 #include "c2f/lift/reduce.hpp"
 #include "c2f/lift/transfer.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 #include "schedules.hpp"
 
 namespace c2f::python {
@@ -34,7 +36,7 @@ py::array_t<std::int32_t> partition(const ModelEnergy& model, const std::string&
   ScheduleProvider provider = schedule_provider(schedule, model);
   std::optional<DensePartition> result;
   {
-    py::gil_scoped_release free;
+    const ReleasedGil free;
     result = provider.next(model.energy);
   }
   return group_array(*result, model);
@@ -42,14 +44,16 @@ py::array_t<std::int32_t> partition(const ModelEnergy& model, const std::string&
 
 ModelEnergy reduced(const ModelEnergy& model, const py::handle& groups) {
   const DensePartition p = partition_from(groups, "partition", model.energy.num_variables());
-  py::gil_scoped_release free;
+  const ReleasedGil free;
   return ModelEnergy{reduce(model.energy, p), {}};
 }
 
 py::array_t<std::int32_t> expanded(const py::handle& labeling, const py::handle& groups,
-                                   int num_labels) {
-  const py::array shape_source = py::array::ensure(groups);
-  if (!shape_source) throw py::type_error("partition: expected an integer array of group ids");
+                                   const py::handle& labels_argument) {
+  const int num_labels =
+      static_cast<int>(integer_argument(labels_argument, "num_labels", 1, INT32_MAX));
+  const py::array shape_source =
+      array_argument(groups, "partition", "an integer array of group ids");
   const DensePartition p =
       partition_from(groups, "partition", static_cast<std::size_t>(shape_source.size()));
   const Labeling on_groups = labeling_from(labeling, "labeling", p.num_groups(), num_labels, {});
@@ -59,9 +63,11 @@ py::array_t<std::int32_t> expanded(const py::handle& labeling, const py::handle&
 }
 
 py::array_t<std::int32_t> transferred(const py::handle& labeling, const py::handle& from,
-                                      const py::handle& to, int num_labels) {
-  const py::array from_array = py::array::ensure(from);
-  if (!from_array) throw py::type_error("from_partition: expected an integer array of group ids");
+                                      const py::handle& to, const py::handle& labels_argument) {
+  const int num_labels =
+      static_cast<int>(integer_argument(labels_argument, "num_labels", 1, INT32_MAX));
+  const py::array from_array =
+      array_argument(from, "from_partition", "an integer array of group ids");
   const std::size_t n = static_cast<std::size_t>(from_array.size());
   const DensePartition coarse = partition_from(from, "from_partition", n);
   const DensePartition fine = partition_from(to, "to_partition", n);

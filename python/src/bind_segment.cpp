@@ -4,6 +4,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <climits>
+#include <cstdint>
 #include <string>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
@@ -19,6 +21,7 @@
 #include "image_arrays.hpp"
 #include "memory_argument.hpp"
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 #include "step_record.hpp"
 
 namespace c2f::python {
@@ -34,7 +37,8 @@ py::array_t<std::int32_t> label_array(const std::vector<int>& labels, const cv::
 }
 
 py::dict read_segmentation(const std::string& image, const std::string& seeds,
-                           const std::string& gt, const std::string& convention, int factor) {
+                           const std::string& gt, const std::string& convention,
+                           const py::handle& downscale) {
   vision::SegmentationFiles files;
   files.image = image;
   files.seeds = seeds;
@@ -44,8 +48,12 @@ py::dict read_segmentation(const std::string& image, const std::string& seeds,
   } catch (const std::invalid_argument& error) {
     throw py::value_error(std::string("convention: ") + error.what());
   }
-  const vision::SegmentationScene scene =
-      vision::downscale(vision::load_segmentation_scene(files), factor);
+  const int factor = static_cast<int>(integer_argument(downscale, "downscale", 1, 1024));
+  vision::SegmentationScene scene;
+  {
+    const ReleasedGil free;  // file reading stalls no other thread
+    scene = vision::downscale(vision::load_segmentation_scene(files), factor);
+  }
   py::dict out;
   out["image"] = rgb_array(scene.image);
   out["seeds"] = label_array(scene.seeds, scene.image);
@@ -94,9 +102,25 @@ vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::h
 
 py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& method,
                  const std::string& aux, const std::string& start, const std::string& schedule_text,
-                 double lambda, double theta, double alpha, int classes, const std::string& kmeans,
-                 std::uint64_t gmm_seed, std::uint64_t edge_seed, int threads, double time_limit,
-                 long max_steps, int plateau, const py::object& callback, double memory) {
+                 const py::handle& lambda_argument, const py::handle& theta_argument,
+                 const py::handle& alpha_argument, const py::handle& classes_argument,
+                 const std::string& kmeans, const py::handle& gmm_seed_argument,
+                 const py::handle& edge_seed_argument, const py::handle& threads_argument,
+                 const py::handle& time_limit_argument, const py::handle& max_steps_argument,
+                 const py::handle& plateau_argument, const py::object& callback,
+                 const py::handle& memory) {
+  const double lambda = real_argument(lambda_argument, "lambda_");
+  const double theta = real_argument(theta_argument, "theta");
+  const double alpha = real_argument(alpha_argument, "alpha");
+  const int classes = static_cast<int>(integer_argument(classes_argument, "classes", 1, 256));
+  const auto gmm_seed =
+      static_cast<std::uint64_t>(integer_argument(gmm_seed_argument, "gmm_seed", 0, INT64_MAX));
+  const auto edge_seed =
+      static_cast<std::uint64_t>(integer_argument(edge_seed_argument, "edge_seed", 0, INT64_MAX));
+  const int threads = static_cast<int>(integer_argument(threads_argument, "threads", 0, 1024));
+  const double time_limit = real_argument(time_limit_argument, "time_limit");
+  const long max_steps = integer_argument(max_steps_argument, "max_steps", 0, LONG_MAX);
+  const int plateau = static_cast<int>(integer_argument(plateau_argument, "plateau", -1, INT32_MAX));
   const MemoryBudget budget = memory_budget_from(memory);
   if (method != "coop" && method != "potts")
     throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");
@@ -115,11 +139,8 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
   } catch (const std::invalid_argument& error) {
     throw py::value_error(std::string("start: ") + error.what());
   }
-  if (classes < 1 || classes > 256)
-    throw py::value_error("classes: expected an integer in [1, 256]");
   if (kmeans != "plusplus" && kmeans != "reference")
     throw py::value_error("kmeans: expected 'plusplus' or 'reference', got '" + kmeans + "'");
-  if (threads < 0) throw py::value_error("threads: expected an integer >= 0 (0: all cores)");
   const auto clustering = [&](std::uint64_t seed) {
     vision::KMeansOptions options =
         kmeans == "plusplus" ? vision::plus_plus_kmeans(seed) : vision::reference_kmeans(seed);
@@ -127,10 +148,8 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     return options;
   };
   const vision::DataPreparation preparation{classes, clustering(gmm_seed), clustering(edge_seed)};
-  if (!std::isfinite(time_limit) || time_limit < 0)
+  if (time_limit < 0)
     throw py::value_error("time_limit: expected a finite number >= 0 (0: no limit)");
-  if (max_steps < 0) throw py::value_error("max_steps: expected an integer >= 0 (0: no limit)");
-  if (plateau < -1) throw py::value_error("plateau: expected -1 (a sweep), 0 (default) or a count");
 
   const int num_labels = scene.num_labels();
   Schedule schedule;
@@ -153,7 +172,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
   Summary summary;
   std::string report;
   {
-    py::gil_scoped_release free;
+    const ReleasedGil free;
     const vision::SegmentationProblem problem =
         vision::segmentation_problem(scene, parameters, preparation);
     ScheduleProvider levels(schedule, scene.shape(), vision::slic_source(scene.image));

@@ -5,6 +5,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <climits>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 #include "schedules.hpp"
 #include "step_record.hpp"
 
@@ -50,10 +53,11 @@ auto parsed(const std::string& argument, const std::string& text, Parse parse) {
 
 py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
                const std::string& solver, const std::string& maxflow, const std::string& order,
-               std::uint64_t seed, int near_radius, bool shift_moves,
-               const std::string& near_levels, double time_limit, long max_steps, int plateau,
-               double plateau_tolerance, const py::object& start, const py::object& callback,
-               double memory) {
+               const py::handle& seed, const py::handle& near_radius, bool shift_moves,
+               const std::string& near_levels, const py::handle& time_limit,
+               const py::handle& max_steps, const py::handle& plateau,
+               const py::handle& plateau_tolerance, const py::object& start,
+               const py::object& callback, const py::handle& memory) {
   const MemoryBudget budget = memory_budget_from(memory);
   SolverChoice choice;
   choice.kind =
@@ -64,9 +68,8 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
       parsed("order", order, [](const std::string& t) { return visit_order_from_string(t); });
   choice.near_levels = parsed("near_levels", near_levels,
                               [](const std::string& t) { return near_levels_from_string(t); });
-  choice.seed = seed;
-  if (near_radius < 0) throw py::value_error("near_radius: expected an integer >= 0");
-  choice.near_radius = near_radius;
+  choice.seed = static_cast<std::uint64_t>(integer_argument(seed, "seed", 0, INT64_MAX));
+  choice.near_radius = static_cast<int>(integer_argument(near_radius, "near_radius", 0, INT32_MAX));
   choice.shift_moves = shift_moves;
   if (const std::string problem = choice.validate(); !problem.empty())
     throw py::value_error("solver: " + problem);
@@ -74,16 +77,14 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
     throw py::value_error("maxflow: '" + maxflow + "' is not in this build");
 
   Options options;
-  if (!std::isfinite(time_limit) || time_limit < 0)
+  options.time_limit_seconds = real_argument(time_limit, "time_limit");
+  if (options.time_limit_seconds < 0)
     throw py::value_error("time_limit: expected a finite number >= 0 (0: no limit)");
-  if (max_steps < 0) throw py::value_error("max_steps: expected an integer >= 0 (0: no limit)");
-  if (plateau < 1) throw py::value_error("plateau: expected an integer >= 1");
-  if (!std::isfinite(plateau_tolerance) || plateau_tolerance < 0)
+  options.max_total_steps = integer_argument(max_steps, "max_steps", 0, LONG_MAX);
+  options.plateau_steps = {static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
+  options.plateau_tolerance = real_argument(plateau_tolerance, "plateau_tolerance");
+  if (options.plateau_tolerance < 0)
     throw py::value_error("plateau_tolerance: expected a finite number >= 0");
-  options.time_limit_seconds = time_limit;
-  options.max_total_steps = max_steps;
-  options.plateau_steps = {plateau};
-  options.plateau_tolerance = plateau_tolerance;
   if (py::isinstance<py::str>(start)) {
     options.initial_labeling = parsed("start", start.cast<std::string>(), [](const std::string& t) {
       return initial_labeling_from_string(t);
@@ -99,7 +100,7 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   auto run = [&](auto& levels) {
     const SolverChoice fitted = fit_to_memory(choice, model.energy, budget);
     options.coarse_level_fits = coarse_level_admission(fitted, problem_size(model.energy));
-    py::gil_scoped_release free;
+    const ReleasedGil free;
     return with_chosen_solvers(fitted, [&](auto&& solvers) {
       return coarse_to_fine(model.energy, levels, solvers, options, std::ref(record));
     });

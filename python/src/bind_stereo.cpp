@@ -16,6 +16,7 @@
 #include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 
 namespace c2f::python {
 
@@ -34,8 +35,8 @@ py::array_t<float> float_image(const cv::Mat& image) {
 
 /// An (H, W) float array (NaN = unknown) as CV_32F. Throws naming `name`.
 cv::Mat float_mat(const py::handle& object, const std::string& name) {
-  const py::array array = py::array::ensure(object);
-  const char kind = array ? array.dtype().kind() : '?';
+  const py::array array = array_argument(object, name, "an (H, W) numeric numpy array");
+  const char kind = array.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b')
     throw py::type_error(name + ": expected an (H, W) numeric numpy array");
   if (array.ndim() != 2)
@@ -47,14 +48,20 @@ cv::Mat float_mat(const py::handle& object, const std::string& name) {
 }
 
 py::dict read_stereo_pair(const std::string& left, const std::string& right, const std::string& gt,
-                          double gt_divisor, const std::string& mask, int downscale_factor) {
+                          const py::handle& gt_divisor, const std::string& mask,
+                          const py::handle& downscale) {
   vision::StereoPairFiles files;
   files.left = left;
   files.right = right;
   files.gt = gt;
-  files.gt_divisor = gt_divisor;
+  files.gt_divisor = real_argument(gt_divisor, "gt_divisor");
   files.mask = mask;
-  vision::StereoScene scene = vision::downscale(vision::load_stereo_pair(files), downscale_factor);
+  const int factor = static_cast<int>(integer_argument(downscale, "downscale", 1, 1024));
+  vision::StereoScene scene;
+  {
+    const ReleasedGil free;  // file reading stalls no other thread
+    scene = vision::downscale(vision::load_stereo_pair(files), factor);
+  }
   py::dict out;
   out["left"] = rgb_array(scene.left);
   out["right"] = rgb_array(scene.right);
@@ -72,19 +79,21 @@ py::dict read_stereo_pair(const std::string& left, const std::string& right, con
   return out;
 }
 
-ModelEnergy stereo_energy(const py::handle& left, const py::handle& right, int labels,
-                          const std::string& smoothness, double truncation, int threads,
-                          double memory) {
+ModelEnergy stereo_energy(const py::handle& left, const py::handle& right,
+                          const py::handle& labels_argument, const std::string& smoothness,
+                          const py::handle& truncation, const py::handle& threads_argument,
+                          const py::handle& memory) {
   const MemoryBudget budget = memory_budget_from(memory);
   vision::TsgoOptions options;
-  options.labels = labels;
-  options.threads = threads;
+  options.labels = static_cast<int>(integer_argument(labels_argument, "labels", 2, 256));
+  options.threads = static_cast<int>(integer_argument(threads_argument, "threads", 0, 1024));
+  const int labels = options.labels, threads = options.threads;
   try {
     options.smoothness = vision::stereo_smoothness_from_string(smoothness);
   } catch (const std::invalid_argument& error) {
     throw py::value_error(std::string("smoothness: ") + error.what());
   }
-  options.truncation = truncation;
+  options.truncation = real_argument(truncation, "truncation");
   if (const std::string problem = options.validate(); !problem.empty())
     throw py::value_error(problem);
   const cv::Mat left_bgr = bgr_image(left, "left");
@@ -98,7 +107,7 @@ ModelEnergy stereo_energy(const py::handle& left, const py::handle& right, int l
           " pixels and " + std::to_string(labels) + " labels",
       vision::tsgo_memory_estimate(static_cast<std::size_t>(left_bgr.cols),
                                    static_cast<std::size_t>(left_bgr.rows), labels, threads));
-  py::gil_scoped_release free;
+  const ReleasedGil free;
   vision::TsgoProblem problem = vision::tsgo_problem(left_bgr, right_bgr, options);
   return ModelEnergy{
       std::move(problem.energy), {left_bgr.rows, left_bgr.cols}, problem.guide, true};
@@ -137,7 +146,14 @@ py::dict bad_pixel_rates(const py::handle& disparity, const py::handle& gt,
 void bind_stereo(py::module_& module) {
   module.def(
       "read_image",
-      [](const std::string& path) { return rgb_array(vision::load_colour_image(path)); },
+      [](const std::string& path) {
+        cv::Mat image;
+        {
+          const ReleasedGil free;  // file reading stalls no other thread
+          image = vision::load_colour_image(path);
+        }
+        return rgb_array(image);
+      },
       py::arg("path"), "An image file as an (H, W, 3) uint8 RGB array (grey is made colour).");
   module.def("read_stereo_pair", &read_stereo_pair, py::arg("left"), py::arg("right"),
              py::arg("gt") = "", py::arg("gt_divisor") = 1.0, py::arg("mask") = "",

@@ -7,14 +7,21 @@
 
 #include "c2f/adapters/run_memory.hpp"
 #include "c2f/core/number_text.hpp"
+#include "numpy_input.hpp"
 
 namespace c2f::python {
 
 namespace py = pybind11;
 
-MemoryBudget memory_budget_from(double gib) {
-  if (!std::isfinite(gib) || gib < 0)
-    throw py::value_error("memory: expected a finite number of GiB >= 0 (0: the default)");
+MemoryBudget memory_budget_from(const py::handle& argument) {
+  const char* const expected = "memory: expected a finite number of GiB >= 0 (0: the default)";
+  double gib = 0;
+  try {
+    gib = real_argument(argument, "memory");
+  } catch (const py::value_error&) {
+    throw py::value_error(expected);
+  }
+  if (gib < 0) throw py::value_error(expected);
   if (gib == 0) return default_memory_budget();
   return memory_budget_of_gib(gib, "memory=" + format_real(gib));
 }

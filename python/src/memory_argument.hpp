@@ -3,6 +3,8 @@
 // in GiB, as the tools' --memory (c2f/core/memory_budget.hpp, c2f/adapters/run_memory.hpp), with
 // every refusal a ValueError naming `memory`.
 
+#include <pybind11/pybind11.h>
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -14,9 +16,10 @@
 
 namespace c2f::python {
 
-/// `gib` GiB, or the machine's default budget (default_memory_budget) for 0. ValueError naming
-/// `memory` for a negative or non-finite value.
-MemoryBudget memory_budget_from(double gib);
+/// `gib` GiB (a real number), or the machine's default budget (default_memory_budget) for 0.
+/// ValueError naming `memory` for a negative or non-finite value, TypeError for what is no
+/// number.
+MemoryBudget memory_budget_from(const pybind11::handle& gib);
 
 /// MemoryBudget::require (the budget, then what the machine has available), as a ValueError
 /// "memory: <what> needs N, more than the run's memory budget of M (...)".

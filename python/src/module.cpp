@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include "model_energy.hpp"
+#include "released_gil.hpp"
 
 namespace c2f::python {
 void bind_solve(pybind11::module_& module);
@@ -18,4 +19,5 @@ PYBIND11_MODULE(_c2f, module) {
   c2f::python::bind_stereo(module);
   c2f::python::bind_segment(module);
   c2f::python::bind_lift(module);
+  c2f::python::register_exit_hook();
 }

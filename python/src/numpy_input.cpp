@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "released_gil.hpp"
+
 namespace c2f::python {
 
 std::string shape_text(const std::vector<py::ssize_t>& shape) {
@@ -14,16 +16,85 @@ std::string shape_text(const py::array& array) {
   return shape_text(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()));
 }
 
+py::array array_argument(const py::handle& object, const std::string& name,
+                         const std::string& what) {
+  py::array array;
+  if (py::isinstance<py::array>(object)) {
+    array = py::reinterpret_borrow<py::array>(object);
+  } else if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
+    try {
+      array = py::module_::import("numpy").attr("asarray")(object);
+    } catch (py::error_already_set& error) {
+      throw py::type_error(name + ": expected " + what + "; numpy cannot make one array of this " +
+                           std::string(py::str(py::type::of(object).attr("__name__"))) +
+                           " (a nested list must be rectangular): " + error.what());
+    }
+  } else {
+    throw py::type_error(name + ": expected " + what + ", got " +
+                         std::string(py::str(py::type::of(object).attr("__name__"))));
+  }
+  if (array.dtype().kind() == 'O') {
+    throw py::type_error(name + ": expected " + what +
+                         ", got an object array (a ragged nested list, or entries that are not "
+                         "numbers)");
+  }
+  return array;
+}
+
 namespace {
 
-py::array as_numpy(const py::handle& object, const std::string& name, const std::string& what) {
-  if (py::isinstance<py::array>(object)) return py::reinterpret_borrow<py::array>(object);
-  if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
-    return py::array::ensure(object);
-  }
-  throw py::type_error(name + ": expected " + what + ", got " +
-                       std::string(py::str(py::type::of(object).attr("__name__"))));
+std::string type_name(const py::handle& object) {
+  return py::str(py::type::of(object).attr("__name__"));
 }
+
+/// Whether `object` is an integer Python or numpy accepts as an index (int, numpy integers),
+/// not a bool.
+bool is_integer(const py::handle& object) {
+  if (py::isinstance<py::bool_>(object)) return false;
+  const py::object numpy_bool = py::module_::import("numpy").attr("bool_");
+  if (py::isinstance(object, numpy_bool)) return false;
+  return PyIndex_Check(object.ptr()) != 0;
+}
+
+}  // namespace
+
+long long integer_argument(const py::handle& object, const std::string& name, long long lowest,
+                           long long highest) {
+  const std::string range =
+      "[" + std::to_string(lowest) + ", " + std::to_string(highest) + "]";
+  if (!is_integer(object)) {
+    throw py::type_error(name + ": expected an integer in " + range + ", got " +
+                         type_name(object));
+  }
+  const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(object.ptr()));
+  if (!value) throw py::error_already_set();
+  int overflow = 0;
+  const long long result = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (overflow != 0 || result < lowest || result > highest) {
+    throw py::value_error(name + ": expected an integer in " + range + ", got " +
+                          std::string(py::str(py::handle(value))));
+  }
+  return result;
+}
+
+double real_argument(const py::handle& object, const std::string& name) {
+  const py::object numpy_number = py::module_::import("numpy").attr("number");
+  const bool number = !py::isinstance<py::bool_>(object) &&
+                      (PyFloat_Check(object.ptr()) || PyLong_Check(object.ptr()) ||
+                       (py::isinstance(object, numpy_number) &&
+                        !py::isinstance(object, py::module_::import("numpy").attr("complexfloating"))));
+  if (!number) throw py::type_error(name + ": expected a real number, got " + type_name(object));
+  const double value = PyFloat_AsDouble(object.ptr());
+  if (value == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw py::value_error(name + ": expected a real number, got " + std::string(py::str(object)));
+  }
+  if (!std::isfinite(value))
+    throw py::value_error(name + ": expected a finite number, got " + std::string(py::str(object)));
+  return value;
+}
+
+namespace {
 
 void require_shape(const py::array& array, const std::string& name, int ndim,
                    const std::string& shape) {
@@ -58,7 +129,7 @@ std::size_t convert_finite(const T* data, std::size_t count, double* out) {
 
 FloatValues float_values(const py::handle& object, const std::string& name, int ndim,
                          const std::string& shape) {
-  const py::array array = as_numpy(object, name, "a float32 or float64 numpy array");
+  const py::array array = array_argument(object, name, "a float32 or float64 numpy array");
   const char kind = array.dtype().kind();
   if (kind != 'f' || (array.itemsize() != 4 && array.itemsize() != 8)) {
     throw py::type_error(name + ": expected a float32 or float64 array, got dtype " +
@@ -73,12 +144,12 @@ FloatValues float_values(const py::handle& object, const std::string& name, int 
   if (array.itemsize() == 4) {
     const auto source =
         py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
-    py::gil_scoped_release free;
+    const ReleasedGil free;
     bad = convert_finite(source.data(), count, result.values.data());
   } else {
     const auto source =
         py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-    py::gil_scoped_release free;
+    const ReleasedGil free;
     bad = convert_finite(source.data(), count, result.values.data());
   }
   if (bad != count) {
@@ -92,7 +163,7 @@ FloatValues float_values(const py::handle& object, const std::string& name, int 
 py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& object,
                                                             const std::string& name, int ndim,
                                                             const std::string& shape) {
-  const py::array array = as_numpy(object, name, "an integer numpy array");
+  const py::array array = array_argument(object, name, "an integer numpy array");
   const char kind = array.dtype().kind();
   if (kind != 'i' && kind != 'u') {
     throw py::type_error(name + ": expected an integer array, got dtype " +
@@ -112,7 +183,7 @@ py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& ob
 
 Labeling labeling_from(const py::handle& object, const std::string& name, std::size_t num_variables,
                        int num_labels, const std::vector<py::ssize_t>& shape) {
-  py::array array = as_numpy(object, name, "an integer numpy array");
+  py::array array = array_argument(object, name, "an integer numpy array");
   std::string expected = "(" + std::to_string(num_variables) + ",)";
   bool fits = array.ndim() == 1 && static_cast<std::size_t>(array.shape(0)) == num_variables;
   if (!shape.empty() && shape.size() > 1) {

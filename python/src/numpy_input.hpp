@@ -16,6 +16,22 @@ namespace c2f::python {
 
 namespace py = pybind11;
 
+/// `object` as a numpy array: a numpy array as it is, a list or tuple (nested lists included) as
+/// numpy makes it. Throws TypeError naming `name` and `what` was expected for anything else, for
+/// a sequence numpy cannot make an array of (a ragged nested list), and for an object array
+/// (entries that are not numbers). Every array argument of the package passes through here.
+py::array array_argument(const py::handle& object, const std::string& name, const std::string& what);
+
+/// `object` as an integer in [lowest, highest]: a Python int or a numpy integer (a bool is
+/// refused). Throws TypeError naming `name` for anything else, ValueError naming `name` and the
+/// range when it lies outside it (however large).
+long long integer_argument(const py::handle& object, const std::string& name, long long lowest,
+                           long long highest);
+
+/// `object` as a finite real number: a Python int or float, or a numpy number. Throws TypeError
+/// naming `name` for anything else (a str, a bool, None), ValueError for NaN or infinity.
+double real_argument(const py::handle& object, const std::string& name);
+
 /// The entries of a float array and its shape.
 struct FloatValues {
   std::vector<double> values;  ///< row-major

@@ -63,8 +63,7 @@ ScheduleProvider schedule_provider(const Schedule& schedule, const ModelEnergy& 
 
 DensePartition partition_from(const py::handle& object, const std::string& name,
                               std::size_t num_variables) {
-  py::array array = py::array::ensure(object);
-  if (!array) throw py::type_error(name + ": expected an integer array of group ids");
+  py::array array = array_argument(object, name, "an integer array of group ids");
   const auto ids = integer_array(array.reshape({array.size()}), name, 1, "(N,)");
   if (static_cast<std::size_t>(ids.shape(0)) != num_variables) {
     throw py::value_error(name + ": a partition of the energy's " + std::to_string(num_variables) +

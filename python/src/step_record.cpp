@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 
 #include "numpy_input.hpp"
+#include "released_gil.hpp"
 
 namespace c2f::python {
 
@@ -24,6 +25,7 @@ ObserverDecision StepRecord::operator()(const StepEvent& event) {
   level_.push_back(event.level);
   step_.push_back(event.step);
   variables_.push_back(event.num_variables);
+  if (interpreter_exiting()) return ObserverDecision::stop;
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) return stop_for_python_error();
   if (callback_.is_none()) return ObserverDecision::continue_run;
@@ -37,9 +39,19 @@ ObserverDecision StepRecord::operator()(const StepEvent& event) {
     info["at_original"] = event.at_original;
     info["labeling"] = labeling_array(event.ground_labeling(), shape_);
     const py::object answer = callback_(info);
-    if (!answer.is_none() && !answer.cast<bool>()) return ObserverDecision::stop;
+    if (answer.is_none()) return ObserverDecision::continue_run;
+    const bool is_bool = py::isinstance<py::bool_>(answer) ||
+                         py::isinstance(answer, py::module_::import("numpy").attr("bool_"));
+    if (!is_bool) {
+      throw py::type_error("callback: expected True, False or None as its answer, got " +
+                           std::string(py::str(py::type::of(answer).attr("__name__"))));
+    }
+    if (!answer.cast<bool>()) return ObserverDecision::stop;
   } catch (py::error_already_set& error) {
     error.restore();
+    return stop_for_python_error();
+  } catch (py::builtin_exception& error) {
+    error.set_error();
     return stop_for_python_error();
   }
   return ObserverDecision::continue_run;

@@ -19,7 +19,9 @@ class StepRecord {
  public:
   /// `callback` (None: none) is called after every step with a dict (time, level, step,
   /// energy, variables, at_original, labeling: the original variables' labeling this step
-  /// stands for, in `shape`, O(N) per step); a False answer stops the run. `shape` is the
+  /// stands for, in `shape`, O(N) per step); a False answer stops the run, and an answer other
+  /// than True, False or None stops it with a TypeError naming the callback. The run also stops
+  /// at its next step once the interpreter begins to exit (released_gil.hpp). `shape` is the
   /// labeling's array shape (empty: flat).
   StepRecord(pybind11::object callback, std::vector<pybind11::ssize_t> shape);
   ~StepRecord();
