@@ -154,6 +154,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << " threads (not on the run clock, same for every schedule)\n"
          << examples::memory_line(command.memory, command.solver) << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
+  if (!scene.gt_convention.empty()) report << "GT read as " << scene.gt_convention << "\n";
   if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {
     report << rates->brief() << "\nnon-occluded pixels from: " << scene.nonoccluded_source

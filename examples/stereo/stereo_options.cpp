@@ -8,6 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "c2f/core/number_text.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 
 namespace c2f::examples {
@@ -49,9 +50,12 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .path("export-uai", &command.export_uai,
             "also write the TSGO energy it solves as a UAI MARKOV model (for c2f-solve, toulbar2; "
             "L^2 potentials per edge: meant for small or downscaled pairs)")
-      .file("gt", &command.pair.gt, "ground-truth disparity PNG (0 = unknown)")
-      .real("gt-divisor", &command.pair.gt_divisor, {0.0, 65536.0, true},
-            "GT PNG value per disparity pixel")
+      .file("gt", &command.pair.gt,
+            "ground-truth disparities: a PFM (Middlebury 2014, scored by bad 2.0), a 16-bit PNG "
+            "(KITTI 2015: disparity x 256, scored by D1) or an 8-bit PNG (0 = unknown)")
+      .real("gt-divisor", &command.pair.gt_divisor, {0.0, 65536.0},
+            "GT PNG value per disparity pixel (default: by the file, 256 for a 16-bit PNG, 1 "
+            "for an 8-bit one; a PNG given a divisor is scored by bad 1)")
       .file("gt-right", &command.pair.gt_right,
             "right-view GT PNG, for a left-right occlusion mask")
       .file("mask", &command.pair.mask, "non-occluded mask PNG (255 = evaluate)")
@@ -81,6 +85,10 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
         "--scene loads the scene's own GT and masks; --gt, --gt-right and --mask go with LEFT "
         "RIGHT");
   }
+  if (command.pair.gt_divisor > 0.0 && command.pair.gt_divisor < 1.0 / 1024) {
+    throw std::invalid_argument("--gt-divisor: expected 0 (by the file) or a number in [1/1024, "
+                                "65536], got " + format_real(command.pair.gt_divisor));
+  }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   command.solver = solver.choice();
@@ -90,9 +98,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   command.schedule =
       with_flag("--schedule", [&] { return vision::parse_stereo_schedule(schedule); });
   if (command.labels == 1) throw std::invalid_argument("--labels: expected 0 or 2-256, got 1");
-  // A pair of files has no range of its own: its label count is known before anything is read.
-  if (command.labels != 0 || command.scene.empty())
-    set_labels(command, command.labels != 0 ? command.labels : kDefaultLabels);
+  // Without --labels the count comes from the scene (its calib.txt, or the default).
+  if (command.labels != 0) set_labels(command, command.labels);
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
@@ -107,9 +114,11 @@ void set_labels(StereoCommand& command, int labels) {
 }
 
 void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene) {
-  if (command.labels != 0 || command.scene.empty()) return;
+  if (command.labels != 0) return;
   if (scene.disparity_range > 256) {
-    throw std::invalid_argument("--scene " + command.scene + ": its disparity range is " +
+    throw std::invalid_argument((command.scene.empty() ? "LEFT's calib.txt"
+                                                       : "--scene " + command.scene) +
+                                ": its disparity range is " +
                                 std::to_string(scene.disparity_range) +
                                 " labels, more than 256: give --labels (or --downscale)");
   }

@@ -42,9 +42,9 @@ inline constexpr int kDefaultLabels = 85;
 /// --schedule when a level needs more labels.
 void set_labels(StereoCommand& command, int labels);
 
-/// Without --labels: the loaded scene's disparity range (Middlebury 2014 ndisp, KITTI's 128)
-/// when it has one, else kDefaultLabels; then set_labels. Throws std::invalid_argument naming
-/// the scene when its range is above 256.
+/// Without --labels: the loaded scene's disparity range (Middlebury 2014 ndisp, also of a pair
+/// with a calib.txt beside LEFT; KITTI's 128) when it has one, else kDefaultLabels; then
+/// set_labels. Throws std::invalid_argument naming the scene when its range is above 256.
 void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene);
 
 /// The driver options the command asks for: the plateau rules (on the original problem one

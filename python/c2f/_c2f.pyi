@@ -103,7 +103,7 @@ def _solve(
 def read_image(path: str) -> npt.NDArray[np.uint8]:
     """An image file as an (H, W, 3) uint8 RGB array (grey is made colour)."""
 
-def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 1.0,
+def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 0.0,
                      mask: str = "", downscale: int = 1) -> Dict[str, Optional[np.ndarray]]:
     """A stereo pair loaded as c2f-stereo loads it: 'left', 'right' (RGB uint8), 'gt' ((H, W)
     float32 disparities, NaN unknown; None without a GT file), 'mask' ((H, W) bool, True =
@@ -120,7 +120,8 @@ def stereo_energy(left: npt.ArrayLike, right: npt.ArrayLike, labels: int = 85,
 def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
                     mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:
     """Fractions of pixels with |disparity - gt| above 0.5, 1 and 2 over pixels of known GT
-    ('all') and over the mask's pixels ('nonoccluded'), and the pixel counts."""
+    ('all') and over the mask's pixels ('nonoccluded', None without a mask), and the pixel
+    counts. A GT with no known pixel, or a mask marking none, is a ValueError."""
 
 def read_segmentation(image: str, seeds: str, gt: str = "", convention: str = "colours",
                       downscale: int = 1) -> Dict[str, Optional[np.ndarray]]:

@@ -129,12 +129,16 @@ py::dict bad_pixel_rates(const py::handle& disparity, const py::handle& gt,
   } catch (const std::invalid_argument& error) {
     throw py::value_error(error.what());
   }
+  if (rates.known_pixels == 0)
+    throw py::value_error("gt: no pixel has a known disparity (every entry NaN): nothing to score");
+  if (!mask.is_none() && rates.nonoccluded_pixels == 0)
+    throw py::value_error("mask: no pixel with known GT is marked: nothing to score");
   py::dict out, nonoccluded, all;
   for (std::size_t i = 0; i < rates.thresholds.size(); ++i) {
     nonoccluded[py::float_(rates.thresholds[i])] = rates.nonoccluded[i];
     all[py::float_(rates.thresholds[i])] = rates.all[i];
   }
-  out["nonoccluded"] = nonoccluded;
+  out["nonoccluded"] = mask.is_none() ? py::object(py::none()) : py::object(nonoccluded);
   out["all"] = all;
   out["nonoccluded_pixels"] = rates.nonoccluded_pixels;
   out["known_pixels"] = rates.known_pixels;
@@ -156,10 +160,12 @@ void bind_stereo(py::module_& module) {
       },
       py::arg("path"), "An image file as an (H, W, 3) uint8 RGB array (grey is made colour).");
   module.def("read_stereo_pair", &read_stereo_pair, py::arg("left"), py::arg("right"),
-             py::arg("gt") = "", py::arg("gt_divisor") = 1.0, py::arg("mask") = "",
+             py::arg("gt") = "", py::arg("gt_divisor") = 0.0, py::arg("mask") = "",
              py::arg("downscale") = 1,
              "A stereo pair loaded as c2f-stereo loads it: a dict with 'left' and 'right' (RGB "
-             "uint8), 'gt' ((H, W) float32 disparities, NaN unknown; None without a GT file) and "
+             "uint8), 'gt' ((H, W) float32 disparities, NaN unknown; None without a GT file; a "
+             "PFM, a 16-bit KITTI PNG read as disparity x 256, or a PNG divided by gt_divisor, "
+             "0: by the file) and "
              "'mask' ((H, W) bool, True = non-occluded; None without one), all shrunk by "
              "`downscale` (views by area, GT by nearest neighbour divided by the factor).");
   module.def("stereo_energy", &stereo_energy, py::arg("left"), py::arg("right"),
@@ -175,8 +181,9 @@ void bind_stereo(py::module_& module) {
   module.def("bad_pixel_rates", &bad_pixel_rates, py::arg("disparity"), py::arg("gt"),
              py::arg("mask") = py::none(),
              "Fractions of pixels with |disparity - gt| above 0.5, 1 and 2, over all pixels of "
-             "known GT (gt not NaN) and over the mask's pixels: {'nonoccluded': {t: rate}, "
-             "'all': {t: rate}, 'nonoccluded_pixels', 'known_pixels'}.");
+             "known GT (gt not NaN) and over the mask's pixels: {'nonoccluded': {t: rate} (None "
+             "without a mask), 'all': {t: rate}, 'nonoccluded_pixels', 'known_pixels'}. A GT "
+             "with no known pixel, or a mask marking none, is a ValueError: nothing to score.");
 }
 
 }  // namespace c2f::python

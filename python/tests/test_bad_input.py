@@ -212,3 +212,14 @@ print(abs(back.evaluate(flat) - back.evaluate(np.zeros(20, int))
     assert "," not in (tmp_path / "model.uai").read_text()
     assert "final energy " in done.stdout and "," not in done.stdout.split("final energy ")[1]
     assert done.stdout.strip().endswith("True")
+
+
+def test_bad_pixel_rates_refuse_what_cannot_be_scored():
+    gt = np.full((4, 5), np.nan, dtype=np.float32)
+    with pytest.raises(ValueError, match="gt: no pixel has a known disparity"):
+        c2f.bad_pixel_rates(np.zeros((4, 5)), gt)
+    gt[1, 1] = 3.0
+    with pytest.raises(ValueError, match="mask: no pixel with known GT is marked"):
+        c2f.bad_pixel_rates(np.zeros((4, 5)), gt, np.zeros((4, 5), bool))
+    rates = c2f.bad_pixel_rates(np.zeros((4, 5)), gt)
+    assert rates["nonoccluded"] is None and rates["all"][2.0] == 1.0

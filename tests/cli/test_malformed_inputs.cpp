@@ -73,6 +73,13 @@ struct Inputs {
     cv::imwrite((dir / "deep.png").string(), cv::Mat(32, 48, CV_16UC3, cv::Scalar(9, 900, 9000)));
     cv::imwrite((dir / "big.png").string(), cv::Mat(3000, 4000, CV_8UC3, cv::Scalar(90, 40, 20)));
     write_bytes(dir / "empty.png", "");
+    {  // A PFM whose scale says big-endian over little-endian floats of 37.25.
+      std::string pfm = "Pf\n48 32\n1.0\n";
+      const float value = 37.25F;
+      for (int i = 0; i < 48 * 32; ++i)
+        pfm.append(reinterpret_cast<const char*>(&value), sizeof value);
+      write_bytes(dir / "flipped.pfm", pfm);
+    }
     write_bytes(dir / "text.png", "not an image\n");
     const std::string png = read_bytes(dir / "left.png");
     write_bytes(dir / "truncated.png", png.substr(0, png.size() / 2));
@@ -207,9 +214,18 @@ std::vector<Case> stereo_cases() {
       {"stereo", pair + "--downscale 0", 2, {"--downscale: expected an integer in [1, 1024]"}},
       {"stereo", pair + "--downscale 100", 2, {"downscale: 48x32 views shrunk by 100"}},
       {"stereo",
-       pair + "--gt {left} --gt-divisor 0",
+       pair + "--gt {left} --gt-divisor 1e-300",
        2,
-       {"--gt-divisor: expected a finite number in (0, 65536], got '0'"}},
+       {"--gt-divisor: expected 0 (by the file) or a number in [1/1024, 65536], got 1e-300"}},
+      {"stereo",
+       pair + "--gt {dir}/small-grey.png --gt-divisor 256",
+       2,
+       {"small-grey.png' is an 8-bit PNG: divided by 256 every disparity would be below one "
+        "pixel"}},
+      {"stereo",
+       pair + "--gt {dir}/flipped.pfm",
+       2,
+       {"flipped.pfm' holds the disparity ", "is the sign of its scale (the byte order) right?"}},
       {"stereo", pair + "--gt {left} --gt-divisor inf", 2, {"--gt-divisor: ", "got 'inf'"}},
       {"stereo",
        pair + "--gt {dir}/missing.png",

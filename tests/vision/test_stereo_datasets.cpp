@@ -14,6 +14,7 @@
 
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
+#include "c2f/vision/stereo/ground_truth.hpp"
 #include "c2f/vision/stereo/kitti2015.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/middlebury2014.hpp"
@@ -222,8 +223,56 @@ TEST_CASE("a KITTI 2015 pair loads with GT / 256 and the D1 measure", "[stereo][
   CHECK(scene.disparity_range == kKittiDefaultLabels);
   CHECK_THROWS_WITH(load_kitti2015_pair(root.string(), "000008_10"),
                     Catch::Contains("image_2/000008_10.png"));
+  // An 8-bit GT is no KITTI GT: refused, not divided by 256 and scored.
+  cv::imwrite((root / "training/disp_occ_0/000007_10.png").string(),
+              cv::Mat(3, 5, CV_8U, cv::Scalar(12)));
+  CHECK_THROWS_WITH(load_kitti2015_pair(root.string(), "000007_10"),
+                    Catch::Contains("is an 8-bit PNG; KITTI's GT is a 16-bit PNG"));
   CHECK_THROWS_WITH(load_kitti2015_pair(root.string(), "../x"),
                     Catch::Contains("expected a name such as 000000_10"));
+}
+
+TEST_CASE("a GT given by hand is read by what it holds, with its dataset's measure",
+          "[stereo][gt]") {
+  const auto dir = fresh_dir("by-hand");
+  // Middlebury 2014's PFM: infinity unknown, bad 2.0 at the size its folder names.
+  const auto quarter = middlebury2014_folder("trainingQ/Toy");
+  GroundTruth pfm = load_ground_truth((quarter / "disp0GT.pfm").string(), 0.0);
+  CHECK(std::isnan(pfm.disparity.at<float>(0, 0)));
+  CHECK(pfm.disparity.at<float>(1, 1) == 3.0F);
+  CHECK(pfm.measure == middlebury2014_measure(Middlebury2014Size::quarter));
+  std::filesystem::copy_file(quarter / "disp0GT.pfm", dir / "gt.pfm");
+  CHECK(load_ground_truth((dir / "gt.pfm").string(), 0.0).measure.name == "bad 2.0");
+  // KITTI's 16-bit PNG: / 256 and D1 unless a divisor is given.
+  cv::Mat deep(3, 5, CV_16U, cv::Scalar(0));
+  deep.at<std::uint16_t>(1, 2) = 256 * 12 + 64;
+  cv::imwrite((dir / "deep.png").string(), deep);
+  GroundTruth kitti = load_ground_truth((dir / "deep.png").string(), 0.0);
+  CHECK(kitti.disparity.at<float>(1, 2) == 12.25F);
+  CHECK(kitti.measure == kitti_d1_measure());
+  GroundTruth divided = load_ground_truth((dir / "deep.png").string(), 64.0);
+  CHECK(divided.disparity.at<float>(1, 2) == 49.0F);
+  CHECK(divided.measure == ErrorMeasure{});
+  // An 8-bit PNG: the value itself, or divided; never by more than 255.
+  cv::imwrite((dir / "grey.png").string(), cv::Mat(3, 5, CV_8U, cv::Scalar(40)));
+  CHECK(load_ground_truth((dir / "grey.png").string(), 0.0).disparity.at<float>(0, 0) == 40.0F);
+  CHECK(load_ground_truth((dir / "grey.png").string(), 4.0).disparity.at<float>(0, 0) == 10.0F);
+  CHECK_THROWS_WITH(load_ground_truth((dir / "grey.png").string(), 256.0),
+                    Catch::Contains("is an 8-bit PNG: divided by 256 every disparity"));
+  // A PFM in the other byte order reads as denormals: refused by name.
+  cv::Mat swapped(4, 6, CV_32F, cv::Scalar(37.25F));
+  write_pfm((dir / "swapped.pfm").string(), swapped);
+  std::string bytes;
+  {
+    std::ifstream in(dir / "swapped.pfm", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::size_t scale = bytes.find("-1");  // write_pfm writes little-endian, scale -1
+  REQUIRE(scale != std::string::npos);
+  bytes.replace(scale, 2, "+1");
+  std::ofstream(dir / "swapped.pfm", std::ios::binary) << bytes;
+  CHECK_THROWS_WITH(load_ground_truth((dir / "swapped.pfm").string(), 0.0),
+                    Catch::Contains("is the sign of its scale (the byte order) right?"));
 }
 
 TEST_CASE("scene names reach the new datasets under the data root", "[stereo][middlebury2014]") {

@@ -72,6 +72,7 @@
 #include "c2f/vision/stereo/cost_volume.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
+#include "c2f/vision/stereo/ground_truth.hpp"
 #include "c2f/vision/stereo/kitti2015.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/middlebury2014.hpp"

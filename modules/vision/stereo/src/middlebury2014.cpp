@@ -10,6 +10,7 @@
 #include "c2f/core/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
+#include "c2f/vision/stereo/ground_truth.hpp"
 #include "stereo_pair_checks.hpp"
 
 namespace c2f::vision {
@@ -86,6 +87,7 @@ StereoScene load_middlebury2014_scene(const std::string& dir, Middlebury2014Size
   } catch (const std::runtime_error& error) {
     throw std::invalid_argument(error.what());
   }
+  require_plausible_disparities(scene.gt, "GT '" + file("disp0GT.pfm") + "'");
   detail::require_view_size(scene.gt, scene.left, file("disp0GT.pfm"));
   detail::require_known_pixel(scene.gt, file("disp0GT.pfm"));
   if (has_mask) {

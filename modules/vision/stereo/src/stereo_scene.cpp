@@ -6,8 +6,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "c2f/core/input_file.hpp"
 #include "c2f/vision/image_io.hpp"
+#include "c2f/vision/stereo/ground_truth.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
+#include "c2f/vision/stereo/middlebury2014.hpp"
 
 namespace c2f::vision {
 
@@ -41,8 +44,19 @@ StereoScene load_stereo_pair(const StereoPairFiles& files) {
                                 size_text(scene.right) + ": the views must have one size");
   }
   scene.nonoccluded_source = "none";
+  // A Middlebury 2014 folder's calib.txt beside the left view gives the label count.
+  const std::filesystem::path calibration =
+      std::filesystem::path(files.left).parent_path() / "calib.txt";
+  if (why_not_a_file(calibration.string()).empty()) {
+    scene.disparity_range = parse_ndisp(
+        read_input_file(calibration.string(), "calibration", kMaxTextInputBytes),
+        calibration.string());
+  }
   if (files.gt.empty()) return scene;
-  scene.gt = load_gt_disparity(files.gt, files.gt_divisor);
+  GroundTruth truth = load_ground_truth(files.gt, files.gt_divisor);
+  scene.gt = std::move(truth.disparity);
+  scene.measure = truth.measure;
+  scene.gt_convention = std::move(truth.convention);
   if (scene.gt.size() != scene.left.size()) {
     throw std::invalid_argument("GT '" + files.gt + "' is " + size_text(scene.gt) +
                                 ", the views are " + size_text(scene.left));
@@ -52,7 +66,7 @@ StereoScene load_stereo_pair(const StereoPairFiles& files) {
     scene.nonoccluded_source = "official mask";
   } else if (!files.gt_right.empty()) {
     scene.nonoccluded =
-        left_right_nonoccluded(scene.gt, load_gt_disparity(files.gt_right, files.gt_divisor));
+        left_right_nonoccluded(scene.gt, load_ground_truth(files.gt_right, files.gt_divisor).disparity);
     scene.nonoccluded_source = "left-right check";
   }
   if (!scene.nonoccluded.empty() && scene.nonoccluded.size() != scene.gt.size())

@@ -30,6 +30,7 @@ struct StereoScene {
   cv::Mat nonoccluded;  ///< CV_8U mask, 255 = evaluate as non-occluded; empty when not available
   std::string nonoccluded_source;  ///< "official mask", "left-right check" or "none"
   ErrorMeasure measure;            ///< the dataset's error convention (default: bad 1)
+  std::string gt_convention;       ///< how a GT given by hand was read (ground_truth.hpp); or empty
   int disparity_range = 0;         ///< the dataset's label count (calib.txt ndisp); 0: unknown
 
   /// The pixel grid of the views.
@@ -41,8 +42,8 @@ struct StereoScene {
 /// The files of a stereo pair given by hand. Empty paths are absent inputs.
 struct StereoPairFiles {
   std::string left, right;  ///< the views (required)
-  std::string gt;           ///< left-view ground-truth disparity PNG (0 = unknown)
-  double gt_divisor = 1.0;  ///< GT PNG value per disparity pixel
+  std::string gt;           ///< left-view GT: a PFM or a PNG, read by load_ground_truth
+  double gt_divisor = 0.0;  ///< GT PNG value per disparity pixel; 0: by the file (ground_truth.hpp)
   std::string gt_right;     ///< right-view GT, for a left-right occlusion mask
   std::string mask;         ///< official non-occluded mask (255 = evaluate); wins over gt_right
 };
@@ -51,8 +52,10 @@ struct StereoPairFiles {
 /// range when it has one (>= 2), else `fallback`.
 [[nodiscard]] int label_count(const StereoScene& scene, int fallback) noexcept;
 
-/// Loads a pair: the views (named by the file stem of `left`), the GT and the non-occluded mask
-/// (official mask, else the left-right check when gt_right is given). Throws
+/// Loads a pair: the views (named by the file stem of `left`), the GT read by what it holds
+/// (load_ground_truth: the measure its dataset scores by comes with it), the non-occluded mask
+/// (official mask, else the left-right check when gt_right is given) and, when a Middlebury
+/// 2014 calib.txt lies beside the left view, its ndisp as the disparity range. Throws
 /// std::invalid_argument naming the input when sizes differ or a mask comes without GT, and
 /// std::runtime_error naming the path for an unreadable file.
 StereoScene load_stereo_pair(const StereoPairFiles& files);
