@@ -86,6 +86,10 @@ void guard_process() {
   // Past a file-size limit (ulimit -f) a write fails with EFBIG, which the checked writes
   // report naming the file, instead of SIGXFSZ ending the process without a word.
   std::signal(SIGXFSZ, SIG_IGN);
+  // A reader that went away (`--trace /dev/stdout | head`) makes a write fail with EPIPE, which
+  // the checked writes report as an error (exit 1; the unfinished output folder is removed),
+  // instead of SIGPIPE ending the process without a word and leaving it half made.
+  std::signal(SIGPIPE, SIG_IGN);
 }
 
 int run_tool(const char* tool, const std::function<int()>& body) {

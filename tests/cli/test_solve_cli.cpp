@@ -227,3 +227,23 @@ TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2
   }
 }
 #endif
+
+TEST_CASE("a trace into a pipe nobody reads is an error that leaves no folder",
+          "[solve][cli][malformed]") {
+  // `--trace /dev/stdout | true`: the reader is gone before the trace is written. The write
+  // fails (EPIPE), the run ends with exit 1 and a message, and the new output folder goes again
+  // (SIGPIPE ended the process without a word, leaving a folder with only a marker).
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-pipe";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  c2f::test::Rng rng(9);
+  write_model(c2f::test::random_grid_energy(rng, 6, 5, 3), dir / "grid.uai");
+  const auto r = c2f::test::run_tool(
+      "/bin/bash", "-c '" + std::string(C2F_SOLVE_BINARY) + " " + (dir / "grid.uai").string() +
+                       " -o " + (dir / "out").string() +
+                       " --trace /dev/stdout | true; exit ${PIPESTATUS[0]}'");
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("c2f-solve: error: ") && Catch::Contains("failed"));
+  CHECK_FALSE(fs::exists(dir / "out"));
+}

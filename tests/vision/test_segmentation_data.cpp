@@ -441,3 +441,27 @@ TEST_CASE("scenes from decoded images: views into larger images read like whole 
   CHECK_THROWS_WITH(c2f::vision::segmentation_scene_from_images(views, names),
                     Catch::Contains("GT '") && Catch::Contains("is not a non-empty 8-bit colour"));
 }
+
+TEST_CASE("seeds drawn over a transparent background: transparent is no seed", "[segmentation]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-transparent-seeds";
+  std::filesystem::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 40, 30, 2);
+  const SegmentationScene opaque =
+      load_segmentation_scene({files.image, files.seeds, "", SeedConvention::colours});
+  // The same scribbles on a transparent black background (alpha 0 off the strokes).
+  const cv::Mat drawn = cv::imread(files.seeds);
+  cv::Mat rgba(drawn.size(), CV_8UC4, cv::Scalar(0, 0, 0, 0));
+  for (int y = 0; y < drawn.rows; ++y) {
+    for (int x = 0; x < drawn.cols; ++x) {
+      const auto pixel = drawn.at<cv::Vec3b>(y, x);
+      if (pixel != cv::Vec3b(255, 255, 255))
+        rgba.at<cv::Vec4b>(y, x) = cv::Vec4b(pixel[0], pixel[1], pixel[2], 255);
+    }
+  }
+  const std::string transparent = (dir / "seeds-rgba.png").string();
+  cv::imwrite(transparent, rgba);
+  const SegmentationScene scene =
+      load_segmentation_scene({files.image, transparent, "", SeedConvention::colours});
+  CHECK(scene.num_labels() == opaque.num_labels());  // no black third label
+  CHECK(scene.seeds == opaque.seeds);
+}

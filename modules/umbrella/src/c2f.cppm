@@ -262,6 +262,7 @@ using c2f::vision::labels_to_disparity;
 using c2f::vision::left_right_nonoccluded;
 using c2f::vision::LevelPartitionRecorder;
 using c2f::vision::load_colour_image;
+using c2f::vision::load_colour_image_on_white;
 using c2f::vision::load_grey_image;
 using c2f::vision::load_ground_truth;
 using c2f::vision::load_gt_disparity;

@@ -86,6 +86,20 @@ cv::Mat load_colour_image(const std::string& path) {
   }
 }
 
+cv::Mat load_colour_image_on_white(const std::string& path) {
+  const cv::Mat image = require_8_bit(load_as_stored(path, cv::IMREAD_UNCHANGED), path);
+  if (image.channels() != 4) return load_colour_image(path);
+  cv::Mat colour(image.size(), CV_8UC3);
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const auto& pixel = image.at<cv::Vec4b>(y, x);
+      colour.at<cv::Vec3b>(y, x) =
+          pixel[3] < 128 ? cv::Vec3b(255, 255, 255) : cv::Vec3b(pixel[0], pixel[1], pixel[2]);
+    }
+  }
+  return colour;
+}
+
 cv::Mat load_grey_image(const std::string& path) {
   const cv::Mat image = require_8_bit(load_as_stored(path, cv::IMREAD_ANYCOLOR), path);
   cv::Mat grey;

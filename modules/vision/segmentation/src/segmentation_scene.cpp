@@ -116,7 +116,7 @@ SeedConvention seed_convention_from_string(std::string_view text) {
 SegmentationScene load_segmentation_scene(const SegmentationFiles& files) {
   SegmentationImages images;
   images.image = load_colour_image(files.image);
-  images.seeds = load_colour_image(files.seeds);
+  images.seeds = load_colour_image_on_white(files.seeds);  // transparent: no seed
   if (!files.gt.empty()) {
     images.gt = files.convention == SeedConvention::binary ? load_grey_image(files.gt)
                                                            : load_colour_image(files.gt);

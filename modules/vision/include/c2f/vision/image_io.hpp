@@ -11,6 +11,11 @@ namespace c2f::vision {
 /// readable image, or not 8 bits per channel (a 16-bit image is refused, not scaled down).
 cv::Mat load_colour_image(const std::string& path);
 
+/// load_colour_image for drawings over a transparent background (seed scribbles): a pixel
+/// less than half opaque (alpha below 128) becomes white, the colour of no seed; an opaque one
+/// keeps its colour. An image without alpha loads as load_colour_image loads it.
+cv::Mat load_colour_image_on_white(const std::string& path);
+
 /// Loads an image as 8-bit single channel (colour images are converted to grey; palette PNGs
 /// decode to their grey levels). Throws std::invalid_argument as load_colour_image does.
 cv::Mat load_grey_image(const std::string& path);
