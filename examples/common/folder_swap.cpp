@@ -40,10 +40,13 @@ void carry_entry(const fs::path& from, const fs::path& to) {
       fs::copy_symlink(from, to, error);
       break;
     case fs::file_type::directory:
-      fs::create_directory(to, from, error);  // with the old folder's permissions
+      // Filled first, then given the old folder's permissions (a folder without write
+      // permission could not be filled, nor removed again should the run fail).
+      fs::create_directory(to, error);
       for (const auto& entry : fs::directory_iterator(from, error)) {
         carry_entry(entry.path(), to / entry.path().filename());
       }
+      if (!error) fs::permissions(to, status.permissions(), error);
       break;
     default:
       cannot_carry(from, "it is not a file, folder or symbolic link");
@@ -62,10 +65,17 @@ void check_carriable(const fs::path& folder, const KeepEntry& keep) {
       entry.disable_recursion_pending();  // an entry the run replaces: nothing in it is kept
       continue;
     }
-    if (!carriable(entry->symlink_status(error).type())) {
+    const fs::file_type type = entry->symlink_status(error).type();
+    if (!carriable(type)) {
       throw std::runtime_error("the output folder holds '" + entry->path().string() +
                                "', which is not a file, folder or symbolic link: a run "
                                "replaces the folder and cannot keep it; move it out");
+    }
+    if (type == fs::file_type::directory && ::access(entry->path().c_str(), R_OK | X_OK) != 0) {
+      throw std::runtime_error("the output folder holds '" + entry->path().string() +
+                               "', a folder this run cannot read (" + std::strerror(errno) +
+                               "): a run replaces the folder and cannot keep it; make it "
+                               "readable, or move it out");
     }
   }
 }

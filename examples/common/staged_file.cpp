@@ -59,10 +59,22 @@ StagedFile::StagedFile(const fs::path& target) : target_(target) {
         return;
     }
   }
-  // The file a symbolic link names is replaced, not the link.
+  // The file a symbolic link names is replaced, not the link; a link to nothing is refused (it
+  // would be replaced by a file, or a file made wherever it points).
   if (fs::is_symlink(fs::symlink_status(target, error))) {
+    if (!fs::exists(status)) {
+      throw std::invalid_argument("'" + target.string() + "' is a symbolic link to '" +
+                                  fs::read_symlink(target, error).string() +
+                                  "', which does not exist: give the file's own path, or remove "
+                                  "the link");
+    }
     const fs::path resolved = fs::weakly_canonical(target, error);
-    if (!error) target_ = resolved;
+    if (error) {
+      throw std::invalid_argument("'" + target.string() +
+                                  "' is a symbolic link that cannot be followed: " +
+                                  error.message());
+    }
+    target_ = resolved;
   }
   path_ = target_;
   path_ += ".c2f-partial-" + std::to_string(::getpid());

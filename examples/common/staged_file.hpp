@@ -11,8 +11,8 @@ class StagedFile {
   /// Plans the write of `target`. A symbolic link is followed: the file it points to is replaced
   /// and the link stays. A device or a pipe (/dev/stdout, /dev/null, a FIFO some process reads)
   /// cannot be replaced and is written in place. Throws std::invalid_argument naming the target
-  /// when it is a folder or a socket, or a FIFO that no process reads (opening it would block
-  /// until one does).
+  /// when it is a folder or a socket, a FIFO that no process reads (opening it would block
+  /// until one does), or a symbolic link to nothing.
   explicit StagedFile(const std::filesystem::path& target);
   /// Removes the partial file unless committed.
   ~StagedFile();

@@ -20,13 +20,17 @@ namespace {
 
 using Files = std::map<std::string, std::string>;
 
-/// Every file of `folder` with its bytes, but the marker, which names the process of the run
-/// holding the folder (and of a killed one).
+/// Every entry of `folder` with its bytes ("/" for a folder), but the marker, which names the
+/// process of the run holding the folder (and of a killed one).
 Files read_folder(const fs::path& folder) {
   Files files;
   for (const auto& entry : fs::directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
     if (name == ".c2f-owner") continue;
+    if (entry.is_directory()) {
+      files[name] = "/";
+      continue;
+    }
     std::ifstream in(entry.path(), std::ios::binary);
     files[name] = {std::istreambuf_iterator<char>(in), {}};
   }
@@ -102,7 +106,7 @@ TEST_CASE("two c2f-stereo runs into one folder at once: the second is refused by
   REQUIRE_FALSE(text.empty());
   CHECK_THAT(text, Catch::Contains("10 labels"));  // the first run's, whole
   std::ifstream marker(scene.out / ".c2f-owner");
-  CHECK(std::string((std::istreambuf_iterator<char>(marker)), {}) == "c2f-stereo\n");
+  CHECK(std::string((std::istreambuf_iterator<char>(marker)), {}).rfind("c2f-stereo\nrecord\n", 0) == 0);
 }
 
 TEST_CASE("a run killed at any step of its commit leaves one run's folder, never a mix",
@@ -175,7 +179,7 @@ TEST_CASE("a FIFO given as --trace is written in place while a process reads it"
   CHECK_FALSE(fs::exists(scene.out / "trace.csv"));
 }
 
-TEST_CASE("a folder standing where an output goes is replaced with the folder's new version",
+TEST_CASE("a user's folder standing where an output goes is refused, never replaced",
           "[cli][commit]") {
   const Scene scene = make_scene("c2f-test-commit-folder-in-the-way");
   REQUIRE(c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 8").exit_code == 0);
@@ -183,9 +187,32 @@ TEST_CASE("a folder standing where an output goes is replaced with the folder's 
     fs::remove(scene.out / name);
     fs::create_directories(scene.out / name / "inside");
   }
+  const Files before = read_folder(scene.out);
   const auto r = c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 8");
   INFO(r.output);
-  CHECK(r.exit_code == 0);
-  CHECK(fs::is_regular_file(scene.out / "summary.txt"));
-  CHECK(fs::is_regular_file(scene.out / "trace.csv"));
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("', which this run writes and which no earlier run of "
+                                      "c2f-stereo wrote"));
+  CHECK(read_folder(scene.out) == before);
+  CHECK(fs::is_directory(scene.out / "trace.csv" / "inside"));
+  CHECK(c2f::test::run_leftovers(scene.out) == 0);
+}
+
+TEST_CASE("files a user's process creates while runs commit are never lost", "[cli][commit]") {
+  // A writer creates 600 files in the folder while 25 runs commit one after the other. A file
+  // made in the old version between a commit's carry-over and its exchange was removed with it.
+  const Scene scene = make_scene("c2f-test-commit-race");
+  REQUIRE(c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 4").exit_code == 0);
+  const std::string out = scene.out.string();
+  const auto r = run_shell("(for i in $(seq 1 600); do echo $i > " + out +
+                           "/user-$i.txt; done) & writer=$!; for run in $(seq 1 25); do " +
+                           C2F_STEREO_BINARY + " " + scene.inputs +
+                           " --labels 4 || exit 3; done; wait $writer");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  int found = 0;
+  for (const auto& entry : fs::directory_iterator(scene.out))
+    found += entry.path().filename().string().rfind("user-", 0) == 0;
+  CHECK(found == 600);
+  CHECK(c2f::test::run_leftovers(scene.out) == 0);
 }

@@ -230,7 +230,8 @@ TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2
 
 TEST_CASE("a trace into a pipe nobody reads is an error that leaves no folder",
           "[solve][cli][malformed]") {
-  // `--trace /dev/stdout | true`: the reader is gone before the trace is written. The write
+  // `--trace /dev/stdout | true`, the run started once `true` has ended: the reader is gone
+  // before the trace is written. The write
   // fails (EPIPE), the run ends with exit 1 and a message, and the new output folder goes again
   // (SIGPIPE ended the process without a word, leaving a folder with only a marker).
   const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-pipe";
@@ -239,9 +240,9 @@ TEST_CASE("a trace into a pipe nobody reads is an error that leaves no folder",
   c2f::test::Rng rng(9);
   write_model(c2f::test::random_grid_energy(rng, 6, 5, 3), dir / "grid.uai");
   const auto r = c2f::test::run_tool(
-      "/bin/bash", "-c '" + std::string(C2F_SOLVE_BINARY) + " " + (dir / "grid.uai").string() +
-                       " -o " + (dir / "out").string() +
-                       " --trace /dev/stdout | true; exit ${PIPESTATUS[0]}'");
+      "/bin/bash", "-c '{ sleep 1; " + std::string(C2F_SOLVE_BINARY) + " " +
+                       (dir / "grid.uai").string() + " -o " + (dir / "out").string() +
+                       " --trace /dev/stdout; } | true; exit ${PIPESTATUS[0]}'");
   INFO(r.output);
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.output, Catch::Contains("c2f-solve: error: ") && Catch::Contains("failed"));

@@ -6,11 +6,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "c2f/core/output_file.hpp"
 #include "folder_swap.hpp"
@@ -63,7 +65,7 @@ TEST_CASE("OutputFolder replaces the folder in one step and keeps the user's fil
     first.commit();
   }
   write_text(dir / "notes.txt", "the user's own file");
-  fs::create_directories(dir / "trace.csv");  // a folder where an output goes
+  write_text(dir / "partition-level-notes.png", "owned by name, yet the user's");
   fs::create_directories(dir / "mine");
   write_text(dir / "mine" / "more.txt", "more of the user's");
   struct stat before {};
@@ -80,14 +82,76 @@ TEST_CASE("OutputFolder replaces the folder in one step and keeps the user's fil
   }
   CHECK(read_text(dir / "summary.txt") == "new summary");
   CHECK(read_text(dir / "trace.csv") == "new trace");
-  CHECK_FALSE(fs::exists(dir / "partition-level0.png"));  // owned, not written this time
+  CHECK_FALSE(fs::exists(dir / "partition-level0.png"));  // recorded, not written this time
   CHECK(read_text(dir / "notes.txt") == "the user's own file");
+  CHECK(read_text(dir / "partition-level-notes.png") == "owned by name, yet the user's");
   CHECK(read_text(dir / "mine" / "more.txt") == "more of the user's");
   struct stat after {};
   REQUIRE(::stat((dir / "notes.txt").c_str(), &after) == 0);
   CHECK(after.st_ino == before.st_ino);  // the same file, linked into the new folder
-  CHECK(read_text(dir / c2f::examples::FolderClaim::kMarker).rfind("c2f-test\n", 0) == 0);
+  CHECK(read_text(dir / c2f::examples::FolderClaim::kMarker).rfind("c2f-test\nrecord\n", 0) == 0);
   CHECK(c2f::test::run_leftovers(dir) == 0);
+}
+
+TEST_CASE("OutputFolder replaces only the files its runs wrote, and keeps what appears meanwhile",
+          "[output]") {
+  const fs::path dir = fresh("c2f-test-output-folder-record") / "out";
+  const std::vector<std::string> owned{"summary.txt", "trace.csv"};
+  {
+    OutputFolder first(dir, "c2f-test", owned);
+    write_text(first.staging() / "summary.txt", "ours");
+    first.commit();
+  }
+  // A user's folder where a fixed output goes: refused before the run, left as it is.
+  fs::create_directories(dir / "trace.csv" / "inside");
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", owned),
+                    Catch::Contains("holds 'trace.csv', which this run writes and which no earlier "
+                                    "run of c2f-test wrote"));
+  CHECK(fs::is_directory(dir / "trace.csv" / "inside"));
+  fs::remove_all(dir / "trace.csv");
+  // A user's file put in place of a file the tool wrote (another inode) is the user's now.
+  fs::remove(dir / "summary.txt");
+  write_text(dir / "summary.txt", "the user's summary");
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", owned), Catch::Contains("holds 'summary.txt'"));
+  CHECK(read_text(dir / "summary.txt") == "the user's summary");
+  fs::remove(dir / "summary.txt");
+  // A file made in the folder while a run commits is in the new version.
+  {
+    OutputFolder output(dir, "c2f-test", owned);
+    write_text(output.staging() / "summary.txt", "new");
+    write_text(dir / "made-meanwhile.txt", "the user's");
+    output.commit();
+  }
+  CHECK(read_text(dir / "made-meanwhile.txt") == "the user's");
+  CHECK(read_text(dir / "summary.txt") == "new");
+}
+
+TEST_CASE("OutputFolder refuses a marker it did not make", "[output]") {
+  const fs::path root = fresh("c2f-test-output-folder-marker");
+  const fs::path dir = root / "out";
+  fs::create_directories(dir);
+  write_text(dir / "summary.txt", "the user's summary");
+  write_text(dir / c2f::examples::FolderClaim::kMarker, "");
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"summary.txt"}),
+                    Catch::Contains("has an empty .c2f-owner, which no c2f tool wrote"));
+  write_text(dir / c2f::examples::FolderClaim::kMarker, "my notes\n");
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"summary.txt"}),
+                    Catch::Contains("names no c2f tool"));
+  // A marker that is a hard link to a file of the user's would be overwritten: refused.
+  fs::remove(dir / c2f::examples::FolderClaim::kMarker);
+  write_text(root / "diary.txt", "c2f-test\n");
+  fs::create_hard_link(root / "diary.txt", dir / c2f::examples::FolderClaim::kMarker);
+  CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"summary.txt"}),
+                    Catch::Contains("with 2 hard links, 1 of them outside the runs' folders"));
+  CHECK(read_text(root / "diary.txt") == "c2f-test\n");
+  CHECK(read_text(dir / "summary.txt") == "the user's summary");
+  // A user's folder named like a killed run's staging folder is not one: kept.
+  fs::remove(dir / c2f::examples::FolderClaim::kMarker);
+  fs::remove(dir / "summary.txt");
+  fs::create_directories(root / ".out.c2f-staging-999999999-0");
+  write_text(root / ".out.c2f-staging-999999999-0" / "mine.txt", "the user's");
+  { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
+  CHECK(read_text(root / ".out.c2f-staging-999999999-0" / "mine.txt") == "the user's");
 }
 
 TEST_CASE("OutputFolder without a commit leaves the folder and other outputs as they were",
@@ -178,6 +242,14 @@ TEST_CASE("OutputFolder lets one run at a time write a folder", "[output]") {
   }
   CHECK(read_text(dir / "a.txt") == "from a");
   CHECK(read_text(dir / "b.txt") == "from b");
+  // A sharing run waits for a run holding the folder, for a stated time, then gives up.
+  {
+    OutputFolder holder(dir, "c2f-test", {"a.txt"});
+    CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", {"b.txt"}, OutputFolder::Sharing::by_files,
+                                   std::chrono::milliseconds(300)),
+                      Catch::Contains("is still being written by another run (c2f-test, process " +
+                                      std::to_string(::getpid()) + ") after 0.3 s of waiting"));
+  }
 }
 
 TEST_CASE("OutputFolder cleans up after killed runs", "[output]") {
@@ -188,9 +260,11 @@ TEST_CASE("OutputFolder cleans up after killed runs", "[output]") {
     write_text(first.staging() / "summary.txt", "committed");
     first.commit();
   }
-  // A run killed while it staged (no such process).
+  // A run killed while it staged (no such process): its staging folder holds the marker's link.
   fs::create_directories(root / ".out.c2f-staging-999999999-0");
   write_text(root / ".out.c2f-staging-999999999-0" / "summary.txt", "from a killed run");
+  fs::create_hard_link(dir / c2f::examples::FolderClaim::kMarker,
+                       root / ".out.c2f-staging-999999999-0" / c2f::examples::FolderClaim::kMarker);
   { OutputFolder output(dir, "c2f-test", {"summary.txt"}); }
   CHECK_FALSE(fs::exists(root / ".out.c2f-staging-999999999-0"));
   // A run killed between the two renames of a fallback commit: the old folder is put back.
@@ -252,6 +326,12 @@ TEST_CASE("StagedFile replaces the file a link names, and refuses a FIFO without
                     Catch::Contains("is a FIFO that no process is reading"));
   CHECK_THROWS_WITH(c2f::examples::StagedFile(root), Catch::Contains("is a folder, not a file"));
   CHECK(c2f::examples::StagedFile("/dev/null").in_place());
+  // A link to nothing is neither replaced nor followed into a new file.
+  fs::create_symlink(root / "nowhere.csv", root / "dangling.csv");
+  CHECK_THROWS_WITH(c2f::examples::StagedFile(root / "dangling.csv"),
+                    Catch::Contains("dangling.csv' is a symbolic link to '") &&
+                        Catch::Contains("nowhere.csv', which does not exist"));
+  CHECK(fs::is_symlink(root / "dangling.csv"));
 }
 
 TEST_CASE("restore_retired_folder puts a folder back only where none stands", "[output]") {
