@@ -227,7 +227,12 @@ int summarize(const std::string& path) {
   auto number = [](const std::string& s) {
     return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);
   };
-  for (const auto& f : bench::read_summary_rows(path, "image\t", std::size(kColumns))) {
+  const auto read = bench::read_summary_rows(path, "image\t", std::size(kColumns));
+  // Energy, error and seconds are numbers; the times of reaching flat's energy and the deadline
+  // errors may be nan (never reached, no GT).
+  bench::require_row_numbers(read, path, kColumns, {1, 2, 4, 5, 6, 7, 9, 10, 11, 12},
+                             {5, 9, 10, 11, 12});
+  for (const auto& f : read) {
     rows.push_back({f[0], f[3], f[8], number(f[4]), number(f[5]), number(f[6]), number(f[9]),
                     number(f[10]), number(f[11]), number(f[12])});
   }
@@ -291,7 +296,7 @@ int summarize(const std::string& path) {
 
 int main(int argc, char** argv) {
   try {
-    std::string data = "../shared/data", out = "out/bench-segment", config_list;
+    std::string data = "../shared/data", out = "out/bench-segment", config_list = "all";
     double time_limit = 600;
     bool header = false;
     double memory_gib = 0.0;  // 0: default_memory_budget()
@@ -304,7 +309,7 @@ int main(int argc, char** argv) {
     options.path("data", &data, "data root")
         .path("out", &out, "folder for traces and label images")
         .real("time-limit", &time_limit, {0.0, 1e7, true}, "seconds per run")
-        .text("configs", &config_list, "comma-separated configurations (default: all)")
+        .text("configs", &config_list, "comma-separated configurations, or all")
         .real("memory", &memory_gib, {0.0, 1e6, false},
               "the memory budget in GiB, as c2f-segment --memory (0, the default: a quarter of "
               "this machine's memory, growing to a run's needs up to half)")
@@ -316,6 +321,10 @@ int main(int argc, char** argv) {
     const bench::BenchCommand command = bench::bench_command(*arguments, "SET NAME");
     if (command.summarize) return summarize(command.rows);
     std::vector<std::string> selected;
+    if (config_list.empty())
+      throw std::invalid_argument("--configs: expected a comma-separated list of configurations or "
+                                  "all, got ''");
+    if (config_list == "all") config_list.clear();
     std::stringstream list(config_list);
     for (std::string name; std::getline(list, name, ',');) {
       if (std::none_of(configs().begin(), configs().end(),

@@ -2,6 +2,7 @@
 // The rows a benchmark's `run` printed (tab-separated, one header line per run), read back by its
 // `summarize`.
 
+#include <algorithm>
 #include <cstddef>
 #include <sstream>
 #include <stdexcept>
@@ -9,6 +10,8 @@
 #include <vector>
 
 #include "c2f/core/input_file.hpp"
+#include "c2f/core/number_text.hpp"
+#include "c2f/core/text_input.hpp"
 
 namespace c2f::bench {
 
@@ -42,6 +45,30 @@ inline std::vector<std::vector<std::string>> read_summary_rows(const std::string
                                 "' holds no rows to summarize (expected the rows a run printed)");
   }
   return rows;
+}
+
+/// Checks the numbers of the rows `rows` of the rows file `path`: every column in `numeric` must
+/// hold a finite decimal number, or "nan" where the column is in `may_be_nan` too (a value a
+/// run did not have, such as the time of reaching an energy it never reached). Throws
+/// std::invalid_argument naming the file, the row (its first field) and the column
+/// (`names[column]`): a NaN energy or a garbled number is no row to summarise.
+inline void require_row_numbers(const std::vector<std::vector<std::string>>& rows,
+                                const std::string& path, const char* const* names,
+                                const std::vector<std::size_t>& numeric,
+                                const std::vector<std::size_t>& may_be_nan) {
+  for (const auto& row : rows) {
+    for (const std::size_t column : numeric) {
+      const std::string& text = row.at(column);
+      const bool nan_text = text == "nan" || text == "-nan";
+      const bool nan_allowed =
+          std::find(may_be_nan.begin(), may_be_nan.end(), column) != may_be_nan.end();
+      if ((nan_text && nan_allowed) || parse_real(text)) continue;
+      throw std::invalid_argument("'" + path + "': row '" + printable(row.at(0)) + "', column " +
+                                  names[column] + ": expected a finite number" +
+                                  (nan_allowed ? " or nan" : "") + ", got '" + printable(text) +
+                                  "'");
+    }
+  }
 }
 
 }  // namespace c2f::bench

@@ -223,3 +223,13 @@ def test_bad_pixel_rates_refuse_what_cannot_be_scored():
         c2f.bad_pixel_rates(np.zeros((4, 5)), gt, np.zeros((4, 5), bool))
     rates = c2f.bad_pixel_rates(np.zeros((4, 5)), gt)
     assert rates["nonoccluded"] is None and rates["all"][2.0] == 1.0
+
+
+def test_a_binary_file_read_as_uai_is_a_value_error_with_a_message(tmp_path):
+    model = tmp_path / "binary.uai"
+    model.write_bytes(bytes(range(256)) * 4)
+    with pytest.raises(ValueError) as caught:
+        c2f.Energy.read_uai(str(model))
+    message = str(caught.value)
+    assert "binary.uai: token 1: network type" in message
+    assert "\x1b" not in message and "\x00" not in message  # control bytes escaped

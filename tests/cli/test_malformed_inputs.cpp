@@ -84,6 +84,7 @@ struct Inputs {
     const std::string png = read_bytes(dir / "left.png");
     write_bytes(dir / "truncated.png", png.substr(0, png.size() / 2));
     // A PNG header saying 40000x30000 (1.2e9 pixels), and nothing after it.
+    write_bytes(dir / "huge-header.ppm", "P6\n# a comment\n999999999 999999999\n255\n");
     write_bytes(dir / "huge-header.png", std::string("\x89PNG\r\n\x1A\n\0\0\0\x0DIHDR", 16) +
                                              std::string("\0\0\x9C\x40\0\0\x75\x30", 8) +
                                              std::string("\x08\x02\0\0\0\0\0\0\0", 9));
@@ -240,7 +241,12 @@ std::vector<Case> stereo_cases() {
       {"stereo",
        "{dir}/huge-header.png {right} -o {out}/stereo",
        2,
-       {"image '", "huge-header.png' is 40000x30000 pixels, more than the 2^30"}},
+       {"image '", "huge-header.png' is 40000x30000 pixels by its header, more than an image "
+                   "may have"}},
+      {"stereo",
+       "{dir}/huge-header.ppm {right} -o {out}/stereo",
+       2,
+       {"image '", "huge-header.ppm' is 999999999x999999999 pixels by its header"}},
       {"stereo",
        "{left} {left} -o {out}/stereo",
        2,

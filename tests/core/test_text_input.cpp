@@ -22,6 +22,10 @@ TEST_CASE("text helpers: byte-order mark, gzip, printable", "[text]") {
   CHECK(printable(std::string("a\0b\x1B", 4)) == "a\\x00b\\x1B");
   CHECK(printable("caf\xC3\xA9") == "caf\xC3\xA9");  // UTF-8 stays
   CHECK(printable(std::string(100, 'x'), 10) == "xxxxxxxxxx...");
+  // Bytes that are no UTF-8, and C1 controls (CSI, U+009B), are escaped; a message stays text.
+  CHECK(printable("\xFF" "caf\xC3\xA9 \xC2\x9B[2J \xE2\x82") ==
+        "\\xFFcaf\xC3\xA9 \\xC2\\x9B[2J \\xE2\\x82");
+  CHECK(printable("\xED\xA0\x80") == "\\xED\\xA0\\x80");  // a surrogate
 }
 
 TEST_CASE("UAI text with a byte-order mark reads; compressed or binary text is refused clearly",

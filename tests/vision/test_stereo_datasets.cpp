@@ -142,6 +142,7 @@ TEST_CASE("downscale divides the thresholds that follow it and the disparity ran
 
 TEST_CASE("ndisp is read from calib.txt, strictly", "[stereo][middlebury2014]") {
   CHECK(parse_ndisp("width=718\r\nndisp=73\r\nisint=0\r\n", "c") == 73);
+  CHECK(parse_ndisp("\xEF\xBB\xBFndisp=64\n", "c") == 64);  // a byte-order mark first
   CHECK_THROWS_WITH(parse_ndisp("width=718\n", "c.txt"),
                     Catch::Contains("'c.txt' has no ndisp= line"));
   CHECK_THROWS_WITH(parse_ndisp("ndisp=7x\n", "c.txt"),

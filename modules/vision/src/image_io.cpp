@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,7 @@
 #include <opencv2/core.hpp>
 
 #include "c2f/core/input_file.hpp"
+#include "c2f/core/text_input.hpp"
 
 namespace c2f::vision {
 
@@ -34,6 +36,33 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> png_size(const std::strin
   return std::pair{big_endian(16), big_endian(20)};
 }
 
+/// A PNM's (PBM, PGM, PPM: "P1" to "P6") size from its header, or nullopt when `path` is no PNM
+/// or its header is not readable as one.
+std::optional<std::pair<std::uint64_t, std::uint64_t>> pnm_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string header(256, '\0');
+  in.read(header.data(), static_cast<std::streamsize>(header.size()));
+  header.resize(static_cast<std::size_t>(in.gcount()));
+  if (header.size() < 3 || header[0] != 'P' || header[1] < '1' || header[1] > '6')
+    return std::nullopt;
+  std::size_t at = 2;
+  std::uint64_t sides[2] = {0, 0};
+  for (std::uint64_t& side : sides) {
+    while (at < header.size() && (std::isspace(static_cast<unsigned char>(header[at])) ||
+                                  header[at] == '#')) {
+      if (header[at] == '#') at = header.find('\n', at);  // a comment to the line's end
+      if (at == std::string::npos) return std::nullopt;
+      ++at;
+    }
+    const std::size_t start = at;
+    while (at < header.size() && std::isdigit(static_cast<unsigned char>(header[at])) &&
+           at - start < 18)
+      side = 10 * side + static_cast<std::uint64_t>(header[at++] - '0');
+    if (at == start) return std::nullopt;
+  }
+  return std::pair{sides[0], sides[1]};
+}
+
 /// The image with its stored depth and channels (`flags` adds to IMREAD_ANYDEPTH; palette
 /// images decode to colour).
 cv::Mat load_as_stored(const std::string& path, int flags) {
@@ -42,14 +71,26 @@ cv::Mat load_as_stored(const std::string& path, int flags) {
   // OpenCV refuses images of more than 2^30 pixels with a raw message of its own on stderr;
   // a PNG says its size first, so such a file is refused here by name.
   constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 30;
-  if (const auto size = png_size(path);
-      size && std::uint64_t{size->first} * size->second > kMaxPixels) {
+  // OpenCV also refuses a side above 2^20; a PNM header says its size as text.
+  constexpr std::uint64_t kMaxSide = std::uint64_t{1} << 20;
+  std::optional<std::pair<std::uint64_t, std::uint64_t>> size;
+  if (const auto png = png_size(path)) size = std::pair<std::uint64_t, std::uint64_t>(*png);
+  if (!size) size = pnm_size(path);
+  if (size && (size->first * size->second > kMaxPixels || size->first > kMaxSide ||
+               size->second > kMaxSide)) {
     throw std::invalid_argument(
         "image '" + path + "' is " + std::to_string(size->first) + "x" +
         std::to_string(size->second) +
-        " pixels, more than the 2^30 (1073741824) pixels an image may have");
+        " pixels by its header, more than an image may have (2^30 = 1073741824 pixels, 2^20 "
+        "per side)");
   }
-  cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);
+  cv::Mat image;
+  try {
+    image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);
+  } catch (const cv::Exception& error) {
+    throw std::invalid_argument("image '" + path + "' could not be read as an image (OpenCV: " +
+                                printable(error.err, 200) + ")");
+  }
   if (image.empty())
     throw std::invalid_argument("image '" + path + "' could not be read as an image");
   return image;

@@ -69,6 +69,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
        "--time-limit: expected a finite number in (0, 1e+07], got '0'"},
       {"c2f-bench-segment", "run set name --configs nope",
        "--configs: unknown configuration 'nope'"},
+      {"c2f-bench-segment", "run set name --configs ''",
+       "--configs: expected a comma-separated list of configurations or all, got ''"},
       {"c2f-bench-segment", "run set name --alpha 1",
        "--alpha: expected a finite number in [0, 1), got '1'"},
       {"c2f-bench-segment", "run set name --memory -1",
@@ -101,6 +103,33 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
     INFO(tool << " " << arguments << "\n" << r.output);
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::Contains(tool + ": error: ") && Catch::Contains(expected));
+  }
+}
+
+TEST_CASE("a rows file with a NaN energy or a garbled number is not summarised",
+          "[bench][cli][malformed]") {
+  const std::string bench = C2F_BENCH_DIR;
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-bench-rows";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto rows = [&](const char* name, const std::string& row) {
+    std::ofstream(dir / name) << "image\tpixels\tlabels\tconfig\tcoop_energy\terror\tseconds\tsteps\t"
+                                 "reason\treach_seconds\treach_ratio\tdeadline_error_flat\t"
+                                 "deadline_error_c2f\n"
+                              << row << "\n";
+    return (dir / name).string();
+  };
+  const std::string nan_energy =
+      rows("nan.tsv", "fruits\t100\t3\tflat\tnan\t0.1\t2.0\t10\tconverged\tnan\tnan\t0.1\t0.1");
+  const std::string garbled =
+      rows("garbled.tsv", "fruits\t100\t3\tflat\t12x\t0.1\t2.0\t10\tconverged\t1\t1\t0.1\t0.1");
+  for (const auto& [file, expected] :
+       {std::pair{nan_energy, "row 'fruits', column coop_energy: expected a finite number, got 'nan'"},
+        std::pair{garbled, "row 'fruits', column coop_energy: expected a finite number, got '12x'"}}) {
+    const auto r = c2f::test::run_tool(bench + "/c2f-bench-segment", "summarize " + file);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(expected));
   }
 }
 

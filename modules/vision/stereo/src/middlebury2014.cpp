@@ -21,7 +21,7 @@ ErrorMeasure middlebury2014_measure(Middlebury2014Size size) {
 }
 
 int parse_ndisp(std::string_view calibration, const std::string& source) {
-  std::istringstream in{std::string(calibration)};
+  std::istringstream in{std::string(without_byte_order_mark(calibration))};
   std::string line;
   int ndisp = 0;
   for (int number = 1; std::getline(in, line); ++number) {

@@ -15,8 +15,9 @@ std::string_view without_byte_order_mark(std::string_view text) noexcept;
 /// Whether `text` starts with the gzip magic bytes (1F 8B): a compressed file, not text.
 bool is_gzip(std::string_view text) noexcept;
 
-/// `text` as it can be shown inside an error message: control bytes (a NUL, an escape) as
-/// \xNN, and text longer than `max_bytes` cut with "...".
+/// `text` as it can be shown inside an error message: control bytes (a NUL, an escape, C1
+/// controls) and bytes that are no well-formed UTF-8 as \xNN, well-formed UTF-8 as it is, and
+/// text longer than `max_bytes` cut with "...".
 std::string printable(std::string_view text, std::size_t max_bytes = 60);
 
 }  // namespace c2f
