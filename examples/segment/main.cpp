@@ -156,6 +156,7 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
 
+    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
     check_paths(command);
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);

@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     const auto parsed = examples::parse_solve_command(argc, argv);
     if (!parsed) return 0;
     const examples::SolveCommand& command = *parsed;
+    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
 
     const std::vector<std::string> owned = {"labeling.mpe", "trace.csv", "summary.txt"};
     examples::check_output_paths(

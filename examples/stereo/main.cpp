@@ -214,6 +214,7 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     examples::StereoCommand command = *parsed;
 
+    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
     check_paths(command);
     const StereoScene scene = load_input(command);
     // Outputs are staged and moved into place together at the end: a failed or crashed run

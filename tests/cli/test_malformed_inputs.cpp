@@ -244,6 +244,11 @@ std::vector<Case> stereo_cases() {
        {"image '", "huge-header.png' is 40000x30000 pixels by its header, more than an image "
                    "may have"}},
       {"stereo",
+       "{dir}/big.png {right} -o {out}/stereo --memory 0.01",
+       2,
+       {"image '", "big.png' needs 45.8 MiB decoded (4000x3000 pixels by its header), more than "
+                   "the 10.2 MiB the run's memory budget allows for one input"}},
+      {"stereo",
        "{dir}/huge-header.ppm {right} -o {out}/stereo",
        2,
        {"image '", "huge-header.ppm' is 999999999x999999999 pixels by its header"}},

@@ -7,8 +7,10 @@
 #include <cerrno>
 #include <cstring>
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/memory_need.hpp"
 
 namespace c2f {
@@ -33,6 +35,29 @@ struct Descriptor {
 };
 
 }  // namespace
+
+namespace {
+
+std::atomic<std::size_t> input_limit{0};  // 0: not set
+
+}  // namespace
+
+void set_input_memory_limit(std::size_t bytes) noexcept { input_limit = bytes; }
+
+std::size_t input_memory_limit() {
+  if (const std::size_t set = input_limit.load(); set != 0) return set;
+  return default_memory_budget().ceiling();
+}
+
+void require_input_memory(const std::string& path, std::string_view what, double bytes,
+                          std::string_view how) {
+  const std::size_t limit = input_memory_limit();
+  if (bytes <= static_cast<double>(limit)) return;
+  throw std::invalid_argument(std::string(what) + " '" + path + "' needs " + format_bytes(bytes) +
+                              " " + std::string(how) + ", more than the " +
+                              format_bytes(static_cast<double>(limit)) +
+                              " the run's memory budget allows for one input");
+}
 
 std::string why_not_a_file(const std::string& path) {
   if (path.empty()) return "is an empty path";

@@ -84,6 +84,12 @@ cv::Mat load_as_stored(const std::string& path, int flags) {
         " pixels by its header, more than an image may have (2^30 = 1073741824 pixels, 2^20 "
         "per side)");
   }
+  // Decoded, at most 4 bytes a pixel (8-bit colour and alpha; 16-bit grey takes 2).
+  if (size) {
+    require_input_memory(path, "image", 4.0 * static_cast<double>(size->first * size->second),
+                         "decoded (" + std::to_string(size->first) + "x" +
+                             std::to_string(size->second) + " pixels by its header)");
+  }
   cv::Mat image;
   try {
     image = cv::imread(path, cv::IMREAD_ANYDEPTH | flags);

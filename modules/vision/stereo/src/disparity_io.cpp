@@ -1,5 +1,6 @@
 #include "c2f/vision/stereo/disparity_io.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -129,7 +130,8 @@ cv::Mat read_pfm(const std::string& path) {
   constexpr std::size_t kMaxPfmBytes = (std::size_t{12} << 30) + 4096;
   std::string bytes;
   try {
-    bytes = read_input_file(path, "PFM file", kMaxPfmBytes);
+    // The file's bytes and the map they decode to, of the same size.
+    bytes = read_input_file(path, "PFM file", std::min(kMaxPfmBytes, input_memory_limit() / 2));
   } catch (const std::invalid_argument& error) {
     throw std::runtime_error(error.what());  // read_pfm's contract: runtime_error
   }

@@ -24,6 +24,18 @@ std::string why_not_a_file(const std::string& path);
 /// naming it when reading fails.
 std::string read_input_file(const std::string& path, std::string_view what, std::size_t max_bytes);
 
+/// The most memory reading one input may take (a decoded image by its header's size, a PFM, a
+/// UAI model's declared costs): the run's memory budget. The tools set it from --memory before
+/// they read anything; until it is set, the machine's default budget's ceiling
+/// (default_memory_budget). Process-wide, read by every loader.
+void set_input_memory_limit(std::size_t bytes) noexcept;
+[[nodiscard]] std::size_t input_memory_limit();
+
+/// Throws std::invalid_argument "<what> '<path>' needs <bytes> <how>, more than the <limit> the
+/// run's memory budget allows for one input" when `bytes` exceeds input_memory_limit().
+void require_input_memory(const std::string& path, std::string_view what, double bytes,
+                          std::string_view how);
+
 /// The size bound for small text inputs people write by hand or tools write as tables
 /// (calib.txt, scene tables, bench rows, traces): 64 MiB.
 inline constexpr std::size_t kMaxTextInputBytes = std::size_t{64} << 20;
