@@ -31,7 +31,9 @@ Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
     schedule =
         model.stereo ? vision::parse_stereo_schedule(text) : Schedule::parse(text, presets());
   } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("schedule: ") + error.what());
+    // The parser's messages begin "schedule: " already.
+    const std::string message = error.what();
+    throw py::value_error(message.rfind("schedule: ", 0) == 0 ? message : "schedule: " + message);
   }
   if (const std::string problem = schedule.validate(model.energy.num_labels()); !problem.empty())
     throw py::value_error("schedule: " + problem);

@@ -233,3 +233,16 @@ def test_a_binary_file_read_as_uai_is_a_value_error_with_a_message(tmp_path):
     message = str(caught.value)
     assert "binary.uai: token 1: network type" in message
     assert "\x1b" not in message and "\x00" not in message  # control bytes escaped
+
+
+def test_control_bytes_in_names_reach_messages_escaped(rng):
+    energy = c2f.Energy.grid(rng.random((3, 4, 2)))
+    for kwargs, words in [
+        (dict(schedule="cp:1,1\x00zz"), r"schedule: level 'cp:1,1\\x00zz'"),
+        (dict(solver="exp\x00x"), r"solver: unknown solver 'exp\\x00x'"),
+        (dict(maxflow="\x1b[2J"), r"maxflow: unknown max-flow backend '\\x1B\[2J'"),
+    ]:
+        with pytest.raises(ValueError, match=words) as caught:
+            c2f.solve(energy, **kwargs)
+        assert "\x00" not in str(caught.value) and "\x1b" not in str(caught.value)
+        assert not str(caught.value).startswith("schedule: schedule:")

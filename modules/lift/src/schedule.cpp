@@ -7,13 +7,14 @@
 #include <stdexcept>
 
 #include "c2f/core/number_text.hpp"
+#include "c2f/core/text_input.hpp"
 
 namespace c2f {
 
 namespace {
 
 [[noreturn]] void bad(std::string_view token, const std::string& why) {
-  throw std::invalid_argument("schedule: level '" + std::string(token) + "': " + why);
+  throw std::invalid_argument("schedule: level '" + printable(token) + "': " + why);
 }
 
 std::vector<std::string> split(std::string_view text, char separator) {
@@ -27,7 +28,7 @@ std::vector<std::string> split(std::string_view text, char separator) {
 
 double number(std::string_view token, const std::string& text) {
   const std::optional<double> value = parse_real(text);
-  if (!value) bad(token, "'" + text + "' is not a number");
+  if (!value) bad(token, "'" + printable(text) + "' is not a number");
   return *value;
 }
 
@@ -37,10 +38,10 @@ int whole_number(std::string_view token, const std::string& text, int min) {
   const double real = number(token, text);  // names text that is no number at all
   const bool too_large = value ? *value > kMax : real > static_cast<double>(kMax);
   if (too_large && real == std::floor(real)) {
-    bad(token, "'" + text + "' is too large (at most " + std::to_string(kMax) + ")");
+    bad(token, "'" + printable(text) + "' is too large (at most " + std::to_string(kMax) + ")");
   }
   if (!value || *value < min || *value > kMax) {
-    bad(token, "'" + text + "' must be a whole number >= " + std::to_string(min));
+    bad(token, "'" + printable(text) + "' must be a whole number >= " + std::to_string(min));
   }
   return static_cast<int>(*value);
 }

@@ -7,11 +7,13 @@
 #include <string>
 #include <string_view>
 
+#include "c2f/core/text_input.hpp"
+
 namespace c2f {
 
 /// The enumerator e of `all` with to_string(e) == text (to_string is found by argument-
 /// dependent lookup). Otherwise throws std::invalid_argument
-/// "unknown <what> '<text>' (expected a, b or c)".
+/// "unknown <what> '<text>' (expected a, b or c)", the text shown by printable().
 template <class Enum, std::size_t N>
 Enum enum_from_string(std::string_view text, const Enum (&all)[N], std::string_view what) {
   std::string expected;
@@ -20,7 +22,7 @@ Enum enum_from_string(std::string_view text, const Enum (&all)[N], std::string_v
     if (i > 0) expected += i + 1 == N ? " or " : ", ";
     expected += to_string(all[i]);
   }
-  throw std::invalid_argument("unknown " + std::string(what) + " '" + std::string(text) +
+  throw std::invalid_argument("unknown " + std::string(what) + " '" + printable(text) +
                               "' (expected " + expected + ")");
 }
 
