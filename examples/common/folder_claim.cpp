@@ -194,8 +194,9 @@ FolderClaim::FolderClaim(const fs::path& folder, const std::string& tool,
 void FolderClaim::write_marker(bool with_process) {
   std::string text = tool_ + "\n" + (record_ ? record_text(*record_) : std::string());
   if (with_process) text += "process " + std::to_string(::getpid()) + "\n";
-  if (::ftruncate(fd_, 0) != 0 ||
-      ::pwrite(fd_, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size())) {
+  // Written over the old text, then cut to length: never empty, even if the run dies between.
+  if (::pwrite(fd_, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()) ||
+      ::ftruncate(fd_, static_cast<off_t>(text.size())) != 0) {
     fail(folder_, "cannot have its marker written: " + std::string(std::strerror(errno)));
   }
 }

@@ -4,6 +4,7 @@
 // naming it. toulbar2 must also read every model c2f writes.
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -247,4 +248,47 @@ TEST_CASE("a trace into a pipe nobody reads is an error that leaves no folder",
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.output, Catch::Contains("c2f-solve: error: ") && Catch::Contains("failed"));
   CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_CASE("a folder the run cannot write or clean is refused before the run, leaving nothing",
+          "[solve][cli][malformed]") {
+  // Permissions bind root nowhere: as root the runs are made as nobody (setpriv), whose folder
+  // this is. A folder of mode 555 left one more staging folder behind at every run (exit 0); a
+  // subfolder of mode 000 failed the run and left one too.
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-permissions";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  c2f::test::Rng rng(4);
+  write_model(c2f::test::random_grid_energy(rng, 4, 3, 2), dir / "grid.uai");
+  const bool root = ::geteuid() == 0;
+  const std::string as_user =
+      root ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : std::string();
+  const auto solve_as_user = [&] {
+    return c2f::test::run_tool(as_user + C2F_SOLVE_BINARY,
+                               (dir / "grid.uai").string() + " -o " + (dir / "out").string() + " -q");
+  };
+  if (root) REQUIRE(::chown(dir.c_str(), 65534, 65534) == 0);
+  REQUIRE(solve_as_user().exit_code == 0);
+  const auto leftovers = [&] {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(dir))
+      count += entry.path().filename().string().rfind(".out.c2f-", 0) == 0;
+    return count;
+  };
+  fs::permissions(dir / "out", fs::perms(0555));
+  auto r = solve_as_user();
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("cannot be written (Permission denied)"));
+  CHECK(leftovers() == 0);
+  fs::permissions(dir / "out", fs::perms(0755));
+  fs::create_directories(dir / "out" / "locked");
+  if (root) REQUIRE(::chown((dir / "out" / "locked").c_str(), 65534, 65534) == 0);
+  fs::permissions(dir / "out" / "locked", fs::perms::none);
+  r = solve_as_user();
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("locked', a folder this run cannot read"));
+  CHECK(leftovers() == 0);
+  fs::permissions(dir / "out" / "locked", fs::perms(0755));
 }

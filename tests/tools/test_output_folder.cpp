@@ -115,6 +115,9 @@ TEST_CASE("OutputFolder replaces only the files its runs wrote, and keeps what a
   CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", owned), Catch::Contains("holds 'summary.txt'"));
   CHECK(read_text(dir / "summary.txt") == "the user's summary");
   fs::remove(dir / "summary.txt");
+  // A user's folder named like a staging folder of earlier versions is the user's: kept.
+  fs::create_directories(dir / ".c2f-staging-1-0");
+  write_text(dir / ".c2f-staging-1-0" / "mine.txt", "the user's");
   // A file made in the folder while a run commits is in the new version.
   {
     OutputFolder output(dir, "c2f-test", owned);
@@ -123,6 +126,7 @@ TEST_CASE("OutputFolder replaces only the files its runs wrote, and keeps what a
     output.commit();
   }
   CHECK(read_text(dir / "made-meanwhile.txt") == "the user's");
+  CHECK(read_text(dir / ".c2f-staging-1-0" / "mine.txt") == "the user's");
   CHECK(read_text(dir / "summary.txt") == "new");
 }
 
