@@ -14,6 +14,17 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 
+def pybind11_location() -> list:
+    """-Dpybind11_DIR for CMake when the building interpreter has a pybind11 package that carries
+    its CMake files (pip's pybind11 in an isolated build); Debian's are found by CMake itself."""
+    try:
+        import pybind11
+    except ImportError:
+        return []
+    directory = pathlib.Path(pybind11.get_cmake_dir())
+    return [f"-Dpybind11_DIR={directory}"] if (directory / "pybind11Config.cmake").exists() else []
+
+
 class CMakeExtension(Extension):
     def __init__(self, name: str) -> None:
         super().__init__(name, sources=[])
@@ -31,6 +42,7 @@ class CMakeBuild(build_ext):
             "-DC2F_PYTHON=ON", "-DC2F_BUILD_TESTS=OFF", "-DC2F_BUILD_EXAMPLES=OFF",
             "-DC2F_BUILD_BENCHMARKS=OFF", "-DC2F_BUILD_FUZZERS=OFF", "-DC2F_INSTALL=OFF",
         ]
+        configure += pybind11_location()
         subprocess.run(configure, check=True)
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
         subprocess.run(["cmake", "--build", str(build), "--target", "c2f_python", "-j", jobs],
