@@ -321,9 +321,8 @@ int summarize(const std::string& path) {
   const auto rows = bench::read_summary_rows(path, "scene\t", std::size(kColumns));
   // Energies and run times are numbers; rates a scene has not (KITTI's non-occluded), times
   // never reached and preparations not measured may be nan.
-  bench::require_row_numbers(rows, path, kColumns,
-                             {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 21, 23,
-                              24, 25, 26, 27, 28},
+  bench::require_row_numbers(rows, path, kColumns, {1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12,
+                                                    13, 14, 15, 16, 17, 21, 23, 24, 25, 26, 27, 28},
                              {4, 5, 10, 11, 12, 13, 14, 15, 16, 17, 23, 24, 25, 26, 27, 28});
   auto number = [](const std::string& s) {
     return s == "nan" || s == "-nan" ? std::nan("") : std::stod(s);

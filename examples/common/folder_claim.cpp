@@ -73,7 +73,8 @@ std::optional<FileRecord> parse_record(const std::string& marker_text) {
     if (space <= 5) continue;
     const std::string name = line.substr(5, space - 5);
     const std::string number = line.substr(space + 1);
-    if (name.empty() || number.empty() || number.find_first_not_of("0123456789") != std::string::npos)
+    if (name.empty() || number.empty() ||
+        number.find_first_not_of("0123456789") != std::string::npos)
       continue;
     (*record)[name].insert(static_cast<ino_t>(std::stoull(number)));
   }

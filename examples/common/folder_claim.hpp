@@ -35,9 +35,9 @@ class FolderClaim {
 
   /// Claims `folder` (a resolved, absolute path) for `tool`, creating it (and its parents) when
   /// absent. `links_elsewhere` counts, once the lock is held, the hard links to the marker that
-  /// runs' staging folders hold (OutputFolder knows them). Throws std::runtime_error naming the folder when
-  /// it cannot be created; when it exists, is not empty and has no marker (the user's own
-  /// folder); when its marker is not a regular file, has a hard link other than the runs' (a
+  /// runs' staging folders hold (OutputFolder knows them). Throws std::runtime_error naming the
+  /// folder when it cannot be created; when it exists, is not empty and has no marker (the user's
+  /// own folder); when its marker is not a regular file, has a hard link other than the runs' (a
   /// link to a file of the user's), is empty while the folder holds files, or does not name a c2f
   /// tool; when it names another tool; and when another run holds it (naming that run's process),
   /// unless `wait_limit` is given: then it waits for that run, saying so on stderr once, for

@@ -170,7 +170,8 @@ OutputFolder::OutputFolder(const fs::path& folder, const std::string& tool,
     if (pattern.find('*') == std::string::npos) fixed_names.push_back(pattern);
   refuse_taken_names(fixed_names, record);
   fs::create_directory(staging_, error);
-  if (!error) fs::create_hard_link(folder_ / FolderClaim::kMarker, staging_ / FolderClaim::kMarker, error);
+  if (!error)
+    fs::create_hard_link(folder_ / FolderClaim::kMarker, staging_ / FolderClaim::kMarker, error);
   if (error) {
     remove_tree(staging_);
     refuse(folder, "cannot have its new version staged beside it ('" + staging_.string() +
@@ -276,7 +277,8 @@ std::vector<std::string> OutputFolder::commit() {
   }
   FileRecord during = record;
   if (old_record)
-    for (const auto& [name, inodes] : *old_record) during[name].insert(inodes.begin(), inodes.end());
+    for (const auto& [name, inodes] : *old_record)
+      during[name].insert(inodes.begin(), inodes.end());
   claim_->write_record(during);
   swap_in(staging_, folder_, retired_);
   committed_ = true;  // from here on the new version is in place

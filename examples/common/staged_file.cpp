@@ -70,9 +70,9 @@ StagedFile::StagedFile(const fs::path& target) : target_(target) {
     }
     const fs::path resolved = fs::weakly_canonical(target, error);
     if (error) {
-      throw std::invalid_argument("'" + target.string() +
-                                  "' is a symbolic link that cannot be followed: " +
-                                  error.message());
+      throw std::invalid_argument(
+          "'" + target.string() +
+          "' is a symbolic link that cannot be followed: " + error.message());
     }
     target_ = resolved;
   }

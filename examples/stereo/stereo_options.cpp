@@ -86,8 +86,10 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
         "RIGHT");
   }
   if (command.pair.gt_divisor > 0.0 && command.pair.gt_divisor < 1.0 / 1024) {
-    throw std::invalid_argument("--gt-divisor: expected 0 (by the file) or a number in [1/1024, "
-                                "65536], got " + format_real(command.pair.gt_divisor));
+    throw std::invalid_argument(
+        "--gt-divisor: expected 0 (by the file) or a number in [1/1024, "
+        "65536], got " +
+        format_real(command.pair.gt_divisor));
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
@@ -116,11 +118,10 @@ void set_labels(StereoCommand& command, int labels) {
 void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene) {
   if (command.labels != 0) return;
   if (scene.disparity_range > 256) {
-    throw std::invalid_argument((command.scene.empty() ? "LEFT's calib.txt"
-                                                       : "--scene " + command.scene) +
-                                ": its disparity range is " +
-                                std::to_string(scene.disparity_range) +
-                                " labels, more than 256: give --labels (or --downscale)");
+    throw std::invalid_argument(
+        (command.scene.empty() ? "LEFT's calib.txt" : "--scene " + command.scene) +
+        ": its disparity range is " + std::to_string(scene.disparity_range) +
+        " labels, more than 256: give --labels (or --downscale)");
   }
   set_labels(command, vision::label_count(scene, kDefaultLabels));
 }

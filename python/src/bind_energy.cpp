@@ -147,8 +147,8 @@ void bind_energy(py::module_& module) {
                            "A pairwise cost of two labels, shared by edges and scaled by each "
                            "edge's weight.")
       .def_static("potts", &PairwiseTerm::potts, "cost(a, b) = 0 if a == b else 1.")
-      .def_static(
-          "truncated_linear", &truncated_linear, py::arg("truncation"), "cost(a, b) = min(|a - b|, truncation); truncation > 0.")
+      .def_static("truncated_linear", &truncated_linear, py::arg("truncation"),
+                  "cost(a, b) = min(|a - b|, truncation); truncation > 0.")
       .def_static("truncated_quadratic", &truncated_quadratic, py::arg("truncation"),
                   py::arg("num_labels"),
                   "cost(a, b) = min((a - b)^2, truncation), as a num_labels x num_labels table.")

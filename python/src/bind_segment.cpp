@@ -120,7 +120,8 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
   const int threads = static_cast<int>(integer_argument(threads_argument, "threads", 0, 1024));
   const double time_limit = real_argument(time_limit_argument, "time_limit");
   const long max_steps = integer_argument(max_steps_argument, "max_steps", 0, LONG_MAX);
-  const int plateau = static_cast<int>(integer_argument(plateau_argument, "plateau", -1, INT32_MAX));
+  const int plateau =
+      static_cast<int>(integer_argument(plateau_argument, "plateau", -1, INT32_MAX));
   const MemoryBudget budget = memory_budget_from(memory);
   if (method != "coop" && method != "potts")
     throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");

@@ -28,9 +28,8 @@ PYBIND11_MODULE(_c2f, module) {
   // odd bytes as \xNN: pybind11's own translation raised the exception with an empty message.
   pybind11::register_exception_translator([](std::exception_ptr raised) {
     const auto set = [](PyObject* type, const char* message) {
-      PyObject* text =
-          PyUnicode_DecodeUTF8(message, static_cast<Py_ssize_t>(std::strlen(message)),
-                               "backslashreplace");
+      PyObject* text = PyUnicode_DecodeUTF8(message, static_cast<Py_ssize_t>(std::strlen(message)),
+                                            "backslashreplace");
       PyErr_SetObject(type, text);
       Py_XDECREF(text);
     };

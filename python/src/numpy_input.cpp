@@ -60,11 +60,9 @@ bool is_integer(const py::handle& object) {
 
 long long integer_argument(const py::handle& object, const std::string& name, long long lowest,
                            long long highest) {
-  const std::string range =
-      "[" + std::to_string(lowest) + ", " + std::to_string(highest) + "]";
+  const std::string range = "[" + std::to_string(lowest) + ", " + std::to_string(highest) + "]";
   if (!is_integer(object)) {
-    throw py::type_error(name + ": expected an integer in " + range + ", got " +
-                         type_name(object));
+    throw py::type_error(name + ": expected an integer in " + range + ", got " + type_name(object));
   }
   const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(object.ptr()));
   if (!value) throw py::error_already_set();
@@ -79,10 +77,11 @@ long long integer_argument(const py::handle& object, const std::string& name, lo
 
 double real_argument(const py::handle& object, const std::string& name) {
   const py::object numpy_number = py::module_::import("numpy").attr("number");
-  const bool number = !py::isinstance<py::bool_>(object) &&
-                      (PyFloat_Check(object.ptr()) || PyLong_Check(object.ptr()) ||
-                       (py::isinstance(object, numpy_number) &&
-                        !py::isinstance(object, py::module_::import("numpy").attr("complexfloating"))));
+  const bool number =
+      !py::isinstance<py::bool_>(object) &&
+      (PyFloat_Check(object.ptr()) || PyLong_Check(object.ptr()) ||
+       (py::isinstance(object, numpy_number) &&
+        !py::isinstance(object, py::module_::import("numpy").attr("complexfloating"))));
   if (!number) throw py::type_error(name + ": expected a real number, got " + type_name(object));
   const double value = PyFloat_AsDouble(object.ptr());
   if (value == -1.0 && PyErr_Occurred()) {

@@ -20,7 +20,8 @@ namespace py = pybind11;
 /// numpy makes it. Throws TypeError naming `name` and `what` was expected for anything else, for
 /// a sequence numpy cannot make an array of (a ragged nested list), and for an object array
 /// (entries that are not numbers). Every array argument of the package passes through here.
-py::array array_argument(const py::handle& object, const std::string& name, const std::string& what);
+py::array array_argument(const py::handle& object, const std::string& name,
+                         const std::string& what);
 
 /// `object` as an integer in [lowest, highest]: a Python int or a numpy integer (a bool is
 /// refused). Throws TypeError naming `name` for anything else, ValueError naming `name` and the

@@ -52,7 +52,9 @@ ReleasedGil::~ReleasedGil() {
   r.ended.notify_all();
 }
 
-bool interpreter_exiting() noexcept { return regions().exiting; }
+bool interpreter_exiting() noexcept {
+  return regions().exiting;
+}
 
 void register_exit_hook() {
   py::module_::import("atexit").attr("register")(py::cpp_function(&wait_for_regions));

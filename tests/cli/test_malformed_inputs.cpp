@@ -241,13 +241,15 @@ std::vector<Case> stereo_cases() {
       {"stereo",
        "{dir}/huge-header.png {right} -o {out}/stereo",
        2,
-       {"image '", "huge-header.png' is 40000x30000 pixels by its header, more than an image "
-                   "may have"}},
+       {"image '",
+        "huge-header.png' is 40000x30000 pixels by its header, more than an image "
+        "may have"}},
       {"stereo",
        "{dir}/big.png {right} -o {out}/stereo --memory 0.01",
        2,
-       {"image '", "big.png' needs 45.8 MiB decoded (4000x3000 pixels by its header), more than "
-                   "the 10.2 MiB the run's memory budget allows for one input"}},
+       {"image '",
+        "big.png' needs 45.8 MiB decoded (4000x3000 pixels by its header), more than "
+        "the 10.2 MiB the run's memory budget allows for one input"}},
       {"stereo",
        "{dir}/huge-header.ppm {right} -o {out}/stereo",
        2,
@@ -367,7 +369,10 @@ std::vector<Case> stereo_cases() {
        "-o {out}/stereo --scene Nowhere --data {dir}/scenes-good",
        2,
        {"no scene 'Nowhere' in ", "scenes.csv (have: Pair)"}},
-      {"stereo", scene + "missing-folder", 2, {"scene table '", "missing-folder/scenes.csv' does not exist"}},
+      {"stereo",
+       scene + "missing-folder",
+       2,
+       {"scene table '", "missing-folder/scenes.csv' does not exist"}},
       {"stereo",
        scene + "scenes-fifo",
        2,

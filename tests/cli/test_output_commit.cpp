@@ -106,7 +106,9 @@ TEST_CASE("two c2f-stereo runs into one folder at once: the second is refused by
   REQUIRE_FALSE(text.empty());
   CHECK_THAT(text, Catch::Contains("10 labels"));  // the first run's, whole
   std::ifstream marker(scene.out / ".c2f-owner");
-  CHECK(std::string((std::istreambuf_iterator<char>(marker)), {}).rfind("c2f-stereo\nrecord\n", 0) == 0);
+  CHECK(
+      std::string((std::istreambuf_iterator<char>(marker)), {}).rfind("c2f-stereo\nrecord\n", 0) ==
+      0);
 }
 
 TEST_CASE("a run killed at any step of its commit leaves one run's folder, never a mix",
@@ -192,7 +194,7 @@ TEST_CASE("a user's folder standing where an output goes is refused, never repla
   INFO(r.output);
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.output, Catch::Contains("', which this run writes and which no earlier run of "
-                                      "c2f-stereo wrote"));
+                                       "c2f-stereo wrote"));
   CHECK(read_folder(scene.out) == before);
   CHECK(fs::is_directory(scene.out / "trace.csv" / "inside"));
   CHECK(c2f::test::run_leftovers(scene.out) == 0);
@@ -204,10 +206,10 @@ TEST_CASE("files a user's process creates while runs commit are never lost", "[c
   const Scene scene = make_scene("c2f-test-commit-race");
   REQUIRE(c2f::test::run_tool(C2F_STEREO_BINARY, scene.inputs + " --labels 4").exit_code == 0);
   const std::string out = scene.out.string();
-  const auto r = run_shell("(for i in $(seq 1 600); do echo $i > " + out +
-                           "/user-$i.txt; done) & writer=$!; for run in $(seq 1 25); do " +
-                           C2F_STEREO_BINARY + " " + scene.inputs +
-                           " --labels 4 || exit 3; done; wait $writer");
+  const auto r =
+      run_shell("(for i in $(seq 1 600); do echo $i > " + out +
+                "/user-$i.txt; done) & writer=$!; for run in $(seq 1 25); do " + C2F_STEREO_BINARY +
+                " " + scene.inputs + " --labels 4 || exit 3; done; wait $writer");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   int found = 0;

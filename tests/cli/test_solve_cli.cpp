@@ -264,8 +264,8 @@ TEST_CASE("a folder the run cannot write or clean is refused before the run, lea
   const std::string as_user =
       root ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : std::string();
   const auto solve_as_user = [&] {
-    return c2f::test::run_tool(as_user + C2F_SOLVE_BINARY,
-                               (dir / "grid.uai").string() + " -o " + (dir / "out").string() + " -q");
+    return c2f::test::run_tool(as_user + C2F_SOLVE_BINARY, (dir / "grid.uai").string() + " -o " +
+                                                               (dir / "out").string() + " -q");
   };
   if (root) REQUIRE(::chown(dir.c_str(), 65534, 65534) == 0);
   REQUIRE(solve_as_user().exit_code == 0);

@@ -50,7 +50,8 @@ TEST_CASE("the input layer reads regular files and refuses the rest by name", "[
   const std::string text = (folder.path / "trace.csv").string();
   std::ofstream(text) << "time_s,level\n0.5,0\n";
   CHECK(read_input_file(text, "trace", 1024) == "time_s,level\n0.5,0\n");
-  CHECK(refusal(text, 10) == "trace '" + text + "' is 19 bytes; a trace of at most 10 bytes is expected");
+  CHECK(refusal(text, 10) ==
+        "trace '" + text + "' is 19 bytes; a trace of at most 10 bytes is expected");
 
   const std::string fifo = (folder.path / "pipe").string();
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);

@@ -23,7 +23,8 @@ TEST_CASE("text helpers: byte-order mark, gzip, printable", "[text]") {
   CHECK(printable("caf\xC3\xA9") == "caf\xC3\xA9");  // UTF-8 stays
   CHECK(printable(std::string(100, 'x'), 10) == "xxxxxxxxxx...");
   // Bytes that are no UTF-8, and C1 controls (CSI, U+009B), are escaped; a message stays text.
-  CHECK(printable("\xFF" "caf\xC3\xA9 \xC2\x9B[2J \xE2\x82") ==
+  CHECK(printable("\xFF"
+                  "caf\xC3\xA9 \xC2\x9B[2J \xE2\x82") ==
         "\\xFFcaf\xC3\xA9 \\xC2\\x9B[2J \\xE2\\x82");
   CHECK(printable("\xED\xA0\x80") == "\\xED\\xA0\\x80");  // a surrogate
 }

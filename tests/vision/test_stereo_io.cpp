@@ -58,8 +58,9 @@ TEST_CASE("PFM and 16-bit PNG disparity files round-trip", "[stereo][io]") {
   CHECK(first == disparity.at<float>(2, 0));
   CHECK_THROWS_WITH(read_pfm((dir / "d.png").string()),
                     Catch::Contains("is not a single-channel PFM file"));
-  CHECK_THROWS_WITH(read_pfm((dir / "missing.pfm").string()),
-                    Catch::Contains("PFM file '" + (dir / "missing.pfm").string() + "' does not exist"));
+  CHECK_THROWS_WITH(
+      read_pfm((dir / "missing.pfm").string()),
+      Catch::Contains("PFM file '" + (dir / "missing.pfm").string() + "' does not exist"));
 }
 
 TEST_CASE("bad-pixel rates count known and non-occluded pixels", "[stereo][evaluation]") {
@@ -124,8 +125,9 @@ TEST_CASE("GT loading, the left-right check and the scene table", "[stereo][midd
   table << "2003,Broken,toy,four,1,quarter,4,left.png\n";
   table.close();
   CHECK_THROWS_WITH(read_scene_table((dir / "scenes.csv").string()), Catch::Contains("line 3"));
-  CHECK_THROWS_WITH(read_scene_table((dir / "absent.csv").string()),
-                    Catch::Contains("scene table '" + (dir / "absent.csv").string() + "' does not exist"));
+  CHECK_THROWS_WITH(
+      read_scene_table((dir / "absent.csv").string()),
+      Catch::Contains("scene table '" + (dir / "absent.csv").string() + "' does not exist"));
   std::ofstream good(dir / "scenes.csv");
   good << "year,scene,dir,width,height,scale,gt_divisor,files\n2003,Toy,toy,4,1,quarter,4,left."
           "png right.png\n";

@@ -4,10 +4,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include "c2f/core/memory_budget.hpp"
@@ -42,7 +42,9 @@ std::atomic<std::size_t> input_limit{0};  // 0: not set
 
 }  // namespace
 
-void set_input_memory_limit(std::size_t bytes) noexcept { input_limit = bytes; }
+void set_input_memory_limit(std::size_t bytes) noexcept {
+  input_limit = bytes;
+}
 
 std::size_t input_memory_limit() {
   if (const std::size_t set = input_limit.load(); set != 0) return set;
@@ -70,8 +72,7 @@ std::string why_not_a_file(const std::string& path) {
   return special_kind(status.st_mode);
 }
 
-std::string read_input_file(const std::string& path, std::string_view what,
-                            std::size_t max_bytes) {
+std::string read_input_file(const std::string& path, std::string_view what, std::size_t max_bytes) {
   const std::string name = std::string(what) + " '" + path + "'";
   if (const std::string why = why_not_a_file(path); !why.empty())
     throw std::invalid_argument(name + " " + why);
@@ -82,7 +83,8 @@ std::string read_input_file(const std::string& path, std::string_view what,
   struct stat status {};
   if (::fstat(file.fd, &status) != 0)
     throw std::invalid_argument(name + " cannot be examined (" + std::strerror(errno) + ")");
-  if (!S_ISREG(status.st_mode)) throw std::invalid_argument(name + " " + special_kind(status.st_mode));
+  if (!S_ISREG(status.st_mode))
+    throw std::invalid_argument(name + " " + special_kind(status.st_mode));
   const auto size = static_cast<std::size_t>(status.st_size);
   if (size > max_bytes) {
     throw std::invalid_argument(name + " is " + format_bytes(static_cast<double>(size)) + "; a " +

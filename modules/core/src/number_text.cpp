@@ -40,7 +40,9 @@ std::optional<long long> parse_integer(std::string_view text) {
   return value;
 }
 
-std::string format_real(double value) { return c_format("%g", value); }
+std::string format_real(double value) {
+  return c_format("%g", value);
+}
 
 std::string c_format(const char* format, ...) {
   static const locale_t c_locale = newlocale(LC_ALL_MASK, "C", locale_t{});

@@ -1,6 +1,5 @@
 #include "c2f/core/text_input.hpp"
 
-
 namespace c2f {
 
 std::string_view without_byte_order_mark(std::string_view text) noexcept {

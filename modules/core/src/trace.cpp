@@ -23,7 +23,7 @@ TraceWriter::TraceWriter(std::ostream& out, ErrorFunction error, std::string nam
 
 ObserverDecision TraceWriter::operator()(const StepEvent& event) {
   *out_ << c_format("%.6f,%d,%ld,%.17g,%zu", event.time_s, event.level, event.step, event.energy,
-                     event.num_variables);
+                    event.num_variables);
   if (error_) {
     const Labeling ground = event.ground_labeling();
     *out_ << c_format(",%.9g", error_(ground));

@@ -136,11 +136,10 @@ PairwiseEnergy parse_uai(const std::string& whole, std::string_view source,
                         (pairwise ? 16.0 * labels * labels : 0.0) +
                         64.0 * static_cast<double>(num_factors) +
                         2.0 * static_cast<double>(whole.size());
-    budget->require(std::string(source) + " (" + std::to_string(num_variables) +
-                        " variables x " + std::to_string(num_labels) + " labels, " +
-                        std::to_string(num_factors) + " factors)",
-                    need < 1.8e19 ? std::optional<std::size_t>(static_cast<std::size_t>(need))
-                                  : std::nullopt);
+    budget->require(
+        std::string(source) + " (" + std::to_string(num_variables) + " variables x " +
+            std::to_string(num_labels) + " labels, " + std::to_string(num_factors) + " factors)",
+        need < 1.8e19 ? std::optional<std::size_t>(static_cast<std::size_t>(need)) : std::nullopt);
   }
   const auto L = static_cast<std::size_t>(num_labels);
   constexpr std::size_t kMaxCosts = std::size_t{1} << 30;  // 8 GiB of unary costs
@@ -222,7 +221,8 @@ void write_uai(const PairwiseEnergy& energy, std::ostream& out, const std::funct
                                     " and " + format_real(cost(k)) +
                                     " are too far apart for a UAI potential (spread > 708)");
       }
-      out << c_format("%.17g", value) << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
+      out << c_format("%.17g", value)
+          << (k + 1 < count && (k + 1) % static_cast<std::size_t>(L) != 0 ? ' ' : '\n');
     }
   };
   const auto labels = static_cast<std::size_t>(L);

@@ -48,8 +48,8 @@ std::optional<std::pair<std::uint64_t, std::uint64_t>> pnm_size(const std::strin
   std::size_t at = 2;
   std::uint64_t sides[2] = {0, 0};
   for (std::uint64_t& side : sides) {
-    while (at < header.size() && (std::isspace(static_cast<unsigned char>(header[at])) ||
-                                  header[at] == '#')) {
+    while (at < header.size() &&
+           (std::isspace(static_cast<unsigned char>(header[at])) || header[at] == '#')) {
       if (header[at] == '#') at = header.find('\n', at);  // a comment to the line's end
       if (at == std::string::npos) return std::nullopt;
       ++at;

@@ -90,13 +90,18 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
       {"c2f-bench-crossval", "run --plateau later", "--plateau: expected auto or sweep"},
       {"c2f-bench-crossval", "run --method annealing", "--method: unknown auxiliary-variable"},
       {"c2f-bench-crossval", "run --kmeans fast", "--kmeans: expected reference or plusplus"},
-      {"c2f-bench-crossval", "summarize /nonexistent.tsv", "rows file '/nonexistent.tsv' does not exist"},
+      {"c2f-bench-crossval", "summarize /nonexistent.tsv",
+       "rows file '/nonexistent.tsv' does not exist"},
       {"c2f-bench-crossval", "walk", "expected 'run' or 'summarize ROWS.tsv...'"},
       // A device is refused by the input layer before it is read.
-      {"c2f-bench-stereo", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
-      {"c2f-bench-segment", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
-      {"c2f-bench-expansion", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
-      {"c2f-bench-crossval", "summarize /dev/null", "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-stereo", "summarize /dev/null",
+       "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-segment", "summarize /dev/null",
+       "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-expansion", "summarize /dev/null",
+       "rows file '/dev/null' is not a regular file (a device)"},
+      {"c2f-bench-crossval", "summarize /dev/null",
+       "rows file '/dev/null' is not a regular file (a device)"},
   };
   for (const auto& [tool, arguments, expected] : cases) {
     const auto r = c2f::test::run_tool(bench + "/" + tool, arguments);
@@ -113,10 +118,11 @@ TEST_CASE("a rows file with a NaN energy or a garbled number is not summarised",
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const auto rows = [&](const char* name, const std::string& row) {
-    std::ofstream(dir / name) << "image\tpixels\tlabels\tconfig\tcoop_energy\terror\tseconds\tsteps\t"
-                                 "reason\treach_seconds\treach_ratio\tdeadline_error_flat\t"
-                                 "deadline_error_c2f\n"
-                              << row << "\n";
+    std::ofstream(dir / name)
+        << "image\tpixels\tlabels\tconfig\tcoop_energy\terror\tseconds\tsteps\t"
+           "reason\treach_seconds\treach_ratio\tdeadline_error_flat\t"
+           "deadline_error_c2f\n"
+        << row << "\n";
     return (dir / name).string();
   };
   const std::string nan_energy =
@@ -124,8 +130,10 @@ TEST_CASE("a rows file with a NaN energy or a garbled number is not summarised",
   const std::string garbled =
       rows("garbled.tsv", "fruits\t100\t3\tflat\t12x\t0.1\t2.0\t10\tconverged\t1\t1\t0.1\t0.1");
   for (const auto& [file, expected] :
-       {std::pair{nan_energy, "row 'fruits', column coop_energy: expected a finite number, got 'nan'"},
-        std::pair{garbled, "row 'fruits', column coop_energy: expected a finite number, got '12x'"}}) {
+       {std::pair{nan_energy,
+                  "row 'fruits', column coop_energy: expected a finite number, got 'nan'"},
+        std::pair{garbled,
+                  "row 'fruits', column coop_energy: expected a finite number, got '12x'"}}) {
     const auto r = c2f::test::run_tool(bench + "/c2f-bench-segment", "summarize " + file);
     INFO(r.output);
     CHECK(r.exit_code == 2);

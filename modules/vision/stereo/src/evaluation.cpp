@@ -14,10 +14,9 @@ std::string BadPixelRates::brief() const {
     return c_format("bad>1: all %.2f%% (bad>0.5 %.2f%%, bad>2 %.2f%%; no occlusion mask)",
                     100 * all[1], 100 * all[0], 100 * all[2]);
   }
-  return c_format(
-      "bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
-      100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0],
-      100 * nonoccluded[2], 100 * all[2]);
+  return c_format("bad>1: nonocc %.2f%%, all %.2f%% (bad>0.5 %.2f%%/%.2f%%, bad>2 %.2f%%/%.2f%%)",
+                  100 * nonoccluded[1], 100 * all[1], 100 * nonoccluded[0], 100 * all[0],
+                  100 * nonoccluded[2], 100 * all[2]);
 }
 
 BadPixelRates bad_pixel_rates(const cv::Mat& disparity, const cv::Mat& gt,

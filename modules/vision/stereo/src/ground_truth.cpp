@@ -89,8 +89,8 @@ GroundTruth load_ground_truth(const std::string& path, double divisor) {
     truth.measure = kitti_d1_measure();
     truth.convention = "KITTI 16-bit PNG (disparity x 256, 0 = unknown)";
   } else {
-    truth.convention = std::string(deep ? "16" : "8") + "-bit PNG divided by " +
-                       format_real(used) + " (0 = unknown)";
+    truth.convention = std::string(deep ? "16" : "8") + "-bit PNG divided by " + format_real(used) +
+                       " (0 = unknown)";
   }
   return truth;
 }

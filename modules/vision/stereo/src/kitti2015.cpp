@@ -31,8 +31,9 @@ StereoScene load_kitti2015_pair(const std::string& root, const std::string& id) 
   if (std::filesystem::exists(file("disp_occ_0"))) {
     const cv::Mat raw = load_single_channel_image(file("disp_occ_0"));
     if (raw.depth() != CV_16U) {
-      throw std::invalid_argument("GT '" + file("disp_occ_0") +
-                                  "' is an 8-bit PNG; KITTI's GT is a 16-bit PNG of disparity x 256");
+      throw std::invalid_argument(
+          "GT '" + file("disp_occ_0") +
+          "' is an 8-bit PNG; KITTI's GT is a 16-bit PNG of disparity x 256");
     }
     scene.gt = load_gt_disparity(file("disp_occ_0"), 256.0);  // 0 = unknown becomes NaN
     detail::require_view_size(scene.gt, scene.left, file("disp_occ_0"));

@@ -32,8 +32,10 @@ int parse_ndisp(std::string_view calibration, const std::string& source) {
     const auto where = "calibration '" + source + "' line " + std::to_string(number) + ": ";
     if (ndisp != 0) throw std::invalid_argument(where + "ndisp is given twice");
     if (!parsed || *parsed < 2 || *parsed > 65536) {
-      throw std::invalid_argument(where + "ndisp: expected an integer in [2, 65536] (one label "
-                                  "is no stereo), got '" + printable(value) + "'");
+      throw std::invalid_argument(where +
+                                  "ndisp: expected an integer in [2, 65536] (one label "
+                                  "is no stereo), got '" +
+                                  printable(value) + "'");
     }
     ndisp = static_cast<int>(*parsed);
   }

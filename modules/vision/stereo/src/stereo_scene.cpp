@@ -48,9 +48,9 @@ StereoScene load_stereo_pair(const StereoPairFiles& files) {
   const std::filesystem::path calibration =
       std::filesystem::path(files.left).parent_path() / "calib.txt";
   if (why_not_a_file(calibration.string()).empty()) {
-    scene.disparity_range = parse_ndisp(
-        read_input_file(calibration.string(), "calibration", kMaxTextInputBytes),
-        calibration.string());
+    scene.disparity_range =
+        parse_ndisp(read_input_file(calibration.string(), "calibration", kMaxTextInputBytes),
+                    calibration.string());
   }
   if (files.gt.empty()) return scene;
   GroundTruth truth = load_ground_truth(files.gt, files.gt_divisor);
@@ -65,8 +65,8 @@ StereoScene load_stereo_pair(const StereoPairFiles& files) {
     scene.nonoccluded = load_mask(files.mask);
     scene.nonoccluded_source = "official mask";
   } else if (!files.gt_right.empty()) {
-    scene.nonoccluded =
-        left_right_nonoccluded(scene.gt, load_ground_truth(files.gt_right, files.gt_divisor).disparity);
+    scene.nonoccluded = left_right_nonoccluded(
+        scene.gt, load_ground_truth(files.gt_right, files.gt_divisor).disparity);
     scene.nonoccluded_source = "left-right check";
   }
   if (!scene.nonoccluded.empty() && scene.nonoccluded.size() != scene.gt.size())
@@ -83,11 +83,10 @@ StereoScene downscale(StereoScene scene, int factor) {
                                 std::to_string(factor) + " would be smaller than 2x2");
   }
   if (scene.disparity_range > 0 && (scene.disparity_range + factor - 1) / factor < 2) {
-    throw std::invalid_argument(
-        "downscale: the scene's " + std::to_string(scene.disparity_range) +
-        " disparities shrunk by " + std::to_string(factor) +
-        " leave fewer than 2 labels; a factor below " + std::to_string(scene.disparity_range) +
-        " is needed");
+    throw std::invalid_argument("downscale: the scene's " + std::to_string(scene.disparity_range) +
+                                " disparities shrunk by " + std::to_string(factor) +
+                                " leave fewer than 2 labels; a factor below " +
+                                std::to_string(scene.disparity_range) + " is needed");
   }
   cv::resize(scene.left, scene.left, size, 0, 0, cv::INTER_AREA);
   cv::resize(scene.right, scene.right, size, 0, 0, cv::INTER_AREA);

@@ -1,8 +1,8 @@
 #pragma once
-// Ground-truth disparity files given by hand (c2f-stereo LEFT RIGHT --gt FILE, c2f.read_stereo_pair)
-// are recognised by their content, never silently misread: Middlebury 2014's PFM, KITTI 2015's
-// 16-bit PNG and the earlier Middlebury PNGs each get their own unknown-pixel convention and the
-// dataset's own error measure.
+// Ground-truth disparity files given by hand (c2f-stereo LEFT RIGHT --gt FILE,
+// c2f.read_stereo_pair) are recognised by their content, never silently misread: Middlebury 2014's
+// PFM, KITTI 2015's 16-bit PNG and the earlier Middlebury PNGs each get their own unknown-pixel
+// convention and the dataset's own error measure.
 
 #include <opencv2/core.hpp>
 #include <string>
