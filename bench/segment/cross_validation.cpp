@@ -39,7 +39,6 @@
 #include "support/coopcuts_files.hpp"
 #include "support/model_grid.hpp"
 #include "support/number_list.hpp"
-#include "support/parallel_for.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -146,7 +145,7 @@ int run(const RunCommand& command) {
       throw std::invalid_argument("--aside: no labelled image named '" + name + "'");
   }
   std::fprintf(stderr, "c2f-bench-crossval: preparing %zu images\n", images.size());
-  bench::parallel_for(
+  c2f::parallel_for(
       images.size(),
       [&](std::size_t i) {
         ImageData& image = images[i];
@@ -156,7 +155,7 @@ int run(const RunCommand& command) {
         image.edges =
             segmentation_edges(image.scene.image, preparation.num_classes, preparation.edge_kmeans);
       },
-      static_cast<unsigned>(command.threads));
+      command.threads);
 
   std::vector<CoopParameters> models = bench::model_grid(lambdas, thetas, alphas);
   if (!command.models.empty()) {
@@ -172,7 +171,7 @@ int run(const RunCommand& command) {
   }
   std::vector<Outcome> outcomes(models.size() * images.size());
   std::atomic<std::size_t> done{0};
-  bench::parallel_for(
+  c2f::parallel_for(
       outcomes.size(),
       [&](std::size_t task) {
         outcomes[task] =
@@ -181,7 +180,7 @@ int run(const RunCommand& command) {
         if (finished % images.size() == 0 || finished == outcomes.size())
           std::fprintf(stderr, "c2f-bench-crossval: %zu of %zu runs\n", finished, outcomes.size());
       },
-      static_cast<unsigned>(command.threads));
+      command.threads);
 
   const std::string kmeans = command.preparation.kmeans;
   std::string method = command.method;

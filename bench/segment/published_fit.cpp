@@ -32,7 +32,6 @@
 #include "support/coopcuts_files.hpp"
 #include "support/model_grid.hpp"
 #include "support/number_list.hpp"
-#include "support/parallel_for.hpp"
 #include "support/published_labelings.hpp"
 #include "tool_options.hpp"
 
@@ -125,17 +124,21 @@ int main(int argc, char** argv) {
     for (const CoopParameters& parameters : bench::model_grid(lambdas, thetas, alphas))
       models.push_back({parameters, {}, 0.0});
     std::atomic<std::size_t> done{0};
-    bench::parallel_for(models.size(), [&](std::size_t m) {
-      Model& model = models[m];
-      for (const ImageData& image : images) {
-        const CoopEnergy energy = energy_of(image, model.parameters);
-        const double before = energy.evaluate(image.published);
-        const double after = energy.evaluate(bench::descend_from(energy, image.published));
-        model.gains.push_back((before - after) / before);
-      }
-      for (double gain : model.gains) model.mean_gain += gain / model.gains.size();
-      std::fprintf(stderr, "c2f-bench-published-fit: %zu of %zu models\n", ++done, models.size());
-    });
+    c2f::parallel_for(
+        models.size(),
+        [&](std::size_t m) {
+          Model& model = models[m];
+          for (const ImageData& image : images) {
+            const CoopEnergy energy = energy_of(image, model.parameters);
+            const double before = energy.evaluate(image.published);
+            const double after = energy.evaluate(bench::descend_from(energy, image.published));
+            model.gains.push_back((before - after) / before);
+          }
+          for (double gain : model.gains) model.mean_gain += gain / model.gains.size();
+          std::fprintf(stderr, "c2f-bench-published-fit: %zu of %zu models\n", ++done,
+                       models.size());
+        },
+        0);  // all cores
     std::stable_sort(models.begin(), models.end(),
                      [](const Model& a, const Model& b) { return a.mean_gain < b.mean_gain; });
 
@@ -167,13 +170,17 @@ int main(int argc, char** argv) {
     std::printf("\n");
     // Every (model, image) greedy run first, on all cores; then the table.
     std::vector<double> errors(segmented.size() * images.size());
-    bench::parallel_for(errors.size(), [&](std::size_t task) {
-      const auto& [label, parameters] = segmented[task / images.size()];
-      const ImageData& image = images[task % images.size()];
-      std::fprintf(stderr, "c2f-bench-published-fit: %s, greedy on %s\n", label.c_str(),
-                   image.name.c_str());
-      errors[task] = pixel_error(greedy_labeling(energy_of(image, parameters)), image.scene.truth);
-    });
+    c2f::parallel_for(
+        errors.size(),
+        [&](std::size_t task) {
+          const auto& [label, parameters] = segmented[task / images.size()];
+          const ImageData& image = images[task % images.size()];
+          std::fprintf(stderr, "c2f-bench-published-fit: %s, greedy on %s\n", label.c_str(),
+                       image.name.c_str());
+          errors[task] =
+              pixel_error(greedy_labeling(energy_of(image, parameters)), image.scene.truth);
+        },
+        0);  // all cores
     for (std::size_t s = 0; s < segmented.size(); ++s) {
       std::printf("| %s | %s |", segmented[s].first.c_str(),
                   model_cells(segmented[s].second).c_str());
