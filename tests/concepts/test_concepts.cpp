@@ -14,6 +14,8 @@ static_assert(Energy<PairwiseEnergy>);
 static_assert(ReducibleEnergy<PairwiseEnergy>);
 static_assert(Partition<DensePartition>);
 static_assert(AnytimeSolver<IcmSolver, PairwiseEnergy>);
+static_assert(ReleasingSolver<ExpansionSolver<>>);  // its graphs go before the original level
+static_assert(!ReleasingSolver<IcmSolver>);
 static_assert(PartitionProvider<PartitionList, PairwiseEnergy>);
 static_assert(PartitionProvider<BlockHierarchy, PairwiseEnergy>);
 

@@ -159,6 +159,7 @@ using c2f::read_uai_mpe;
 using c2f::reduce;
 using c2f::ReducibleEnergy;
 using c2f::RelaxationOptions;
+using c2f::ReleasingSolver;
 using c2f::require_grid_size;
 using c2f::require_input_memory;
 using c2f::require_memory;

@@ -45,6 +45,13 @@ concept ConvergingSolver = AnytimeSolver<S, E> && requires(const S& cs, const E&
   { cs.quiet_steps_to_converge(e) } -> std::convertible_to<std::size_t>;
 };
 
+/// A solver that can give back the memory it keeps between steps (recycled move graphs, kept
+/// move problems): release() leaves it as newly constructed with its options, to be bound
+/// again. The driver calls it on the coarse levels' solver as the original problem begins, so
+/// their memory is not held beside the original problem's.
+template <class S>
+concept ReleasingSolver = requires(S& s) { s.release(); };
+
 /// Two solvers for one coarse-to-fine run: `coarse` on every reduced level, `original` on the
 /// original problem (e.g. whole expansion moves on the coarse levels and near moves on the
 /// original one). Holds references: both must outlive the run. They may be one object.

@@ -37,9 +37,9 @@ Labeling initial_labeling(const E& energy, InitialLabeling kind) {
 namespace detail {
 
 /// The solver of the level being solved: `coarse` on every reduced energy, `original` on the
-/// original one. Both may be the same object; when they differ and the coarse solver has
-/// release(), it is called as the original problem begins, so the coarse levels' memory (e.g.
-/// recycled move graphs) is not held beside the original problem's.
+/// original one. Both may be the same object; when they differ and the coarse solver is a
+/// ReleasingSolver, it is released as the original problem begins, so the coarse levels' memory
+/// (e.g. recycled move graphs) is not held beside the original problem's.
 template <class E, class CoarseSolver, class OriginalSolver>
 class LevelSolver {
  public:
@@ -49,7 +49,7 @@ class LevelSolver {
   void bind(const E& energy, std::span<const Label> start, bool at_original) {
     at_original_ = at_original;
     if (at_original) {
-      if constexpr (requires { coarse_.release(); }) {
+      if constexpr (ReleasingSolver<CoarseSolver>) {
         if (static_cast<const void*>(&coarse_) != static_cast<const void*>(&original_))
           coarse_.release();
       }
