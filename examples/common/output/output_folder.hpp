@@ -2,6 +2,12 @@
 // A run's output folder changes in one step or not at all: the run writes a new version of the
 // folder beside it and exchanges the two with one rename, so any interruption (an error, a
 // signal, SIGKILL) leaves either the earlier run's folder or this run's, never a mix.
+//
+// The output layer (this folder), read in this order: folder_claim.hpp (whose folder it is,
+// what the tool wrote there, one run at a time), folder_swap.hpp (a folder replaced in one
+// step), staged_file.hpp and staged_paths.hpp (an output elsewhere, and the names messages
+// give), output_paths.hpp (outputs checked against inputs), then this file, which puts them
+// together for a run.
 
 #include <chrono>
 #include <filesystem>
