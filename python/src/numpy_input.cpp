@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "c2f/core/text_input.hpp"
 #include "released_gil.hpp"
 
 namespace c2f::python {
@@ -70,7 +71,7 @@ long long integer_argument(const py::handle& object, const std::string& name, lo
   const long long result = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
   if (overflow != 0 || result < lowest || result > highest) {
     throw py::value_error(name + ": expected an integer in " + range + ", got " +
-                          std::string(py::str(py::handle(value))));
+                          printable(std::string(py::str(py::handle(value))), 40));
   }
   return result;
 }
@@ -86,10 +87,12 @@ double real_argument(const py::handle& object, const std::string& name) {
   const double value = PyFloat_AsDouble(object.ptr());
   if (value == -1.0 && PyErr_Occurred()) {
     PyErr_Clear();
-    throw py::value_error(name + ": expected a real number, got " + std::string(py::str(object)));
+    throw py::value_error(name + ": expected a real number, got " +
+                          printable(std::string(py::str(object)), 40));
   }
   if (!std::isfinite(value))
-    throw py::value_error(name + ": expected a finite number, got " + std::string(py::str(object)));
+    throw py::value_error(name + ": expected a finite number, got " +
+                          printable(std::string(py::str(object)), 40));
   return value;
 }
 
