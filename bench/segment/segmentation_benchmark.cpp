@@ -323,8 +323,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> selected;
     if (config_list.empty())
       throw std::invalid_argument(
-          "--configs: expected a comma-separated list of configurations or "
-          "all, got ''");
+          "--configs: expected a comma-separated list of configurations or all, got ''");
     if (config_list == "all") config_list.clear();
     std::stringstream list(config_list);
     for (std::string name; std::getline(list, name, ',');) {

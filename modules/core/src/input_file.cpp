@@ -99,6 +99,9 @@ std::string read_input_file(const std::string& path, std::string_view what, std:
         char probe = 0;
         const ssize_t more = ::read(file.fd, &probe, 1);
         if (more == 0) break;
+        if (more < 0 && errno == EINTR) continue;
+        if (more < 0)
+          throw std::runtime_error("reading " + name + " failed (" + std::strerror(errno) + ")");
         throw std::invalid_argument(name + " grew past " +
                                     format_bytes(static_cast<double>(max_bytes)) +
                                     " while it was read");
