@@ -8,12 +8,12 @@
 // cooperative-cut and Potts energies exactly as c2f-segment does (labels from the GT, default
 // parameters) and prints one markdown row per published labeling: its cooperative-cut energy,
 // its Potts energy and its pixel error against the GT. Comparing those energies with the
-// energies our solvers reach (docs/results.md) says whether a gap in pixel error comes from the
-// optimiser (their labeling has the lower energy under our model) or from the model (ours has).
-// The last columns say how far a published labeling is from a local minimum of the model: the
-// energy and pixel error where majorise-minimise descent started from it stops. Under the model
-// that produced a labeling, that descent should barely move it; `--lambda`, `--theta` and
-// `--alpha` change the model to test other parameters.
+// energies our solvers reach (docs/history/results-2026-11.md) says whether a gap in pixel
+// error comes from the optimiser (their labeling has the lower energy under our model) or from
+// the model (ours has). The last columns say how far a published labeling is from a local minimum
+// of the model: the energy and pixel error where majorise-minimise descent started from it stops.
+// Under the model that produced a labeling, that descent should barely move it; `--lambda`,
+// `--theta` and `--alpha` change the model to test other parameters.
 
 #include <cstdint>
 #include <cstdio>

@@ -196,7 +196,8 @@ int run_image(const std::string& set, const std::string& name, const std::string
            c2f_error = std::nan("");
     if (!config.flat.empty()) {
       const Run& flat = runs.at(config.flat);
-      // The deadlines of the segmentation tables in docs/results.md were drawn with this seed.
+      // The deadlines of the segmentation tables (docs/history/results-2026-11.md) were drawn
+      // with this seed.
       constexpr std::uint64_t kSegmentationDeadlineSeed = 20261122;
       const bench::AnytimeComparison anytime = bench::compare_anytime(
           {flat.trace, flat.summary.energy, flat.summary.seconds},

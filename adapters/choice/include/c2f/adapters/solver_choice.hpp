@@ -107,7 +107,7 @@ struct SolverChoice {
   bool shift_moves = false;  ///< expansion: ExpansionOptions::shift_moves
   /// expansion with near_radius > 0 or shift_moves: the levels that make near and shift moves.
   /// On the original problem only (the default) was the faster coarse-to-fine run in every
-  /// measurement (docs/results.md, "Near moves on the original problem only").
+  /// measurement (docs/history/results-2026-11.md, "Near moves on the original problem only").
   NearLevels near_levels = NearLevels::original;
   /// The bytes a coarse level's reduced energy, its solver's working memory and its recycled
   /// graphs may take (coarse_level_admission; fit_to_budget sets it from the run's memory

@@ -28,7 +28,7 @@ namespace c2f {
 
 /// The defaults are the model chosen by cross-validation over the labelled coopCuts images for
 /// majorise-minimise on superpixel levels with the default data preparation (c2f-segment's
-/// default method; docs/results.md, "Parameters chosen on other images");
+/// default method; docs/history/results-2026-11.md, "Parameters chosen on other images");
 /// coopcuts_example_parameters() are the released example's.
 struct CoopParameters {
   double lambda = 0.5;    ///< weight of the pairwise part

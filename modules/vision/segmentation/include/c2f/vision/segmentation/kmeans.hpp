@@ -21,8 +21,8 @@ KMeansStart kmeans_start_from_string(std::string_view text);
 
 /// The defaults (k-means++ start, batch rounds only) measured lower pixel errors out of sample
 /// than the reference's k-means in the segmentation data preparation, on both coopCuts sets
-/// (docs/results.md, "Parameters chosen on other images"); reference_kmeans() is the released
-/// code's.
+/// (docs/history/results-2026-11.md, "Parameters chosen on other images"); reference_kmeans()
+/// is the released code's.
 struct KMeansOptions {
   KMeansStart start = KMeansStart::plus_plus;
   /// After the batch rounds, move single points, in index order cyclically, to the cluster

@@ -15,7 +15,8 @@ namespace c2f::vision {
 ///                                  what the paper counts as its second)
 ///   paper-cc  the same split into connected components
 ///   superpixels  slic:16 slic:8 flat: SLIC superpixels of the image, then their intersection
-///            with finer ones (the levels our benchmark found fastest, docs/results.md)
+///            with finer ones (the levels our benchmark found fastest,
+///            docs/history/results-2026-11.md)
 std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels);
 
 /// Schedule::parse with the segmentation presets for num_labels labels.

@@ -14,11 +14,11 @@ namespace c2f::vision {
 /// paper-slic       slic:32 slic:16 slic:8 flat
 /// paper-cc         cp:1,1/cc cp:2,1/cc cp:3,1/cc flat (split into connected components)
 /// regions          local:1,1/cc local:2,1/cc local:3,1/cc flat (connected regions of equal
-///                  best-label tuples; docs/results.md)
+///                  best-label tuples; docs/history/results-2026-11.md)
 /// aggregated       agg:1/cc flat (connected regions of equal best label of the unaries
 ///                  summed over 3 x 3 windows; with --plateau-tolerance 3e-5 and near and
 ///                  shift moves on the original problem, the fastest to flat's final energy
-///                  and the best labeling at deadlines: docs/results.md)
+///                  and the best labeling at deadlines: docs/history/results-2026-11.md)
 std::span<const SchedulePreset> stereo_schedule_presets();
 
 /// Schedule::parse with the stereo presets.
