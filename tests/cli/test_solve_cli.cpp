@@ -18,6 +18,7 @@
 #include <string>
 
 #include "c2f/core/uai.hpp"
+#include "support/output_folders.hpp"
 #include "support/random_models.hpp"
 #include "support/run_tool.hpp"
 #include "support/synthetic_segmentation.hpp"
@@ -61,13 +62,19 @@ Labeling solve(const fs::path& model, const fs::path& out, const std::string& fl
   return labeling;
 }
 
+/// A fresh, empty folder `name` under the system's temporary folder.
+fs::path fresh_folder(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 }  // namespace
 
 TEST_CASE("c2f-solve is never better than brute force and reports its labeling's energy",
           "[solve][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-brute";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_folder("c2f-test-solve-brute");
   c2f::test::Rng rng(17);
   for (int trial = 0; trial < 6; ++trial) {
     const int labels = 3 + trial % 2;
@@ -86,9 +93,7 @@ TEST_CASE("c2f-solve is never better than brute force and reports its labeling's
 }
 
 TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malformed]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-bad";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_folder("c2f-test-solve-bad");
   c2f::test::Rng rng(5);
   write_model(c2f::test::random_grid_energy(rng, 4, 3, 2), dir / "binary.uai");
   write_model(c2f::test::random_grid_energy(rng, 4, 3, 4), dir / "grid.uai");
@@ -189,9 +194,7 @@ Labeling toulbar2_optimum(const fs::path& model, std::size_t num_variables) {
 
 TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2 reads our files",
           "[solve][cli][toulbar2]") {
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-toulbar2";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_folder("c2f-test-solve-toulbar2");
   // toulbar2 rounds costs to 7 digits (-precision 7): its optimum is exact up to that rounding.
   const auto tolerance = [](double value) { return 1e-5 * std::max(1.0, std::abs(value)); };
   c2f::test::Rng rng(23);
@@ -232,12 +235,10 @@ TEST_CASE("c2f-solve is never better than toulbar2's exact optimum, and toulbar2
 TEST_CASE("a trace into a pipe nobody reads is an error that leaves no folder",
           "[solve][cli][malformed]") {
   // `--trace /dev/stdout | true`, the run started once `true` has ended: the reader is gone
-  // before the trace is written. The write
-  // fails (EPIPE), the run ends with exit 1 and a message, and the new output folder goes again
-  // (SIGPIPE ended the process without a word, leaving a folder with only a marker).
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-pipe";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  // before the trace is written. The write fails (EPIPE), the run ends with exit 1 and a
+  // message, and the new output folder goes again (SIGPIPE ended the process without a word,
+  // leaving a folder with only a marker).
+  const fs::path dir = fresh_folder("c2f-test-solve-pipe");
   c2f::test::Rng rng(9);
   write_model(c2f::test::random_grid_energy(rng, 6, 5, 3), dir / "grid.uai");
   const auto r = c2f::test::run_tool(
@@ -255,9 +256,7 @@ TEST_CASE("a folder the run cannot write or clean is refused before the run, lea
   // Permissions bind root nowhere: as root the runs are made as nobody (setpriv), whose folder
   // this is. A folder of mode 555 left one more staging folder behind at every run (exit 0); a
   // subfolder of mode 000 failed the run and left one too.
-  const fs::path dir = fs::temp_directory_path() / "c2f-test-solve-permissions";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_folder("c2f-test-solve-permissions");
   c2f::test::Rng rng(4);
   write_model(c2f::test::random_grid_energy(rng, 4, 3, 2), dir / "grid.uai");
   const bool root = ::geteuid() == 0;
@@ -269,18 +268,12 @@ TEST_CASE("a folder the run cannot write or clean is refused before the run, lea
   };
   if (root) REQUIRE(::chown(dir.c_str(), 65534, 65534) == 0);
   REQUIRE(solve_as_user().exit_code == 0);
-  const auto leftovers = [&] {
-    int count = 0;
-    for (const auto& entry : fs::directory_iterator(dir))
-      count += entry.path().filename().string().rfind(".out.c2f-", 0) == 0;
-    return count;
-  };
   fs::permissions(dir / "out", fs::perms(0555));
   auto r = solve_as_user();
   INFO(r.output);
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.output, Catch::Contains("cannot be written (Permission denied)"));
-  CHECK(leftovers() == 0);
+  CHECK(c2f::test::run_leftovers(dir / "out") == 0);
   fs::permissions(dir / "out", fs::perms(0755));
   fs::create_directories(dir / "out" / "locked");
   if (root) REQUIRE(::chown((dir / "out" / "locked").c_str(), 65534, 65534) == 0);
@@ -289,6 +282,6 @@ TEST_CASE("a folder the run cannot write or clean is refused before the run, lea
   INFO(r.output);
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.output, Catch::Contains("locked', a folder this run cannot read"));
-  CHECK(leftovers() == 0);
+  CHECK(c2f::test::run_leftovers(dir / "out") == 0);
   fs::permissions(dir / "out" / "locked", fs::perms(0755));
 }
