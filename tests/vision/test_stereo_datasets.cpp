@@ -228,7 +228,8 @@ TEST_CASE("a KITTI 2015 pair loads with GT / 256 and the D1 measure", "[stereo][
   cv::imwrite((root / "training/disp_occ_0/000007_10.png").string(),
               cv::Mat(3, 5, CV_8U, cv::Scalar(12)));
   CHECK_THROWS_WITH(load_kitti2015_pair(root.string(), "000007_10"),
-                    Catch::Contains("is an 8-bit PNG; KITTI's GT is a 16-bit PNG"));
+                    Catch::Contains("is an 8-bit PNG: divided by 256 every disparity would be "
+                                    "below one pixel (KITTI's GT is a 16-bit PNG"));
   CHECK_THROWS_WITH(load_kitti2015_pair(root.string(), "../x"),
                     Catch::Contains("expected a name such as 000000_10"));
 }

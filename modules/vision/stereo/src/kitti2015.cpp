@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "c2f/vision/image_io.hpp"
+#include "c2f/vision/stereo/ground_truth.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "stereo_pair_checks.hpp"
 
@@ -29,13 +30,8 @@ StereoScene load_kitti2015_pair(const std::string& root, const std::string& id) 
   scene.disparity_range = kKittiDefaultLabels;
   scene.nonoccluded_source = "none (KITTI scores all pixels with GT)";
   if (std::filesystem::exists(file("disp_occ_0"))) {
-    const cv::Mat raw = load_single_channel_image(file("disp_occ_0"));
-    if (raw.depth() != CV_16U) {
-      throw std::invalid_argument(
-          "GT '" + file("disp_occ_0") +
-          "' is an 8-bit PNG; KITTI's GT is a 16-bit PNG of disparity x 256");
-    }
-    scene.gt = load_gt_disparity(file("disp_occ_0"), 256.0);  // 0 = unknown becomes NaN
+    // Disparity x 256, 0 unknown (NaN); an 8-bit PNG is refused (no divisor above 255 on it).
+    scene.gt = load_ground_truth(file("disp_occ_0"), 256.0).disparity;
     detail::require_view_size(scene.gt, scene.left, file("disp_occ_0"));
   }
   return scene;
