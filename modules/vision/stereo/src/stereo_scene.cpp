@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include "c2f/core/input_file.hpp"
 #include "c2f/vision/image_io.hpp"
@@ -44,10 +45,12 @@ StereoScene load_stereo_pair(const StereoPairFiles& files) {
                                 size_text(scene.right) + ": the views must have one size");
   }
   scene.nonoccluded_source = "none";
-  // A Middlebury 2014 folder's calib.txt beside the left view gives the label count.
+  // A Middlebury 2014 folder's calib.txt beside the left view gives the label count (read
+  // through the input layer, which refuses one that is no regular file by name).
   const std::filesystem::path calibration =
       std::filesystem::path(files.left).parent_path() / "calib.txt";
-  if (why_not_a_file(calibration.string()).empty()) {
+  std::error_code absent;
+  if (std::filesystem::exists(std::filesystem::symlink_status(calibration, absent))) {
     scene.disparity_range =
         parse_ndisp(read_input_file(calibration.string(), "calibration", kMaxTextInputBytes),
                     calibration.string());
