@@ -3,10 +3,10 @@
 # third-party dependencies:
 #   core        c2f::core, c2f::lift, c2f::driver, c2f::cooperative,
 #               c2f::lbp, c2f::icm                                          (none)
-#   graphcut    c2f::maxflow, c2f::graphcut, c2f::solvers                  (Boost headers)
+#   graphcut    c2f::maxflow, c2f::graphcut, c2f::run (the run layer)      (Boost headers)
 #   kolmogorov  c2f::kolmogorov_maxflow, when built                        (libmaxflow, GPL-3)
 #   vision      c2f::vision, c2f::stereo, c2f::segmentation                (OpenCV, Eigen)
-#   coop        c2f::coop, the cooperative-cut solvers (no images)        (Ceres)
+#   coop        c2f::coop, the cooperative-cut solvers, c2f::coop_run      (Ceres)
 #   all         c2f::c2f, everything but kolmogorov
 #   import      c2f::import, `import c2f;`, when the toolchain builds modules (CMake >= 3.28)
 # Each component has its own export file; c2fConfig.cmake loads the requested ones (all when

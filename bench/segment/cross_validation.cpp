@@ -76,31 +76,26 @@ struct Outcome {
   double energy = 0.0;
 };
 
-/// Segments `image` under `parameters` as c2f-segment would with the command's method,
-/// schedule and plateau (the original problem ends after a whole sweep without decrease).
+/// Segments `image` under `parameters` as c2f-segment does (run_segmentation, within the
+/// machine's default memory budget) with the command's method, schedule and plateau (the
+/// original problem ends after a whole sweep without decrease).
 Outcome segment(const RunCommand& command, const ImageData& image,
                 const CoopParameters& parameters) {
   const int L = image.scene.num_labels();
-  const CoopEnergy coop = coop_energy(image.unaries, L, image.edges, parameters);
+  CoopEnergy coop = coop_energy(image.unaries, L, image.edges, parameters);
+  PairwiseEnergy potts = potts_energy(coop);
+  const SegmentationProblem problem{std::move(coop), std::move(potts)};
   ScheduleProvider levels(parse_segmentation_schedule(command.schedule, L), image.scene.shape(),
                           slic_source(image.scene.image));
-  Options options;
-  Summary summary;
+  SegmentationRunConfig config;
   if (command.method == "potts") {
-    const PairwiseEnergy potts = potts_energy(coop);
-    ExpansionSolver<> solver;
-    options.plateau_steps = {
-        vision::coarse_plateau_steps(solver.quiet_steps_to_converge(potts), L, false)};
-    summary = coarse_to_fine(potts, levels, solver, options);
+    config.method = SegmentationMethod::potts;
   } else {
-    CoopSolverOptions solver_options;
-    solver_options.strategy = aux_strategy_from_string(command.method);
-    solver_options.start = expansion_start_from_string(command.start);
-    CoopSolver solver(solver_options);
-    options.plateau_steps = {vision::coarse_plateau_steps(solver.quiet_steps_to_converge(coop), L,
-                                                          command.plateau == "sweep")};
-    summary = coarse_to_fine(coop, levels, solver, options);
+    config.coop.strategy = aux_strategy_from_string(command.method);
+    config.coop.start = expansion_start_from_string(command.start);
+    config.plateau = command.plateau == "sweep" ? -1 : 0;
   }
+  const Summary summary = run_segmentation(problem, levels, config).summary;
   return {pixel_error(summary.labeling, image.scene.truth), summary.energy};
 }
 

@@ -95,17 +95,18 @@ const std::vector<Config>& configs() {
 
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
           double time_limit, const MemoryBudget& memory, const std::string& trace_path) {
-  const int L = scene.num_labels();
-  const Schedule schedule = parse_segmentation_schedule(config.schedule, L);
+  const Schedule schedule = parse_segmentation_schedule(config.schedule, scene.num_labels());
   ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
   // Coarse levels end after L steps without decrease (a whole sweep when the configuration
   // says so, or when a sweep is shorter); the original problem where the solver has converged.
-  const auto options_for = [&](std::size_t sweep) {
-    Options options;
-    options.plateau_steps = {vision::coarse_plateau_steps(sweep, L, config.sweep_plateau)};
-    options.time_limit_seconds = time_limit;
-    return options;
-  };
+  // As in c2f-segment, within the memory budget.
+  SegmentationRunConfig run_config;
+  run_config.method = config.potts ? SegmentationMethod::potts : SegmentationMethod::coop;
+  run_config.coop.strategy = config.strategy;
+  run_config.coop.start = config.start;
+  run_config.plateau = config.sweep_plateau ? -1 : 0;
+  run_config.time_limit_seconds = time_limit;
+  run_config.memory = memory;
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   const auto error = pixel_error_function(scene);
@@ -116,27 +117,7 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
     run.trace.push_back({event.time_s, event.energy, error(ground)});
     return ObserverDecision::continue_run;
   };
-  // As in c2f-segment: the recycled move graphs get what the budget leaves (and with Potts,
-  // coarse levels the room it gives them).
-  if (config.potts) {
-    const SolverChoice choice =
-        fit_to_budget({}, problem_size(problem.potts), memory, "the Potts energy");
-    ExpansionSolver<> solver(choice.expansion_options());
-    Options options = options_for(solver.quiet_steps_to_converge(problem.potts));
-    options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
-    run.summary = coarse_to_fine(problem.potts, levels, solver, options, observer);
-  } else {
-    CoopSolverOptions solver_options;
-    solver_options.strategy = config.strategy;
-    solver_options.start = config.start;
-    const CoopSolverOptions fitted =
-        fit_to_budget(solver_options, problem.coop, energy_memory_bytes(problem.potts), memory,
-                      "the cooperative energy");
-    CoopSolver solver(fitted);
-    run.summary =
-        coarse_to_fine(problem.coop, levels, solver,
-                       options_for(solver.quiet_steps_to_converge(problem.coop)), observer);
-  }
+  run.summary = run_segmentation(problem, levels, run_config, observer).summary;
   close_checked(file, trace_path);
   run.error = error(run.summary.labeling);
   run.coop_energy = problem.coop.evaluate(run.summary.labeling);

@@ -18,7 +18,7 @@
 //       moves without a decrease larger than T * |E| (default 0: the paper's rule); the
 //       original problem, in both runs, ends after a whole sweep without decrease (three
 //       sweeps with near moves). Traces go to OUT/SCENE-{flat,c2f}.csv ('/' in SCENE as '-').
-//       Each run's recycled move graphs get what the memory budget leaves (fit_to_budget, as in
+//       Each run's recycled move graphs get what the memory budget leaves (the run layer, as in
 //       c2f-stereo). The row has the peak resident size of the data preparation and of each run
 //       (the process's, reset before each: it includes the scene and energy already resident)
 //       and, with --prep-one-thread, the data preparation's time on one thread (that energy must
@@ -63,7 +63,6 @@
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/superpixels.hpp"
 #include "output_folder.hpp"
-#include "solver_flags.hpp"
 #include "support/anytime_comparison.hpp"
 #include "support/anytime_trace.hpp"
 #include "support/bench_command.hpp"
@@ -155,28 +154,26 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   const PairwiseEnergy& energy = problem.energy;
   const Schedule parsed = parse_stereo_schedule(schedule);
   ScheduleProvider provider(parsed, scene.shape(), slic_source(problem.guide));
-  SolverChoice expansion;
+  ExpansionOptions expansion;
   expansion.order = settings.label_order;
-  expansion.maxflow = settings.maxflow;
   expansion.near_radius = near_radius;
   expansion.shift_moves = shift_moves;
-  expansion.near_levels = settings.near_levels;
-  expansion =
-      fit_to_budget(expansion, problem_size(energy), settings.memory, "the " + schedule + " run");
-  Options options;
-  options.plateau_steps = {4};
-  options.plateau_tolerance = settings.coarse_tolerance;  // the original: expansion converged
-  options.time_limit_seconds = settings.time_limit;
+  RunConfig config;
+  config.solver = expansion_spec(expansion, settings.near_levels, settings.maxflow);
+  config.limits.plateau_steps = {4};
+  config.limits.plateau_tolerance = settings.coarse_tolerance;  // the original: converged
+  config.limits.time_limit_seconds = settings.time_limit;
+  config.memory = settings.memory;
+  config.energy_name = "the " + schedule + " run";
   Run run;
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
-  run.summary = examples::run_chosen_solver(
-      energy, provider, expansion, options, [&](const StepEvent& event) {
-        writer(event);
-        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
-        return ObserverDecision::continue_run;
-      });
+  run.summary = c2f::run(energy, provider, config, [&](const StepEvent& event) {
+                  writer(event);
+                  run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+                  return ObserverDecision::continue_run;
+                }).summary;
   close_checked(file, trace_path);
   run.errors = scene_errors(labels_to_disparity(run.summary.labeling, scene.shape()), scene);
   return run;

@@ -46,7 +46,7 @@ os.makedirs(arguments.out, exist_ok=True)
 # moves): flat, and coarse to fine from aggregated best labels. A callback records the
 # bad-pixel rate (> 1) of every step's labeling (on coarse levels: the labeling it stands for).
 energy = c2f.stereo_energy(pair["left"], pair["right"], labels=arguments.labels)
-moves = dict(near_radius=5, shift_moves=True, time_limit=arguments.time_limit)
+moves = dict(options={"near_radius": 5, "shift_moves": True}, time_limit=arguments.time_limit)
 runs, errors = {}, {}
 for name, schedule, options in [("flat", "flat", {}),
                                 ("c2f", "aggregated", dict(plateau_tolerance=3e-5))]:

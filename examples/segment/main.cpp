@@ -31,10 +31,10 @@ struct TimedProblem {
 
 TimedProblem build_problem(const SegmentationScene& scene,
                            const examples::SegmentCommand& command) {
-  command.memory.require("segmenting " + std::to_string(scene.image.cols) + "x" +
-                             std::to_string(scene.image.rows) + " pixels into " +
-                             std::to_string(scene.num_labels()) + " labels",
-                         segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
+  command.run.memory->require(
+      "segmenting " + std::to_string(scene.image.cols) + "x" + std::to_string(scene.image.rows) +
+          " pixels into " + std::to_string(scene.num_labels()) + " labels",
+      segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
   const auto start = Clock::now();
   SegmentationProblem problem =
       segmentation_problem(scene, command.parameters, command.preparation);
@@ -77,30 +77,6 @@ Schedule schedule_for(const examples::SegmentCommand& command, const Segmentatio
   }
 }
 
-Summary solve(const examples::SegmentCommand& command, const SegmentationProblem& problem,
-              ScheduleProvider& levels, const Observer& observer) {
-  const int num_labels = problem.coop.num_labels();
-  if (command.method == examples::SegmentMethod::potts) {
-    // Its recycled move graphs get what the budget leaves; coarse levels the room it gives them.
-    const SolverChoice choice =
-        fit_to_budget({}, problem_size(problem.potts), command.memory, "the Potts energy");
-    ExpansionSolver<> solver(choice.expansion_options());
-    Options options =
-        examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.potts));
-    options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
-    return coarse_to_fine(problem.potts, levels, solver, options, observer);
-  }
-  // The cooperative energy beside the Potts one: its expansion's recycled graphs get what the
-  // budget leaves.
-  const CoopSolverOptions fitted =
-      fit_to_budget(command.coop, problem.coop, energy_memory_bytes(problem.potts), command.memory,
-                    "the cooperative energy");
-  CoopSolver solver(fitted);
-  const Options options =
-      examples::run_options(command, num_labels, solver.quiet_steps_to_converge(problem.coop));
-  return coarse_to_fine(problem.coop, levels, solver, options, observer);
-}
-
 /// How the k-means ran, e.g. "sample start, batch and online phases".
 std::string kmeans_text(const KMeansOptions& kmeans) {
   return std::string(to_string(kmeans.start)) + " start" +
@@ -109,17 +85,18 @@ std::string kmeans_text(const KMeansOptions& kmeans) {
 
 void write_summary(const std::filesystem::path& out, const examples::SegmentCommand& command,
                    const SegmentationScene& scene, const TimedProblem& built,
-                   const ScheduleProvider& levels, const Summary& summary,
+                   const ScheduleProvider& levels, const RunReport& run,
                    const std::optional<double>& error, const examples::InterruptWatch& interrupts) {
+  const Summary& summary = run.summary;
   std::ofstream report((out / "summary.txt").string());
   if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
   report << "image " << scene.name << " " << scene.shape().width << "x" << scene.shape().height
          << ", " << scene.num_labels() << " labels (seeds: " << to_string(command.files.convention)
-         << ")\nmethod " << to_string(command.method);
-  if (command.method == examples::SegmentMethod::coop) {
-    report << ", auxiliary variables " << to_string(command.coop.strategy);
-    if (command.coop.strategy == AuxStrategy::greedy)
-      report << " (expansion from " << to_string(command.coop.start) << ")";
+         << ")\nmethod " << to_string(command.run.method);
+  if (command.run.method == SegmentationMethod::coop) {
+    report << ", auxiliary variables " << to_string(command.run.coop.strategy);
+    if (command.run.coop.strategy == AuxStrategy::greedy)
+      report << " (expansion from " << to_string(command.run.coop.start) << ")";
   }
   report << ", schedule " << levels.schedule().to_string() << "\nlambda "
          << command.parameters.lambda << ", theta " << command.parameters.theta << ", alpha "
@@ -127,8 +104,8 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << " edge classes, k-means " << kmeans_text(command.preparation.gmm_kmeans) << ", seeds "
          << command.preparation.gmm_kmeans.seed << " (GMMs) and "
          << command.preparation.edge_kmeans.seed << " (edge classes)\n"
-         << "data preparation: " << built.seconds << " s (not on the run clock)\nmemory budget "
-         << command.memory.describe() << "\n";
+         << "data preparation: " << built.seconds << " s (not on the run clock)\n"
+         << run.memory_line() << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "
          << built.problem.coop.evaluate(summary.labeling)
@@ -156,7 +133,7 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     const examples::SegmentCommand& command = *parsed;
 
-    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
+    set_input_memory_limit(command.run.memory->ceiling());  // no input may take more to read
     check_paths(command);
     const SegmentationScene scene =
         downscale(load_segmentation_scene(command.files), command.downscale);
@@ -172,17 +149,20 @@ int main(int argc, char** argv) {
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary = solve(command, built.problem, levels,
-                                  record.observer(scene.truth.empty() ? TraceWriter::ErrorFunction{}
-                                                                      : pixel_error_function(scene),
-                                                  interrupts, {std::ref(partitions)}));
+    // The recycled move graphs get what the budget leaves (a cooperative run keeps the Potts
+    // energy beside it).
+    const RunReport run =
+        run_segmentation(built.problem, levels, command.run,
+                         record.observer(scene.truth.empty() ? TraceWriter::ErrorFunction{}
+                                                             : pixel_error_function(scene),
+                                         interrupts, {std::ref(partitions)}));
 
     const auto error =
-        write_segmentation_outputs(record.staging().string(), summary.labeling, scene);
-    write_summary(record.staging(), command, scene, built, levels, summary, error, interrupts);
+        write_segmentation_outputs(record.staging().string(), run.summary.labeling, scene);
+    write_summary(record.staging(), command, scene, built, levels, run, error, interrupts);
     partitions.write(record.staging().string(), scene.shape());
     record.commit();
-    report_end(command, summary, error, interrupts);
+    report_end(command, run.summary, error, interrupts);
     return interrupts.exit_code();
   });
 }

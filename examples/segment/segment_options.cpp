@@ -19,15 +19,6 @@
 
 namespace c2f::examples {
 
-std::string_view to_string(SegmentMethod method) {
-  return method == SegmentMethod::coop ? "coop" : "potts";
-}
-
-SegmentMethod segment_method_from_string(std::string_view text) {
-  constexpr SegmentMethod kAll[] = {SegmentMethod::coop, SegmentMethod::potts};
-  return enum_from_string(text, kAll, "method");
-}
-
 std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   SegmentCommand command;
   double memory_gib = 0.0;  // 0: default_memory_budget()
@@ -66,15 +57,15 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   declare_data_preparation(options, preparation)
       .integer("downscale", &command.downscale, {1, 1024},
                "shrink the image, seeds and GT by this integer factor first")
-      .real("time-limit", &command.time_limit, kTimeLimitRange,
+      .real("time-limit", &command.run.time_limit_seconds, kTimeLimitRange,
             "seconds on the run clock (0: none)")
-      .integer("max-steps", &command.max_steps, {0, kMaxSteps},
+      .integer("max-steps", &command.run.max_total_steps, {0, kMaxSteps},
                "solver steps in the whole run (0: none)")
       .text("plateau", &plateau,
             "refine a coarse level after this many steps without decrease: a number, auto (the "
             "number of labels, the reference's window, or one sweep when shorter) or sweep (a "
             "whole sweep: L*K+1 flips for greedy)")
-      .integer("final-plateau", &command.final_plateau, {0, kMaxSteps},
+      .integer("final-plateau", &command.run.final_plateau, {0, kMaxSteps},
                "stop after this many steps without decrease on the original problem (0: one "
                "sweep: L*K+1 flips for greedy, 1 step for mm, 2 for ceres, L moves for potts)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
@@ -111,36 +102,27 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   if (labels_from_gt && command.files.gt.empty())
     throw std::invalid_argument("--labels-from-gt needs --gt");
   command.preparation = preparation.resolved();
-  command.method = with_flag("--method", [&] { return segment_method_from_string(method); });
-  command.coop.strategy = with_flag("--aux", [&] { return aux_strategy_from_string(aux); });
-  command.coop.start = with_flag("--start", [&] { return expansion_start_from_string(start); });
+  command.run.method =
+      with_flag("--method", [&] { return vision::segmentation_method_from_string(method); });
+  command.run.coop.strategy = with_flag("--aux", [&] { return aux_strategy_from_string(aux); });
+  command.run.coop.start = with_flag("--start", [&] { return expansion_start_from_string(start); });
   if (plateau == "sweep") {
-    command.plateau = -1;
+    command.run.plateau = -1;
   } else if (plateau != "auto") {
     if (!parse_integer(plateau))
       throw std::invalid_argument("--plateau: expected auto, sweep or a number, got '" + plateau +
                                   "'");
-    command.plateau = static_cast<int>(parse_integer_option("--plateau", plateau, {1, kMaxSteps}));
+    command.run.plateau =
+        static_cast<int>(parse_integer_option("--plateau", plateau, {1, kMaxSteps}));
   }
   // The schedule's grammar is checked now; presets and N_L once the labels are known.
   with_flag("--schedule", [&] { return vision::parse_segmentation_schedule(command.schedule, 2); });
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
-  command.memory = memory_gib == 0.0
-                       ? default_memory_budget()
-                       : memory_budget_of_gib(memory_gib, "--memory " + format_real(memory_gib));
+  command.run.memory =
+      memory_gib == 0.0 ? default_memory_budget()
+                        : memory_budget_of_gib(memory_gib, "--memory " + format_real(memory_gib));
   return command;
-}
-
-Options run_options(const SegmentCommand& command, int num_labels, std::size_t sweep) {
-  Options options;
-  options.plateau_steps = {
-      command.plateau > 0 ? command.plateau
-                          : vision::coarse_plateau_steps(sweep, num_labels, command.plateau < 0)};
-  options.plateau_steps_at_original = command.final_plateau;  // 0: the solver's own
-  options.time_limit_seconds = command.time_limit;
-  options.max_total_steps = command.max_steps;
-  return options;
 }
 
 }  // namespace c2f::examples

@@ -28,7 +28,7 @@ struct TimedModel {
 
 TimedModel read_model(const examples::SolveCommand& command) {
   const auto start = Clock::now();
-  PairwiseEnergy energy = read_uai_file(command.model, command.memory);
+  PairwiseEnergy energy = read_uai_file(command.model, *command.run.memory);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet) {
     std::fprintf(stderr, "c2f-solve: %s: %zu variables, %d labels, %zu pairwise factors (%.2f s)\n",
@@ -39,20 +39,20 @@ TimedModel read_model(const examples::SolveCommand& command) {
 }
 
 void write_summary(const std::filesystem::path& folder, const examples::SolveCommand& command,
-                   const SolverChoice& solver, const TimedModel& model, const Schedule& schedule,
-                   const ScheduleProvider& levels, const Summary& summary,
+                   const TimedModel& model, const Schedule& schedule,
+                   const ScheduleProvider& levels, const RunReport& run,
                    const examples::InterruptWatch& interrupts) {
   std::ofstream report(folder / "summary.txt");
   report << "model " << command.model << ": " << model.energy.num_variables() << " variables, "
          << model.energy.num_labels() << " labels, " << model.energy.edges().size()
          << " pairwise factors\n"
-         << "schedule " << schedule.to_string() << ", solver " << to_string(command.solver.kind)
-         << "\n"
+         << "schedule " << schedule.to_string() << ", solver "
+         << to_string(command.run.solver.kind()) << "\n"
          << "reading the model: " << model.seconds << " s (not on the run clock)\n"
-         << examples::memory_line(command.memory, solver) << "\n";
-  examples::write_run_report(report, levels.reports(), summary, interrupts);
+         << run.memory_line() << "\n";
+  examples::write_run_report(report, levels.reports(), run.summary, interrupts);
   report << "energy = sum of -ln(potential) over the factors; log10 of the unnormalised "
-         << "probability: " << -summary.energy / std::log(10.0) << "\n";
+         << "probability: " << -run.summary.energy / std::log(10.0) << "\n";
   close_checked(report, "summary.txt");
 }
 
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     const auto parsed = examples::parse_solve_command(argc, argv);
     if (!parsed) return 0;
     const examples::SolveCommand& command = *parsed;
-    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
+    set_input_memory_limit(command.run.memory->ceiling());  // no input may take more to read
 
     const std::vector<std::string> owned = {"labeling.mpe", "trace.csv", "summary.txt"};
     examples::check_output_paths(
@@ -76,24 +76,26 @@ int main(int argc, char** argv) {
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
-    // The model and the run's floor must fit the budget; recycled move graphs get the rest.
-    const SolverChoice solver = fit_to_budget(
-        command.solver, problem_size(model.energy), command.memory,
-        "MODEL '" + command.model + "' solved by " + std::string(to_string(command.solver.kind)));
+    // The model and the run's floor must fit the budget (checked before any output is staged);
+    // recycled move graphs get the rest.
+    RunConfig config = command.run;
+    config.energy_name = "MODEL '" + command.model + "' solved by " +
+                         std::string(to_string(command.run.solver.kind()));
+    const MemoryPlan plan = plan_run(model.energy, config);
     if (!command.quiet) {
-      std::fprintf(stderr, "c2f-solve: %s\n",
-                   examples::memory_line(command.memory, solver).c_str());
+      std::fprintf(stderr, "c2f-solve: memory budget %s, floor %s\n",
+                   command.run.memory->describe().c_str(),
+                   format_bytes(static_cast<double>(plan.floor)).c_str());
     }
     // Outputs are staged and moved into place together at the end.
     examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-solve", command.quiet);
-    const Summary summary =
-        examples::run_chosen_solver(model.energy, levels, solver, command.rules.options(),
-                                    record.observer(TraceWriter::ErrorFunction{}, interrupts));
+    const RunReport run = c2f::run(model.energy, levels, config,
+                                   record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
-    write_uai_mpe_file(summary.labeling, (record.staging() / "labeling.mpe").string());
-    write_summary(record.staging(), command, solver, model, schedule, levels, summary, interrupts);
+    write_uai_mpe_file(run.summary.labeling, (record.staging() / "labeling.mpe").string());
+    write_summary(record.staging(), command, model, schedule, levels, run, interrupts);
     record.commit();
-    examples::print_run_end("c2f-solve", summary, interrupts, command.out_dir, command.quiet);
+    examples::print_run_end("c2f-solve", run.summary, interrupts, command.out_dir, command.quiet);
     return interrupts.exit_code();
   });
 }

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "c2f/core/number_text.hpp"
-#include "solver_flags.hpp"
+#include "run_flags.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {
@@ -38,7 +38,7 @@ GridShape parse_grid(const std::string& text) {
 std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   SolveCommand command;
   std::string grid;
-  SolverFlags solver;
+  RunFlags run;
   ToolOptions options(
       "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
       "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
@@ -55,8 +55,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
             "WIDTHxHEIGHT: the model's variables are a row-major pixel grid (enables grid levels)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
-  solver.declare(options);
-  command.rules.declare(options);
+  run.declare(options);
   const auto models = options.parse(argc, argv, {"MODEL.uai", 1});
   if (!models) return std::nullopt;
   if (models->empty()) throw std::invalid_argument("give MODEL.uai (see --help)");
@@ -65,8 +64,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   if (!grid.empty()) command.grid = parse_grid(grid);
-  command.solver = solver.choice();
-  command.memory = solver.budget();
+  command.run = run.config();
   // The grammar now; the label count and the grid once the model is read.
   with_flag("--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
   if (command.trace.empty())

@@ -4,11 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/grid.hpp"
-#include "c2f/driver/options.hpp"
 #include "c2f/lift/schedule.hpp"
-#include "solver_flags.hpp"
+#include "c2f/run/run_config.hpp"
 
 namespace c2f::examples {
 
@@ -17,9 +15,9 @@ struct SolveCommand {
   std::string out_dir;                 ///< labeling.mpe, trace.csv, summary.txt
   std::string schedule_text = "flat";  ///< checked against the model once it is read
   std::optional<GridShape> grid;       ///< --grid WxH: the variables are a row-major grid
-  SolverChoice solver;
-  MemoryBudget memory;  ///< --memory, else the machine's default
-  RunRuleFlags rules;   ///< plateaus and limits
+  /// The solver, the limits and the memory budget (--memory, else the machine's default,
+  /// always set).
+  RunConfig run;
   std::string trace;
   bool quiet = false;
 };

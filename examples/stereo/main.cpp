@@ -13,6 +13,7 @@
 #include "interrupt_watch.hpp"
 #include "model_export.hpp"
 #include "output_paths.hpp"
+#include "run_flags.hpp"
 #include "run_record.hpp"
 #include "run_report.hpp"
 #include "stereo_options.hpp"
@@ -68,12 +69,12 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
   const std::string what = "the TSGO energy of " + std::to_string(shape.width) + "x" +
                            std::to_string(shape.height) + " pixels and " +
                            std::to_string(command.tsgo.labels) + " labels solved by " +
-                           std::string(to_string(command.solver.kind));
-  command.memory.require(
+                           std::string(to_string(command.run.solver.kind()));
+  command.run.memory->require(
       (command.scene.empty() ? "LEFT '" + command.pair.left + "': "
                              : "--scene " + command.scene + ": ") +
           what,
-      grid_run_memory_need(command.solver, shape.width, shape.height, command.tsgo.labels,
+      grid_run_memory_need(command.run.solver, shape.width, shape.height, command.tsgo.labels,
                            CostStorage::single_precision,
                            tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels,
                                                 command.tsgo.threads)));
@@ -106,41 +107,23 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
   return {std::move(problem), seconds};
 }
 
-/// The command's solver with its recycled move graphs limited to what the budget leaves above
-/// the run's floor on the built energy.
-SolverChoice solver_within_budget(const examples::StereoCommand& command,
-                                  const StereoProblem& problem) {
-  return fit_to_budget(command.solver, problem_size(problem.tsgo.energy), command.memory,
-                       "the run on the TSGO energy");
-}
-
-/// The run: the chosen solver on the schedule's levels, every step traced (with its error
-/// when there is GT) and each level's partition kept for --save-partitions.
-Summary solve(const examples::StereoCommand& command, const StereoScene& scene,
-              const StereoProblem& problem, ScheduleProvider& levels, examples::RunRecord& record,
-              LevelPartitionRecorder& partitions, const examples::InterruptWatch& interrupts) {
-  return examples::run_chosen_solver(
-      problem.tsgo.energy, levels, command.solver, examples::run_options(command),
+/// The run: the configured solver on the schedule's levels within the budget (the recycled
+/// move graphs get what it leaves above the run's floor on the built energy), every step traced
+/// (with its error when there is GT) and each level's partition kept for --save-partitions.
+RunReport solve(const examples::StereoCommand& command, const StereoScene& scene,
+                const StereoProblem& problem, ScheduleProvider& levels, examples::RunRecord& record,
+                LevelPartitionRecorder& partitions, const examples::InterruptWatch& interrupts) {
+  RunConfig config = command.run;
+  config.energy_name = "the run on the TSGO energy";
+  return run(
+      problem.tsgo.energy, levels, config,
       record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
                       interrupts, {std::ref(partitions)}));
 }
 
-/// ", near moves of radius R and shift moves on ..." for the near and shift moves the solver
-/// makes, else "".
-std::string near_and_shift_moves_text(const SolverChoice& solver) {
-  if (solver.kind != SolverKind::expansion) return {};
-  std::string moves;
-  if (solver.near_radius > 0) moves = "near moves of radius " + std::to_string(solver.near_radius);
-  if (solver.shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
-  if (moves.empty()) return {};
-  return ", " + moves +
-         (solver.near_levels == NearLevels::original ? " on the original problem only"
-                                                     : " on every level");
-}
-
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
-                   const ScheduleProvider& levels, const Summary& summary,
+                   const ScheduleProvider& levels, const RunReport& run,
                    const std::optional<BadPixelRates>& rates, const std::string& dataset_error,
                    const examples::InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
@@ -148,12 +131,13 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
   if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
   report << "scene " << scene.name << " " << shape.width << "x" << shape.height << ", "
          << command.tsgo.labels << " labels\nschedule " << command.schedule.to_string()
-         << ", solver " << to_string(command.solver.kind) << ", max-flow "
-         << to_string(command.solver.maxflow) << near_and_shift_moves_text(command.solver) << "\n"
+         << ", solver " << to_string(command.run.solver.kind()) << ", max-flow "
+         << to_string(command.run.solver.maxflow)
+         << examples::near_and_shift_moves_text(command.run.solver) << "\n"
          << "TSGO step 1: " << problem.seconds << " s on " << resolved_threads(command.tsgo.threads)
          << " threads (not on the run clock, same for every schedule)\n"
-         << examples::memory_line(command.memory, command.solver) << "\n";
-  examples::write_run_report(report, levels.reports(), summary, interrupts);
+         << run.memory_line() << "\n";
+  examples::write_run_report(report, levels.reports(), run.summary, interrupts);
   if (!scene.gt_convention.empty()) report << "GT read as " << scene.gt_convention << "\n";
   if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {
@@ -166,11 +150,12 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
 
 void announce(const examples::StereoCommand& command, const StereoScene& scene) {
   if (command.quiet) return;
-  std::fprintf(
-      stderr, "c2f-stereo: %s %zux%zu, %d labels, schedule %s, solver %s, memory budget %s\n",
-      scene.name.c_str(), scene.shape().width, scene.shape().height, command.tsgo.labels,
-      command.schedule.to_string().c_str(), std::string(to_string(command.solver.kind)).c_str(),
-      command.memory.describe().c_str());
+  std::fprintf(stderr,
+               "c2f-stereo: %s %zux%zu, %d labels, schedule %s, solver %s, memory budget %s\n",
+               scene.name.c_str(), scene.shape().width, scene.shape().height, command.tsgo.labels,
+               command.schedule.to_string().c_str(),
+               std::string(to_string(command.run.solver.kind())).c_str(),
+               command.run.memory->describe().c_str());
 }
 
 /// How the run's labeling scores against the GT: the fixed bad-pixel rates (std::nullopt without
@@ -184,11 +169,12 @@ struct RunScores {
 RunScores write_outputs(const examples::RunRecord& record, const examples::StereoCommand& command,
                         const StereoScene& scene, const StereoProblem& problem,
                         const ScheduleProvider& levels, const LevelPartitionRecorder& partitions,
-                        const Summary& summary, const examples::InterruptWatch& interrupts) {
-  RunScores scores{write_disparity_outputs(record.staging().string(), summary.labeling, scene,
-                                           command.tsgo.labels),
-                   scene_error_line(summary.labeling, scene)};
-  write_summary(record.staging(), command, scene, problem, levels, summary, scores.rates,
+                        const RunReport& run, const examples::InterruptWatch& interrupts) {
+  const Labeling& labeling = run.summary.labeling;
+  RunScores scores{
+      write_disparity_outputs(record.staging().string(), labeling, scene, command.tsgo.labels),
+      scene_error_line(labeling, scene)};
+  write_summary(record.staging(), command, scene, problem, levels, run, scores.rates,
                 scores.dataset_error, interrupts);
   partitions.write(record.staging().string(), scene.shape());
   return scores;
@@ -214,7 +200,7 @@ int main(int argc, char** argv) {
     if (!parsed) return 0;
     examples::StereoCommand command = *parsed;
 
-    set_input_memory_limit(command.memory.ceiling());  // no input may take more to read
+    set_input_memory_limit(command.run.memory->ceiling());  // no input may take more to read
     check_paths(command);
     const StereoScene scene = load_input(command);
     // Outputs are staged and moved into place together at the end: a failed or crashed run
@@ -224,20 +210,18 @@ int main(int argc, char** argv) {
     announce(command, scene);
     require_memory_for(command, scene);
     const StereoProblem problem = build_problem(command, scene);
-    // The recycled move graphs get what the budget leaves.
-    command.solver = solver_within_budget(command, problem);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
     if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
     ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const Summary summary = solve(command, scene, problem, levels, record, partitions, interrupts);
+    const RunReport run = solve(command, scene, problem, levels, record, partitions, interrupts);
 
     const RunScores scores =
-        write_outputs(record, command, scene, problem, levels, partitions, summary, interrupts);
+        write_outputs(record, command, scene, problem, levels, partitions, run, interrupts);
     record.commit();
-    report_end(command, summary, scores, interrupts);
+    report_end(command, run.summary, scores, interrupts);
     return interrupts.exit_code();
   });
 }

@@ -1,6 +1,6 @@
 #include "stereo_options.hpp"
 
-#include "solver_flags.hpp"
+#include "run_flags.hpp"
 #include "tool_options.hpp"
 
 #include <cmath>
@@ -16,7 +16,7 @@ namespace c2f::examples {
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
   std::string schedule = "paper", smoothness = "tsgo_step";
-  SolverFlags solver;
+  RunFlags run;
   ToolOptions options(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -66,8 +66,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                "shrink images by this integer factor (GT divided by it)")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
       .flag("quiet,q", &command.quiet, "no progress on stderr");
-  solver.declare(options);
-  command.rules.declare(options);
+  run.declare(options);
   const auto images = options.parse(argc, argv, {"LEFT RIGHT", 2});
   if (!images) return std::nullopt;
   if (command.scene.empty()) {
@@ -93,8 +92,8 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
-  command.solver = solver.choice();
-  command.memory = solver.budget();
+  command.run = run.config();
+  if (command.allow_non_refining) command.run.limits.level_transfer = LevelTransfer::majority;
   command.tsgo.smoothness =
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });
   command.schedule =
@@ -124,13 +123,6 @@ void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& sc
         " labels, more than 256: give --labels (or --downscale)");
   }
   set_labels(command, vision::label_count(scene, kDefaultLabels));
-}
-
-Options run_options(const StereoCommand& command) {
-  Options options = command.rules.options();
-  options.level_transfer =
-      command.allow_non_refining ? LevelTransfer::majority : LevelTransfer::exact;
-  return options;
 }
 
 }  // namespace c2f::examples

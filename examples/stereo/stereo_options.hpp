@@ -4,12 +4,10 @@
 #include <optional>
 #include <string>
 
-#include "c2f/adapters/solver_choice.hpp"
-#include "c2f/driver/options.hpp"
 #include "c2f/lift/schedule.hpp"
+#include "c2f/run/run_config.hpp"
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
-#include "solver_flags.hpp"
 
 namespace c2f::examples {
 
@@ -22,9 +20,9 @@ struct StereoCommand {
   vision::TsgoOptions tsgo;  ///< tsgo.labels: the label count the run uses
   Schedule schedule;
   bool allow_non_refining = false;
-  SolverChoice solver;
-  MemoryBudget memory;  ///< --memory, else the machine's default
-  RunRuleFlags rules;   ///< plateaus and limits
+  /// The solver, the limits (with the level transfer --allow-non-refining asks for) and the
+  /// memory budget (--memory, else the machine's default, always set).
+  RunConfig run;
   std::string trace;
   std::string export_uai;  ///< --export-uai: the model, written in the UAI format
   bool save_partitions = false;
@@ -46,9 +44,5 @@ void set_labels(StereoCommand& command, int labels);
 /// with a calib.txt beside LEFT; KITTI's 128) when it has one, else kDefaultLabels; then
 /// set_labels. Throws std::invalid_argument naming the scene when its range is above 256.
 void set_labels_from_scene(StereoCommand& command, const vision::StereoScene& scene);
-
-/// The driver options the command asks for: the plateau rules (on the original problem one
-/// sweep of the solver unless --final-plateau says otherwise), limits and level transfer.
-Options run_options(const StereoCommand& command);
 
 }  // namespace c2f::examples

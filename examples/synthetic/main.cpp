@@ -21,18 +21,28 @@ using namespace c2f::vision;
 
 namespace {
 
+/// The run of both solves: ICM within the command's memory budget.
+RunConfig run_config(const examples::SyntheticCommand& command) {
+  RunConfig config;
+  config.solver.original = IcmOptions{};
+  config.limits = command.options;
+  config.memory = command.memory;
+  config.energy_name = "the synthetic problem";
+  return config;
+}
+
 /// One ICM run over `levels`, stopped early by `interrupts`; prints its trace and summary, and
 /// writes the trace to `trace_path` unless that is empty.
 template <class Provider>
 Summary solve(const char* name, const SyntheticProblem& problem, Provider& levels,
-              const Options& options, const examples::InterruptWatch& interrupts,
+              const RunConfig& config, const examples::InterruptWatch& interrupts,
               const std::filesystem::path& trace_path) {
   std::ostringstream trace;
   TraceWriter writer(
       trace, [&](std::span<const Label> ground) { return pixel_error(ground, problem.truth); });
-  IcmSolver solver;
-  Summary summary = coarse_to_fine(problem.energy, levels, solver, options,
-                                   observe_all({std::ref(writer), interrupts.observer()}));
+  const Summary summary =
+      run(problem.energy, levels, config, observe_all({std::ref(writer), interrupts.observer()}))
+          .summary;
   std::cout << "# trace: " << name << "\n"
             << trace.str() << "# summary: " << name << "\n"
             << summary.report() << "\n";
@@ -51,14 +61,12 @@ void report(const char* name, const Summary& summary, const SyntheticProblem& pr
 
 /// Before the problem is made: it and the run's floor (ICM, coarse levels) must fit the budget.
 void require_memory_for(const examples::SyntheticCommand& command) {
-  SolverChoice icm;
-  icm.kind = SolverKind::icm;
-  command.memory.require(
-      "the synthetic problem of " + std::to_string(command.spec.shape.width) + "x" +
-          std::to_string(command.spec.shape.height) + " pixels with " +
-          std::to_string(command.spec.num_labels) + " labels",
-      grid_run_memory_need(icm, command.spec.shape.width, command.spec.shape.height,
-                           command.spec.num_labels, CostStorage::double_precision, 0));
+  command.memory.require("the synthetic problem of " + std::to_string(command.spec.shape.width) +
+                             "x" + std::to_string(command.spec.shape.height) + " pixels with " +
+                             std::to_string(command.spec.num_labels) + " labels",
+                         grid_run_memory_need(run_config(command).solver, command.spec.shape.width,
+                                              command.spec.shape.height, command.spec.num_labels,
+                                              CostStorage::double_precision, 0));
 }
 
 /// With -o, the run's files are staged and land together at the end (an earlier run's files
@@ -112,11 +120,12 @@ int main(int argc, char** argv) {
               << problem.energy.edges().size() << " edges\n";
 
     PartitionList flat_levels;
-    const Summary flat = solve("flat", problem, flat_levels, command.options, interrupts,
-                               staged(output, "trace-flat.csv"));
+    const RunConfig config = run_config(command);
+    const Summary flat =
+        solve("flat", problem, flat_levels, config, interrupts, staged(output, "trace-flat.csv"));
     // After an interrupt the coarse-to-fine run stops at its first step.
-    const Summary c2f = solve("c2f", problem, hierarchy, command.options, interrupts,
-                              staged(output, "trace-c2f.csv"));
+    const Summary c2f =
+        solve("c2f", problem, hierarchy, config, interrupts, staged(output, "trace-c2f.csv"));
 
     report("flat:", flat, problem);
     report("c2f: ", c2f, problem);

@@ -61,75 +61,119 @@ def solve(
     energy: Energy,
     schedule: Schedule = "flat",
     *,
-    solver: str = "expansion",
-    maxflow: str = "dynamic",
-    order: str = "sequential",
-    seed: int = 1,
-    near_radius: int = 0,
-    shift_moves: bool = False,
-    near_levels: str = "original",
-    time_limit: float = 0.0,
-    max_steps: int = 0,
+    method: str = "expansion",
+    options: Optional[Dict[str, Any]] = None,
+    time_limit: Optional[float] = None,
+    max_steps: Optional[int] = None,
     plateau: int = 4,
     plateau_tolerance: float = 0.0,
     start: Union[str, np.ndarray] = "unary_argmin",
     callback: Optional[Callback] = None,
-    memory: float = 0.0,
+    memory: Optional[float] = None,
+    graph_memory: Optional[float] = None,
 ) -> Result:
-    """Minimises `energy`, flat or coarse to fine; the C++ coarse_to_fine with a SolverChoice.
+    """Minimise `energy`, flat or coarse to fine (the run layer's ``c2f::run``).
 
-    schedule: the coarse levels, coarsest first. 'flat' (the original problem only), 'paper'
-        (colour passing CP(1,1) CP(2,1) CP(3,1)), or any schedule text of the library
-        ('cp:1,1 cp:2,1', 'auto:0.01,0.1', and on a grid energy also 'agg:2/cc', 'blocks:4',
-        'threshold:0.5', ...); or a list of your own partitions, each an integer array of
-        group ids of every variable (equal ids: one group), each refining the one before.
-    solver: 'expansion' (alpha-expansion with QPBO moves), 'swap', 'lbp' or 'icm'.
-    maxflow: the graph-cut solvers' max-flow: 'dynamic' (ours, recycled graphs) or 'boost'.
-    order: the order moves are tried in: 'sequential', 'random' (from `seed`) or 'frequency'.
-    near_radius, shift_moves, near_levels: expansion's near moves (labels within the radius of
-        the current one) and shift moves, on the 'original' problem only or on 'all' levels.
-    time_limit: stop once the run clock passes this many seconds (0: no limit).
-    max_steps: stop after this many solver steps over all levels (0: no limit).
-    plateau: a level is refined (the original problem: finished) after this many steps without
-        a decrease (on the original problem the solver's own convergence rule applies).
-    plateau_tolerance: on coarse levels, decreases below this fraction of |E| do not count.
-    start: the first labeling: 'unary_argmin', 'zero', or a labeling of your own (an integer
-        array of shape (N,) or the grid's (H, W)); on a coarse first level each group starts
-        at the label most of its members have in it.
-    callback: called after every step with a dict (time, level, step, energy, variables,
-        at_original, labeling: the original variables' labeling this step stands for, in the
-        result's shape, a copy made per step); returning False stops the run (None or True
-        goes on).
-    memory: the run's memory budget in GiB, as the tools' --memory (0: a quarter of this
+    Parameters
+    ----------
+    energy : Energy
+        The pairwise energy (``Energy.grid``, ``Energy.general``, ``stereo_energy``, ...).
+    schedule : str or sequence of ndarray, default 'flat'
+        The coarse levels, coarsest first: 'flat' (the original problem only), 'paper' (colour
+        passing CP(1,1) CP(2,1) CP(3,1)), any schedule text of the library ('cp:1,1 cp:2,1',
+        'auto:0.01,0.1', and on a grid energy also 'agg:2/cc', 'blocks:4', 'threshold:0.5',
+        ...), or a list of your own partitions, each an integer array of group ids of every
+        variable (equal ids: one group), each refining the one before.
+    method : {'expansion', 'swap', 'lbp', 'icm'}, default 'expansion'
+        The solver: alpha-expansion with QPBO moves, alpha-beta swap, loopy belief propagation
+        or iterated conditional modes.
+    options : dict, optional
+        The method's own options (unknown names are refused):
+
+        - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
+          ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``,
+          ``near_levels`` ('original': near and shift moves on the original problem only, the
+          default; 'all'), ``maxflow`` ('dynamic', ours with recycled graphs, the default;
+          'boost'; 'kolmogorov' in builds with it);
+        - swap: ``order``, ``seed``, ``tolerance``, ``maxflow``;
+        - lbp: ``schedule`` ('sequential' or 'parallel'), ``damping`` in [0, 1);
+        - icm: ``order`` ('sequential' or 'random'), ``seed``, ``tolerance``.
+    time_limit : float, optional
+        Stop once the run clock passes this many seconds (None: no limit).
+    max_steps : int, optional
+        Stop after this many solver steps over all levels (None: no limit).
+    plateau : int, default 4
+        A coarse level is refined after this many steps without a decrease (the original
+        problem ends where the solver has converged: one sweep of its moves).
+    plateau_tolerance : float, default 0
+        On coarse levels, decreases below this fraction of abs(E) do not count.
+    start : str or ndarray, default 'unary_argmin'
+        The first labeling: 'unary_argmin', 'zero', or a labeling of your own (an integer array
+        of shape (N,) or the grid's (H, W)); on a coarse first level each group starts at the
+        label most of its members have in it.
+    callback : callable, optional
+        Called after every step with a dict (time, level, step, energy, variables, at_original,
+        labeling: the original variables' labeling this step stands for, in the result's
+        shape, a copy made per step); returning False stops the run (None or True goes on).
+    memory : float, optional
+        The run's memory budget in GiB, as the tools' --memory (None: a quarter of this
         machine's memory, growing to the run's needs up to half, at most what is available).
-        The run's floor (the energy, the solver's working memory) must fit it, else ValueError
-        naming `memory`; the recycled move graphs get what it leaves, and a coarse level that
-        does not fit is skipped.
+        The run's floor (the energy, the solver's working memory) must fit it; the recycled
+        move graphs get what it leaves, and a coarse level that does not fit is skipped.
+    graph_memory : float, optional
+        At most this many GiB of the budget for recycled move graphs (0: no recycling; None:
+        all that the budget leaves).
 
-    The GIL is released while the solver runs. Ctrl-C ends the run at its next step and raises
-    KeyboardInterrupt with the best result so far as its `result` attribute; an exception
-    raised by the callback is raised the same way. Bad arguments raise ValueError or TypeError
-    naming the argument.
+    Returns
+    -------
+    Result
+        The labeling, its energy, why the run ended, its time, steps, summary and trace.
+
+    Raises
+    ------
+    ValueError, TypeError
+        For a bad argument, naming it (an option as ``options``; a budget the run's floor does
+        not fit as ``memory``).
+    KeyboardInterrupt
+        Ctrl-C ends the run at its next step; the best result so far is the exception's
+        ``result`` attribute (an exception raised by the callback is raised the same way).
+
+    Notes
+    -----
+    The GIL is released while the solver runs.
     """
     return _result(lambda: _solve(
-        energy, list(schedule) if isinstance(schedule, tuple) else schedule, solver, maxflow,
-        order, seed, near_radius, bool(shift_moves), near_levels, time_limit, max_steps, plateau,
-        plateau_tolerance, start, callback, memory))
+        energy, list(schedule) if isinstance(schedule, tuple) else schedule, method=method,
+        options=options, time_limit=time_limit, max_steps=max_steps, plateau=plateau,
+        plateau_tolerance=plateau_tolerance, start=start, callback=callback, memory=memory,
+        graph_memory=graph_memory))
 
 
 def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
            *, smoothness: str = "tsgo_step", truncation: float = 2.0, threads: int = 0,
-           **options: Any) -> Result:
-    """TSGO stereo of two RGB uint8 views (H, W, 3), coarse to fine: the disparities 0..labels-1
-    of the left view are result.labeling ((H, W)). `schedule` takes the stereo presets ('paper',
-    'paper-slic', 'regions', 'aggregated', ...) besides every schedule text; `options` are
-    c2f.solve's (solver, near_radius, shift_moves, time_limit, callback, memory, ...); `threads`
-    the data preparation's cores (0: all); `memory` (GiB, 0: the default) holds the data
-    preparation as well as the run. The same energy and run as `c2f-stereo LEFT RIGHT --labels L
-    --schedule S`."""
+           **run_options: Any) -> Result:
+    """TSGO stereo of two views, coarse to fine: ``c2f-stereo LEFT RIGHT --labels L --schedule S``.
+
+    Parameters
+    ----------
+    left, right : ndarray
+        RGB uint8 views of shape (H, W, 3).
+    labels : int, default 85
+        Disparities 0..labels-1 of the left view (result.labeling, shape (H, W)).
+    schedule : str or sequence of ndarray, default 'paper'
+        Every schedule of ``solve``, and the stereo presets ('paper', 'paper-slic', 'regions',
+        'aggregated', ...).
+    smoothness, truncation : str, float
+        The TSGO pairwise term ('tsgo_step' or 'truncated_linear') and its truncation.
+    threads : int, default 0
+        The data preparation's cores (0: all); the energy is the same for every count.
+    **run_options
+        ``solve``'s keywords (method, options, time_limit, callback, memory, ...); ``memory``
+        (GiB, None: the default) holds the data preparation as well as the run.
+    """
     energy = stereo_energy(left, right, labels, smoothness, truncation, threads,
-                           options.get("memory", 0.0))
-    return solve(energy, schedule, **options)
+                           run_options.get("memory"))
+    return solve(energy, schedule, **run_options)
 
 
 def _result(call: Callable[[], Dict[str, Any]]) -> Result:
@@ -146,28 +190,57 @@ def _result(call: Callable[[], Dict[str, Any]]) -> Result:
 
 
 def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels", *,
-            method: str = "coop", aux: str = "mm", start: str = "zero", lambda_: float = 0.5,
-            theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
+            method: str = "coop", options: Optional[Dict[str, Any]] = None,
+            lambda_: float = 0.5, theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
             kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27, threads: int = 0,
-            time_limit: float = 0.0, max_steps: int = 0, plateau: int = 0,
-            callback: Optional[Callback] = None, memory: float = 0.0) -> Result:
+            time_limit: Optional[float] = None, max_steps: Optional[int] = None,
+            plateau: Union[None, str, int] = None, callback: Optional[Callback] = None,
+            memory: Optional[float] = None) -> Result:
     """Interactive multi-label segmentation by cooperative cuts, as c2f-segment runs it.
 
-    image: (H, W, 3) uint8 RGB. seeds: (H, W) integers, -1 where the user drew nothing, else the
-    pixel's label 0..L-1 (every label needs a seed). A colour GMM per label from its seeds gives
-    the unaries; 8-connected edges in `classes` colour-difference classes carry the cooperative
-    cut (lambda_, theta, alpha: docs/segmentation.md). method: 'coop' or 'potts' (the
-    alpha-expansion baseline on the same data). aux: how the cooperative cut's auxiliary
-    variables are found: 'mm' (majorise-minimise), 'greedy' (with `start`: 'zero' or
-    'current') or 'ceres' (a continuous relaxation). schedule: 'superpixels', 'paper', 'flat' or
-    any schedule text (slic:S levels segment the image). kmeans, gmm_seed, edge_seed: the data
-    preparation's clustering; threads: the cores it runs on (0: all; the result is the same for
-    every count). plateau: steps without decrease that end a coarse level (0: the
-    number of labels or one sweep when shorter; -1: one sweep). memory: the budget in GiB
-    (0: a quarter of this machine's memory, up to half for a run that needs it) that the data
-    preparation must fit (ValueError naming `memory` otherwise); the Potts runs' recycled move
-    graphs get what it leaves. result.labeling is (H, W).
+    Parameters
+    ----------
+    image : ndarray
+        (H, W, 3) uint8 RGB.
+    seeds : ndarray
+        (H, W) integers, -1 where the user drew nothing, else the pixel's label 0..L-1 (every
+        label needs a seed). A colour GMM per label from its seeds gives the unaries;
+        8-connected edges in `classes` colour-difference classes carry the cooperative cut.
+    schedule : str, default 'superpixels'
+        'superpixels', 'paper', 'flat' or any schedule text (slic:S levels segment the image).
+    method : {'coop', 'potts'}, default 'coop'
+        The cooperative cut, or the alpha-expansion baseline on the Potts energy of the same
+        data.
+    options : dict, optional
+        The cooperative cut's solver: ``aux``, how its auxiliary variables are found ('mm',
+        majorise-minimise, the default; 'greedy'; 'ceres', a continuous relaxation),
+        ``start`` (greedy's expansion start: 'zero' or 'current'), ``expansion_cycles``.
+    lambda_, theta, alpha : float
+        The cooperative cut's weight, threshold and ratio (docs/segmentation.md).
+    classes, kmeans, gmm_seed, edge_seed : int, str, int, int
+        The data preparation's clustering.
+    threads : int, default 0
+        The cores the data preparation runs on (0: all; the result is the same for every
+        count).
+    time_limit, max_steps : float, int, optional
+        Limits of the run (None: none).
+    plateau : None, 'sweep' or int
+        Steps without decrease that end a coarse level (None: the number of labels, or one
+        sweep when that is shorter; 'sweep': one sweep).
+    callback : callable, optional
+        As ``solve``'s.
+    memory : float, optional
+        The budget in GiB (None: a quarter of this machine's memory, up to half for a run that
+        needs it) that the data preparation and the run must fit (ValueError naming `memory`
+        otherwise); the recycled move graphs get what it leaves.
+
+    Returns
+    -------
+    Result
+        result.labeling has shape (H, W).
     """
-    return _result(lambda: _segment(image, seeds, method, aux, start, schedule, lambda_, theta,
-                                    alpha, classes, kmeans, gmm_seed, edge_seed, threads,
-                                    time_limit, max_steps, plateau, callback, memory))
+    return _result(lambda: _segment(
+        image, seeds, schedule, method=method, options=options, lambda_=lambda_, theta=theta,
+        alpha=alpha, classes=classes, kmeans=kmeans, gmm_seed=gmm_seed, edge_seed=edge_seed,
+        threads=threads, time_limit=time_limit, max_steps=max_steps, plateau=plateau,
+        callback=callback, memory=memory))

@@ -53,9 +53,9 @@ class Energy:
         down neighbours (and down-right, down-left when connectivity is 8), of weight `weight`
         or weights[y, x, k] (shape (H, W, connectivity / 2)). Labelings come back as (H, W)."""
     @staticmethod
-    def read_uai(path: str, memory: float = 0.0) -> Energy:
+    def read_uai(path: str, memory: Optional[float] = None) -> Energy:
         """A pairwise MARKOV model in the UAI format (energy = -ln potential). The path must be a
-        regular file; `memory` is the budget in GiB (0: the default) that the file and the costs
+        regular file; `memory` is the budget in GiB (None: the default) that the file and the costs
         its declarations imply must fit before they are read (ValueError naming the file)."""
     def write_uai(self, path: str) -> None:
         """Writes the energy as a UAI MARKOV model (potentials exp(-cost), scaled per factor)."""
@@ -83,20 +83,17 @@ class Energy:
 def _solve(
     energy: Energy,
     schedule: Union[str, Sequence[npt.ArrayLike]],
-    solver: str,
-    maxflow: str,
-    order: str,
-    seed: int,
-    near_radius: int,
-    shift_moves: bool,
-    near_levels: str,
-    time_limit: float,
-    max_steps: int,
+    *,
+    method: str,
+    options: Optional[Dict[str, Any]],
+    time_limit: Optional[float],
+    max_steps: Optional[int],
     plateau: int,
     plateau_tolerance: float,
     start: Union[str, npt.ArrayLike],
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
-    memory: float,
+    memory: Optional[float],
+    graph_memory: Optional[float],
 ) -> Dict[str, Any]:
     """The engine of c2f.solve (which documents the arguments); returns a dict."""
 
@@ -111,11 +108,11 @@ def read_stereo_pair(left: str, right: str, gt: str = "", gt_divisor: float = 0.
 
 def stereo_energy(left: npt.ArrayLike, right: npt.ArrayLike, labels: int = 85,
                   smoothness: str = "tsgo_step", truncation: float = 2.0,
-                  threads: int = 0, memory: float = 0.0) -> Energy:
+                  threads: int = 0, memory: Optional[float] = None) -> Energy:
     """The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 of the
     left view on a 4-connected grid; its schedules include the stereo presets and slic:S.
     threads: cores preparing the data (0: all); the energy is the same for every count.
-    memory: the budget in GiB the preparation must fit (0: the machine's default)."""
+    memory: the budget in GiB the preparation must fit (None: the machine's default)."""
 
 def bad_pixel_rates(disparity: npt.ArrayLike, gt: npt.ArrayLike,
                     mask: Optional[npt.ArrayLike] = None) -> Dict[str, Any]:
@@ -129,12 +126,13 @@ def read_segmentation(image: str, seeds: str, gt: str = "", convention: str = "c
     ((H, W) int32, -1 where no seed), 'truth' ((H, W) int32, -1 unscored; None without GT),
     'palette' ((L, 3) RGB colour of each label)."""
 
-def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, method: str, aux: str, start: str,
-             schedule: str, lambda_: float, theta: float, alpha: float, classes: int,
-             kmeans: str, gmm_seed: int, edge_seed: int, threads: int, time_limit: float,
-             max_steps: int, plateau: int,
+def _segment(image: npt.ArrayLike, seeds: npt.ArrayLike, schedule: str, *, method: str,
+             options: Optional[Dict[str, Any]], lambda_: float, theta: float, alpha: float,
+             classes: int, kmeans: str, gmm_seed: int, edge_seed: int, threads: int,
+             time_limit: Optional[float], max_steps: Optional[int],
+             plateau: Union[None, str, int],
              callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
-             memory: float) -> Dict[str, Any]:
+             memory: Optional[float]) -> Dict[str, Any]:
     """The engine of c2f.segment (which documents the arguments); returns a dict."""
 
 def partition(energy: Energy, level: str) -> npt.NDArray[np.int32]:

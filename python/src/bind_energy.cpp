@@ -198,9 +198,9 @@ void bind_energy(py::module_& module) {
             const ReleasedGil free;  // a slow disk or a large model stalls no other thread
             return ModelEnergy{read_uai_file(path, budget), {}};
           },
-          py::arg("path"), py::arg("memory") = 0.0,
+          py::arg("path"), py::arg("memory") = py::none(),
           "A pairwise MARKOV model in the UAI format (energy = -ln potential). The path must be "
-          "a regular file; `memory` is the budget in GiB (0: the default) that the file and the "
+          "a regular file; `memory` is the budget in GiB (None: the default) that the file and the "
           "costs its declarations imply must fit before they are read (ValueError naming the "
           "file otherwise).")
       .def(

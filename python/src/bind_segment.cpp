@@ -8,11 +8,9 @@
 #include <cstdint>
 #include <string>
 
-#include "c2f/adapters/coop/coop_solver.hpp"
-#include "c2f/adapters/graphcut/expansion.hpp"
-#include "c2f/adapters/run_memory.hpp"
-#include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/run_error.hpp"
+#include "c2f/run/segmentation_run.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
@@ -22,6 +20,7 @@
 #include "memory_argument.hpp"
 #include "numpy_input.hpp"
 #include "released_gil.hpp"
+#include "run_arguments.hpp"
 #include "step_record.hpp"
 
 namespace c2f::python {
@@ -100,13 +99,13 @@ vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::h
   return scene;
 }
 
-py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& method,
-                 const std::string& aux, const std::string& start, const std::string& schedule_text,
+py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& schedule_text,
+                 const std::string& method, const py::handle& options,
                  const py::handle& lambda_argument, const py::handle& theta_argument,
                  const py::handle& alpha_argument, const py::handle& classes_argument,
                  const std::string& kmeans, const py::handle& gmm_seed_argument,
                  const py::handle& edge_seed_argument, const py::handle& threads_argument,
-                 const py::handle& time_limit_argument, const py::handle& max_steps_argument,
+                 const py::handle& time_limit, const py::handle& max_steps,
                  const py::handle& plateau_argument, const py::object& callback,
                  const py::handle& memory) {
   const double lambda = real_argument(lambda_argument, "lambda_");
@@ -118,39 +117,48 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
   const auto edge_seed =
       static_cast<std::uint64_t>(integer_argument(edge_seed_argument, "edge_seed", 0, INT64_MAX));
   const int threads = static_cast<int>(integer_argument(threads_argument, "threads", 0, 1024));
-  const double time_limit = real_argument(time_limit_argument, "time_limit");
-  const long max_steps = integer_argument(max_steps_argument, "max_steps", 0, LONG_MAX);
-  const int plateau =
-      static_cast<int>(integer_argument(plateau_argument, "plateau", -1, INT32_MAX));
-  const MemoryBudget budget = memory_budget_from(memory);
-  if (method != "coop" && method != "potts")
-    throw py::value_error("method: expected 'coop' or 'potts', got '" + method + "'");
+  vision::SegmentationRunConfig config;
+  try {
+    config.method = vision::segmentation_method_from_string(method);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("method: ") + error.what());
+  }
+  if (config.method == vision::SegmentationMethod::coop) {
+    config.coop = coop_options_from(options);
+  } else if (!options.is_none() && py::len(options) != 0) {
+    throw py::value_error("options: method 'potts' (alpha-expansion of the Potts energy) has none");
+  }
+  // None: the number of labels, or one sweep when that is shorter; 'sweep': one sweep.
+  if (py::isinstance<py::str>(plateau_argument)) {
+    if (plateau_argument.cast<std::string>() != "sweep")
+      throw py::value_error("plateau: expected None, 'sweep' or a number of steps >= 1");
+    config.plateau = -1;
+  } else if (!plateau_argument.is_none()) {
+    config.plateau = static_cast<int>(integer_argument(plateau_argument, "plateau", 1, INT32_MAX));
+  }
+  config.time_limit_seconds = optional_positive_real(time_limit, "time_limit");
+  config.max_total_steps = optional_positive_count(max_steps, "max_steps");
+  config.memory = memory_budget_from(memory);
+  if (const std::string problem = config.validate(); !problem.empty()) {
+    try {
+      RunConfigError::throw_if(problem);
+    } catch (const RunConfigError& error) {
+      raise_run_error(error);
+    }
+  }
   const vision::SegmentationScene scene = scene_from_arrays(image, seeds);
   const CoopParameters parameters{lambda, theta, alpha};
   if (const std::string problem = parameters.validate(); !problem.empty())
     throw py::value_error(problem);
-  CoopSolverOptions coop;
-  try {
-    coop.strategy = aux_strategy_from_string(aux);
-  } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("aux: ") + error.what());
-  }
-  try {
-    coop.start = expansion_start_from_string(start);
-  } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("start: ") + error.what());
-  }
   if (kmeans != "plusplus" && kmeans != "reference")
     throw py::value_error("kmeans: expected 'plusplus' or 'reference', got '" + kmeans + "'");
   const auto clustering = [&](std::uint64_t seed) {
-    vision::KMeansOptions options =
+    vision::KMeansOptions kmeans_options =
         kmeans == "plusplus" ? vision::plus_plus_kmeans(seed) : vision::reference_kmeans(seed);
-    options.threads = threads;
-    return options;
+    kmeans_options.threads = threads;
+    return kmeans_options;
   };
   const vision::DataPreparation preparation{classes, clustering(gmm_seed), clustering(edge_seed)};
-  if (time_limit < 0)
-    throw py::value_error("time_limit: expected a finite number >= 0 (0: no limit)");
 
   const int num_labels = scene.num_labels();
   Schedule schedule;
@@ -164,46 +172,24 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     throw py::value_error(std::string("schedule: ") + error.what());
   }
 
-  require_memory_within(budget,
+  require_memory_within(*config.memory,
                         "segmenting " + std::to_string(scene.image.cols) + "x" +
                             std::to_string(scene.image.rows) + " pixels into " +
                             std::to_string(num_labels) + " labels",
                         vision::segmentation_memory_estimate(scene.image.total(), num_labels));
   StepRecord record(callback, {scene.image.rows, scene.image.cols});
   Summary summary;
-  std::string report;
-  {
+  try {
     const ReleasedGil free;
     const vision::SegmentationProblem problem =
         vision::segmentation_problem(scene, parameters, preparation);
     ScheduleProvider levels(schedule, scene.shape(), vision::slic_source(scene.image));
-    const auto options_for = [&](std::size_t sweep) {
-      Options options;
-      options.plateau_steps = {
-          plateau > 0 ? plateau : vision::coarse_plateau_steps(sweep, num_labels, plateau < 0)};
-      options.time_limit_seconds = time_limit;
-      options.max_total_steps = max_steps;
-      return options;
-    };
-    if (method == "potts") {
-      // As in c2f-segment: the recycled move graphs get what the budget leaves.
-      const SolverChoice choice = fit_to_memory(SolverChoice{}, problem.potts, budget);
-      ExpansionSolver<> solver(choice.expansion_options());
-      Options options = options_for(solver.quiet_steps_to_converge(problem.potts));
-      options.coarse_level_fits = coarse_level_admission(choice, problem_size(problem.potts));
-      summary = coarse_to_fine(problem.potts, levels, solver, options, std::ref(record));
-    } else {
-      // As in c2f-segment: the cooperative energy beside the Potts one.
-      const CoopSolverOptions fitted =
-          fit_coop_to_memory(coop, problem.coop, problem.potts, budget);
-      CoopSolver solver(fitted);
-      summary = coarse_to_fine(problem.coop, levels, solver,
-                               options_for(solver.quiet_steps_to_converge(problem.coop)),
-                               std::ref(record));
-    }
-    report = summary.report();
+    // As in c2f-segment: the recycled move graphs get what the budget leaves.
+    summary = vision::run_segmentation(problem, levels, config, std::ref(record)).summary;
+  } catch (const RunConfigError& error) {
+    raise_run_error(error);
   }
-  return record.result(summary, report);
+  return record.result(summary, summary.report());
 }
 
 }  // namespace
@@ -214,8 +200,8 @@ void bind_segment(py::module_& module) {
              "A segmentation scene loaded as c2f-segment loads it: a dict with 'image' (RGB "
              "uint8), 'seeds' ((H, W) int32, -1 where no seed), 'truth' ((H, W) int32 labels, -1 "
              "unscored; None without GT) and 'palette' ((L, 3) RGB colour of each label).");
-  module.def("_segment", &segment, py::arg("image"), py::arg("seeds"), py::arg("method"),
-             py::arg("aux"), py::arg("start"), py::arg("schedule"), py::arg("lambda_"),
+  module.def("_segment", &segment, py::arg("image"), py::arg("seeds"), py::arg("schedule"),
+             py::kw_only(), py::arg("method"), py::arg("options"), py::arg("lambda_"),
              py::arg("theta"), py::arg("alpha"), py::arg("classes"), py::arg("kmeans"),
              py::arg("gmm_seed"), py::arg("edge_seed"), py::arg("threads"), py::arg("time_limit"),
              py::arg("max_steps"), py::arg("plateau"), py::arg("callback"), py::arg("memory"),

@@ -170,12 +170,12 @@ void bind_stereo(py::module_& module) {
              "`downscale` (views by area, GT by nearest neighbour divided by the factor).");
   module.def("stereo_energy", &stereo_energy, py::arg("left"), py::arg("right"),
              py::arg("labels") = 85, py::arg("smoothness") = "tsgo_step",
-             py::arg("truncation") = 2.0, py::arg("threads") = 0, py::arg("memory") = 0.0,
+             py::arg("truncation") = 2.0, py::arg("threads") = 0, py::arg("memory") = py::none(),
              "The TSGO stereo energy of two RGB uint8 views (H, W, 3): disparities 0..labels-1 "
              "of the left view, a 4-connected grid. Its schedules include the stereo presets "
              "(paper, paper-slic, regions, aggregated, ...) and slic:S levels on the left view. "
              "threads: cores preparing the data (0: all); the energy is the same for every "
-             "count. memory: the budget in GiB the preparation must fit (0: a quarter of "
+             "count. memory: the budget in GiB the preparation must fit (None: a quarter of "
              "this machine's memory, growing to the run's needs up to half, at most what is "
              "available); ValueError naming it otherwise.");
   module.def("bad_pixel_rates", &bad_pixel_rates, py::arg("disparity"), py::arg("gt"),

@@ -2,10 +2,8 @@
 
 #include <pybind11/pybind11.h>
 
-#include <cmath>
 #include <stdexcept>
 
-#include "c2f/adapters/run_memory.hpp"
 #include "c2f/core/number_text.hpp"
 #include "numpy_input.hpp"
 
@@ -14,15 +12,15 @@ namespace c2f::python {
 namespace py = pybind11;
 
 MemoryBudget memory_budget_from(const py::handle& argument) {
-  const char* const expected = "memory: expected a finite number of GiB >= 0 (0: the default)";
+  if (argument.is_none()) return default_memory_budget();
+  const char* const expected = "memory: expected a finite number of GiB > 0, or None (the default)";
   double gib = 0;
   try {
     gib = real_argument(argument, "memory");
   } catch (const py::value_error&) {
     throw py::value_error(expected);
   }
-  if (gib < 0) throw py::value_error(expected);
-  if (gib == 0) return default_memory_budget();
+  if (gib <= 0) throw py::value_error(expected);
   return memory_budget_of_gib(gib, "memory=" + format_real(gib));
 }
 
@@ -30,25 +28,6 @@ void require_memory_within(const MemoryBudget& budget, const std::string& what,
                            std::optional<std::size_t> bytes) {
   try {
     budget.require(what, bytes);
-  } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("memory: ") + error.what());
-  }
-}
-
-SolverChoice fit_to_memory(SolverChoice choice, const PairwiseEnergy& energy,
-                           const MemoryBudget& budget) {
-  try {
-    return fit_to_budget(choice, problem_size(energy), budget, "the energy");
-  } catch (const std::invalid_argument& error) {
-    throw py::value_error(std::string("memory: ") + error.what());
-  }
-}
-
-CoopSolverOptions fit_coop_to_memory(const CoopSolverOptions& options, const CoopEnergy& coop,
-                                     const PairwiseEnergy& potts, const MemoryBudget& budget) {
-  try {
-    return fit_to_budget(options, coop, energy_memory_bytes(potts), budget,
-                         "the cooperative energy");
   } catch (const std::invalid_argument& error) {
     throw py::value_error(std::string("memory: ") + error.what());
   }

@@ -64,7 +64,7 @@ rng = np.random.default_rng(7)
 energy = c2f.Energy.grid(rng.random((300, 300, 40)), c2f.Term.truncated_linear(8.0), weight=0.2)
 started = threading.Event()
 def solve():
-    c2f.solve(energy, solver="swap", max_steps=10**9, callback=lambda step: started.set())
+    c2f.solve(energy, method="swap", max_steps=10**9, callback=lambda step: started.set())
 """
 
 
@@ -115,8 +115,10 @@ started.wait()
 def test_integer_and_real_arguments_name_themselves(rng):
     energy = c2f.Energy.grid(rng.random((3, 4, 2)))
     for kwargs, error, words in [
-        (dict(seed=-1), ValueError, r"seed: expected an integer in \[0, 9223372036854775807\], got -1"),
-        (dict(near_radius=2**70), ValueError, "near_radius: expected an integer in"),
+        (dict(options={"seed": -1}), ValueError,
+         r"options\['seed'\]: expected an integer in \[0, 9223372036854775807\], got -1"),
+        (dict(options={"near_radius": 2**70}), ValueError,
+         r"options\['near_radius'\]: expected an integer in"),
         (dict(max_steps=1.5), TypeError, "max_steps: expected an integer in .*, got float"),
         (dict(plateau=True), TypeError, "plateau: expected an integer in .*, got bool"),
         (dict(time_limit="10"), TypeError, "time_limit: expected a real number, got str"),
@@ -132,7 +134,7 @@ def test_integer_and_real_arguments_name_themselves(rng):
     with pytest.raises(ValueError, match=r"labels: expected an integer in \[2, 256\], got 100000"):
         c2f.stereo_energy(np.zeros((4, 4, 3), np.uint8), np.zeros((4, 4, 3), np.uint8),
                           labels=100000)
-    assert c2f.solve(energy, seed=np.int64(3), max_steps=np.uint8(2)).steps == 2
+    assert c2f.solve(energy, options={"seed": np.int64(3)}, max_steps=np.uint8(2)).steps == 2
 
 
 @pytest.mark.parametrize("answer", ["stop", 0, np.array([True, False])])
@@ -239,8 +241,9 @@ def test_control_bytes_in_names_reach_messages_escaped(rng):
     energy = c2f.Energy.grid(rng.random((3, 4, 2)))
     for kwargs, words in [
         (dict(schedule="cp:1,1\x00zz"), r"schedule: level 'cp:1,1\\x00zz'"),
-        (dict(solver="exp\x00x"), r"solver: unknown solver 'exp\\x00x'"),
-        (dict(maxflow="\x1b[2J"), r"maxflow: unknown max-flow backend '\\x1B\[2J'"),
+        (dict(method="exp\x00x"), r"method: unknown solver 'exp\\x00x'"),
+        (dict(options={"maxflow": "\x1b[2J"}),
+         r"options\['maxflow'\]: unknown max-flow backend '\\x1B\[2J'"),
     ]:
         with pytest.raises(ValueError, match=words) as caught:
             c2f.solve(energy, **kwargs)

@@ -80,18 +80,27 @@ def test_labelings_are_checked(rng):
 def test_solve_arguments_are_checked(rng):
     energy = grid(rng)
     for kwargs, words in [
-        (dict(solver="simplex"), "solver: "),
-        (dict(maxflow="nope"), "maxflow: "),
+        (dict(method="simplex"), "method: unknown solver 'simplex'"),
+        (dict(options={"maxflow": "nope"}), r"options\['maxflow'\]: "),
+        (dict(options={"damping": 0.5}), "options: 'damping' is not an option of method "
+                                         "'expansion' \\(its options: order, seed, "),
+        (dict(method="lbp", options={"damping": 1.5}), "options: damping must be in "),
+        (dict(options={"tolerance": -1.0}), "options: tolerance must be finite and >= 0"),
         (dict(schedule="cp:9,1"), "schedule: "),
         (dict(schedule="nonsense"), "schedule: "),
         (dict(schedule=[np.zeros(29, dtype=int)]), r"schedule\[0\]: a partition of the energy's 30"),
         (dict(schedule=[np.arange(30) % 2, np.arange(30) % 3]), "schedule: "),
-        (dict(time_limit=-1.0), "time_limit: "),
+        (dict(time_limit=-1.0), "time_limit: expected a number > 0, or None for no limit"),
+        (dict(time_limit=0), "time_limit: expected a number > 0, or None"),
         (dict(max_steps=-2), "max_steps: "),
+        (dict(max_steps=0), "max_steps: expected an integer in \\[1, "),
+        (dict(plateau_tolerance=-0.5), "plateau_tolerance: must be finite and >= 0"),
+        (dict(graph_memory=-1), "graph_memory: expected a number of GiB in \\[0, 65536\\]"),
         (dict(plateau=0), "plateau: "),
         (dict(start="middle"), "start: "),
-        (dict(memory=-1.0), "memory: expected a finite number of GiB >= 0"),
-        (dict(memory=float("nan")), "memory: expected a finite number of GiB >= 0"),
+        (dict(memory=-1.0), "memory: expected a finite number of GiB > 0, or None"),
+        (dict(memory=0), "memory: expected a finite number of GiB > 0, or None"),
+        (dict(memory=float("nan")), "memory: expected a finite number of GiB > 0"),
         # A budget below the run's floor is refused before the run, with both sizes named.
         (dict(memory=1e-6), r"memory: the energy needs .* more than the run's memory budget of "
                             r"1.0 KiB \(memory=1e-06\)"),
@@ -131,7 +140,7 @@ def test_ctrl_c_ends_the_solve_and_keeps_the_best_labeling(python_sigint_handler
             timer.start()
 
     with pytest.raises(KeyboardInterrupt) as caught:
-        c2f.solve(energy, solver="swap", max_steps=100000, callback=start_the_timer_once)
+        c2f.solve(energy, method="swap", max_steps=100000, callback=start_the_timer_once)
     timer.join()
     result = caught.value.result
     assert result.reason == "observer"
@@ -156,7 +165,7 @@ def test_the_gil_is_free_while_solving():
     running.wait()
     before = counter[0]
     start = time.perf_counter()
-    c2f.solve(energy, solver="swap", time_limit=1.0)
+    c2f.solve(energy, method="swap", time_limit=1.0)
     seconds = time.perf_counter() - start
     during = counter[0] - before
     done.set()

@@ -43,7 +43,8 @@ def test_fruits_through_python_and_through_c2f_segment(fruits, tmp_path):
 def test_segment_methods_and_schedules(fruits):
     image, seeds = fruits["image"], fruits["seeds"]
     for kwargs in [dict(method="potts"), dict(schedule="flat", max_steps=5),
-                   dict(aux="greedy", start="current", plateau=-1, max_steps=20)]:
+                   dict(options={"aux": "greedy", "start": "current"}, plateau="sweep",
+                        max_steps=20)]:
         result = c2f.segment(image, seeds, **kwargs)
         assert result.labeling.shape == seeds.shape
         seeded = seeds >= 0
@@ -76,8 +77,8 @@ def test_segment_inputs_are_checked(rng):
     gap[15, 25] = 2
     with pytest.raises(ValueError, match="seeds: label 1 has no seed pixel"):
         c2f.segment(image, gap)
-    with pytest.raises(ValueError, match="aux: "):
-        c2f.segment(image, seeds, aux="magic")
+    with pytest.raises(ValueError, match=r"options\['aux'\]: unknown"):
+        c2f.segment(image, seeds, options={"aux": "magic"})
     with pytest.raises(ValueError, match="method: "):
         c2f.segment(image, seeds, method="graphcut")
     with pytest.raises(TypeError, match="seeds: expected an integer array"):
@@ -86,8 +87,12 @@ def test_segment_inputs_are_checked(rng):
                                          "more than the run's memory budget"):
         c2f.segment(image, seeds, memory=1e-6)
     # A budget that holds the data but not the run's floor is refused too, for both methods.
-    with pytest.raises(ValueError, match="memory: the energy needs "):
+    with pytest.raises(ValueError, match="memory: the Potts energy needs "):
         c2f.segment(image, seeds, method="potts", memory=0.01)
+    with pytest.raises(ValueError, match="options: method 'potts' .* has none"):
+        c2f.segment(image, seeds, method="potts", options={"aux": "mm"})
+    with pytest.raises(ValueError, match="plateau: expected None, 'sweep' or a number"):
+        c2f.segment(image, seeds, plateau="auto-ish")
     with pytest.raises(ValueError, match="memory: the cooperative energy needs "):
         c2f.segment(image, seeds, memory=0.01)
     result = c2f.segment(image, seeds, schedule="flat")

@@ -31,17 +31,17 @@ def test_table_energy_is_no_worse_than_a_local_minimum_and_reports_its_own_energ
     energy = c2f.Energy(rng.random((6, 3)), np.array([[0, 1], [1, 2], [2, 3], [3, 4], [4, 5]]),
                         term=c2f.Term.table(table))
     best = brute_force_minimum(energy)
-    for solver in ["expansion", "swap", "icm", "lbp"]:
-        result = c2f.solve(energy, solver=solver)
+    for method in ["expansion", "swap", "icm", "lbp"]:
+        result = c2f.solve(energy, method=method)
         assert result.energy == pytest.approx(energy.evaluate(result.labeling), abs=1e-12)
         assert result.energy >= best - 1e-12
 
 
-@pytest.mark.parametrize("solver", ["expansion", "swap", "icm"])
+@pytest.mark.parametrize("method", ["expansion", "swap", "icm"])
 @pytest.mark.parametrize("schedule", ["flat", "paper", "cp:2,1/cc flat", "agg:1/cc"])
-def test_move_solvers_never_raise_the_energy(rng, solver, schedule):
+def test_move_solvers_never_raise_the_energy(rng, method, schedule):
     energy = c2f.Energy.grid(rng.random((20, 24, 5)), c2f.Term.truncated_linear(2.0), weight=0.3)
-    result = c2f.solve(energy, schedule, solver=solver)
+    result = c2f.solve(energy, schedule, method=method)
     trace = result.trace
     assert len(trace["energy"]) == result.steps + 1 or len(trace["energy"]) >= result.steps
     assert np.all(np.diff(trace["energy"]) <= 1e-9 * np.abs(trace["energy"][:-1]).max())
@@ -128,7 +128,7 @@ def test_same_result_as_c2f_solve(rng, tmp_path):
 def test_a_run_starts_from_a_labeling_of_ones_own(rng):
     energy = c2f.Energy.grid(rng.random((10, 12, 4)), c2f.Term.potts(), weight=0.5)
     start = rng.integers(0, 4, (10, 12))
-    result = c2f.solve(energy, "flat", start=start, solver="icm")
+    result = c2f.solve(energy, "flat", start=start, method="icm")
     assert result.trace["energy"][0] == pytest.approx(energy.evaluate(start), rel=1e-12)
     assert result.energy <= energy.evaluate(start)
     with pytest.raises(ValueError, match="start: labels must lie in"):

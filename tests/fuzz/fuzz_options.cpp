@@ -53,8 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (tool == 0) {
       if (const auto command = c2f::examples::parse_stereo_command(argc, argv.data())) {
         require(command->tsgo.labels >= 2 && command->tsgo.labels <= 256, "stereo labels");
-        require(std::isfinite(command->rules.time_limit) && command->rules.time_limit >= 0,
-                "time limit");
+        require(command->run.validate().empty(), "run configuration");
+        require(command->run.memory.has_value(), "memory budget");
         require(command->downscale >= 1, "downscale");
       }
     } else if (tool == 1) {
@@ -62,6 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int classes = command->preparation.num_classes;
         require(classes >= 1 && classes <= 256, "classes");
         require(command->parameters.validate().empty(), "coop parameters");
+        require(command->run.validate().empty(), "run configuration");
       }
     } else if (const auto command = c2f::examples::parse_synthetic_command(argc, argv.data())) {
       require(command->spec.shape.width >= 2 && command->spec.shape.height >= 2, "size");

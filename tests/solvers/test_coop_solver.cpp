@@ -7,11 +7,12 @@
 #include <random>
 #include <vector>
 
-#include "c2f/adapters/coop/coop_memory.hpp"
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/coop_run.hpp"
+#include "c2f/run/run_error.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -178,28 +179,38 @@ TEST_CASE("a cooperative-cut run fits its memory budget: its floor and its recyc
   // The floor, as the contract composes it: alpha-expansion's floor on E_h's sizes with the
   // cooperative energy, E_h, the caller's bytes and the solver's own beside it.
   ProblemSize size = problem_size(pairwise_energy(energy, CoopAuxiliary(4, 3)));
-  const auto own = coop_solver_bytes(mm, size);
+  const auto own = working_memory_bytes(mm, size);
   REQUIRE(own.has_value());
   size.energy_bytes += energy_memory_bytes(energy) + kept + *own;
-  const auto floor = run_memory_floor(SolverChoice{}, size);
+  const auto floor = run_memory_floor(SolverSpec{}, size);
   REQUIRE(floor.has_value());
   CHECK(energy_memory_bytes(energy) >= energy.unaries().size_bytes() + energy.edges().size_bytes());
 
   // The recycled graphs get what the budget leaves above the floor; a smaller limit stays.
-  CHECK(fit_to_budget(mm, energy, kept, MemoryBudget{*floor + 12345, "a test"}, "the run")
-            .graph_memory_limit == 12345);
-  CoopSolverOptions capped = mm;
-  capped.graph_memory_limit = 100;
-  const CoopSolverOptions fitted =
-      fit_to_budget(capped, energy, kept, MemoryBudget{*floor + 12345, "a test"}, "the run");
-  CHECK(fitted.graph_memory_limit == 100);
-  CHECK(fitted.strategy == AuxStrategy::mm);
-  CHECK(fitted.start == ExpansionStart::current);
-  CHECK_THROWS_WITH(
-      fit_to_budget(mm, energy, kept, MemoryBudget{*floor - 1, "a test"}, "the run"),
-      Catch::StartsWith("the run needs ") && Catch::Contains("more than the run's memory budget"));
+  CoopRunConfig config;
+  config.solver = mm;
+  config.kept_bytes = kept;
+  config.energy_name = "the run";
+  config.memory = MemoryBudget{*floor + 12345, "a test"};
+  const MemoryPlan plan = plan_run(energy, config);
+  CHECK(plan.floor == *floor);
+  CHECK(plan.graph_memory == 12345);
+  config.solver.graph_memory_limit = 100;
+  CHECK(plan_run(energy, config).graph_memory == 100);
+  config.graph_memory = 50;
+  CHECK(plan_run(energy, config).graph_memory == 50);
+  config.memory = MemoryBudget{*floor - 1, "a test"};
+  try {
+    (void)plan_run(energy, config);
+    FAIL("a floor above the budget was accepted");
+  } catch (const RunConfigError& error) {
+    CHECK(error.field() == "memory");
+    CHECK_THAT(error.problem(), Catch::StartsWith("the run needs ") &&
+                                    Catch::Contains("more than the run's memory budget"));
+  }
   // The relaxation's L-BFGS history counts for the ceres strategy.
-  const auto ceres = coop_solver_bytes(options_for(AuxStrategy::ceres, ExpansionStart::zero), size);
+  const auto ceres =
+      working_memory_bytes(options_for(AuxStrategy::ceres, ExpansionStart::zero), size);
   REQUIRE(ceres.has_value());
   CHECK(*ceres >= *own + 600 * 4 * 40 * sizeof(double));
 

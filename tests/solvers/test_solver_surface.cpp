@@ -1,6 +1,6 @@
 // Every shipped solver (the cooperative-cut solver too) has one surface: options with
 // validate(), last_step() reporting what the step changed, quiet_steps_to_converge(); a run
-// with default options converges; and a solver chosen by name runs the same as one built by
+// with default options converges; and a solver a SolverSpec names runs the same as one built by
 // hand.
 
 #include <catch2/catch.hpp>
@@ -15,10 +15,10 @@
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "c2f/adapters/icm/icm.hpp"
 #include "c2f/adapters/lbp/lbp.hpp"
-#include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/partition_list.hpp"
+#include "c2f/run/solver_spec.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -95,38 +95,38 @@ TEST_CASE("solvers tell when they have converged, and the solver choice agrees",
   const auto expansion_steps = [&](const ExpansionOptions& options) {
     return ExpansionSolver<>(options).quiet_steps_to_converge(seven);
   };
-  SolverChoice near;
+  const auto coarse = [](const SolverSpec& spec) {
+    return std::get<ExpansionOptions>(spec.coarse_options());
+  };
+  ExpansionOptions near;
   near.near_radius = 3;
-  CHECK(expansion_steps(near.expansion_options()) == 21);  // near moves: three sweeps
-  CHECK(near.expansion_options().near_radius == 3);
-  CHECK(near.coarse_expansion_options().near_radius == 0);  // near moves on the original only
-  near.near_levels = NearLevels::all;
-  CHECK(near.coarse_expansion_options().near_radius == 3);
+  CHECK(expansion_steps(near) == 21);  // near moves: three sweeps
+  const SolverSpec near_original = expansion_spec(near);
+  CHECK(std::get<ExpansionOptions>(near_original.original).near_radius == 3);
+  CHECK(coarse(near_original).near_radius == 0);  // near moves on the original only
+  CHECK(coarse(expansion_spec(near, NearLevels::all)).near_radius == 3);
   for (const NearLevels levels : {NearLevels::original, NearLevels::all})
     CHECK(near_levels_from_string(to_string(levels)) == levels);
   CHECK_THROWS_WITH(
       near_levels_from_string("coarse"),
       Catch::Contains("unknown near-move levels 'coarse' (expected original or all)"));
-  near.kind = SolverKind::swap;
-  CHECK_THAT(near.validate(), Catch::Contains("near moves are expansion moves"));
-  SolverChoice shift;
+  ExpansionOptions shift;
   shift.shift_moves = true;
-  CHECK(expansion_steps(shift.expansion_options()) == 9);  // L expansion and two shift moves
+  CHECK(expansion_steps(shift) == 9);  // L expansion and two shift moves
   shift.near_radius = 3;
-  CHECK(expansion_steps(shift.expansion_options()) == 27);
-  CHECK(shift.expansion_options().shift_moves);
-  CHECK_FALSE(shift.coarse_expansion_options().shift_moves);  // on the original problem only
-  shift.near_levels = NearLevels::all;
-  CHECK(shift.coarse_expansion_options().shift_moves);
-  shift.near_radius = 0;
-  shift.kind = SolverKind::lbp;
-  CHECK_THAT(shift.validate(), Catch::Contains("shift moves are made by expansion"));
+  CHECK(expansion_steps(shift) == 27);
+  CHECK_FALSE(coarse(expansion_spec(shift)).shift_moves);  // on the original problem only
+  CHECK(coarse(expansion_spec(shift, NearLevels::all)).shift_moves);
   // Whole options compare: shift moves alone make coarse levels differ from the original.
-  SolverChoice only_shift;
+  ExpansionOptions only_shift;
   only_shift.shift_moves = true;
-  CHECK(only_shift.coarse_expansion_options() != only_shift.expansion_options());
-  only_shift.near_levels = NearLevels::all;
-  CHECK(only_shift.coarse_expansion_options() == only_shift.expansion_options());
+  CHECK(expansion_spec(only_shift).coarse.has_value());
+  CHECK_FALSE(expansion_spec(only_shift, NearLevels::all).coarse.has_value());
+  CHECK_FALSE(expansion_spec(ExpansionOptions{}).coarse.has_value());
+  for (const SolverKind kind :
+       {SolverKind::expansion, SolverKind::swap, SolverKind::lbp, SolverKind::icm}) {
+    CHECK(solver_kind(default_solver_options(kind)) == kind);
+  }
   CHECK_THROWS_WITH(
       solver_kind_from_string("trws"),
       Catch::Contains("unknown solver 'trws' (expected expansion, swap, lbp or icm)"));
@@ -166,14 +166,24 @@ TEST_CASE("every solver validates its options in one shape", "[solvers][surface]
                     Catch::Contains("IcmOptions: order 'frequency' orders labels"));
   CHECK_THROWS_WITH(LbpSolver(LbpOptions{BpSchedule::sequential, 1.0}),
                     Catch::Contains("LbpOptions: damping must be in [0, 1)"));
-  CHECK(SolverChoice{SolverKind::expansion, VisitOrder::frequency}.validate().empty());
-  CHECK_THAT(SolverChoice({SolverKind::lbp, VisitOrder::random}).validate(),
-             Catch::Contains("the order 'random' applies to expansion, swap and icm"));
-  CHECK_THAT(SolverChoice({SolverKind::icm, VisitOrder::frequency}).validate(),
-             Catch::Contains("icm visits variables"));
+  // A SolverSpec names the options' field, and keeps one solver on every level.
+  SolverSpec spec{MaxFlowKind::dynamic, ExpansionOptions{{VisitOrder::frequency}}};
+  CHECK(spec.validate().empty());
+  spec.original = IcmOptions{VisitOrder::frequency};
+  CHECK_THAT(spec.validate(), Catch::StartsWith("original: order 'frequency' orders labels"));
+  spec.original = LbpOptions{};
+  spec.coarse = IcmOptions{};
+  CHECK(spec.validate() ==
+        "coarse: options of icm for a run of lbp (the same solver on every level)");
+  spec.coarse = LbpOptions{BpSchedule::parallel, 2.0};
+  CHECK(spec.validate() == "coarse: damping must be in [0, 1)");
+#ifndef C2F_HAVE_KOLMOGOROV_MAXFLOW
+  CHECK_THAT(SolverSpec{MaxFlowKind::kolmogorov}.validate(),
+             Catch::StartsWith("maxflow: 'kolmogorov' is not in this build"));
+#endif
 }
 
-TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
+TEST_CASE("a solver a SolverSpec names runs exactly like the one built by hand",
           "[solvers][surface][driver]") {
   Rng rng(99);
   const PairwiseEnergy energy = potts_grid(rng, 12, 9, 4);
@@ -186,24 +196,28 @@ TEST_CASE("a solver chosen by name runs exactly like the one built by hand",
     PartitionList provider({levels[0], intersect(levels[0], levels[1])});
     return coarse_to_fine(energy, provider, solver, options);
   };
-  auto by_name = [&](SolverChoice choice) {
+  auto by_name = [&](SolverOptions solver, MaxFlowKind maxflow = MaxFlowKind::dynamic) {
     PartitionList provider({levels[0], intersect(levels[0], levels[1])});
-    return with_chosen_solvers(
-        choice, [&](auto&& solvers) { return coarse_to_fine(energy, provider, solvers, options); });
+    return with_solvers(SolverSpec{maxflow, solver}, [&](auto&& solvers) {
+      return coarse_to_fine(energy, provider, solvers, options);
+    });
   };
-  const Summary expansion = by_name({SolverKind::expansion, VisitOrder::random, 5});
+  const Summary expansion = by_name(ExpansionOptions{{VisitOrder::random, 5}});
   CHECK(expansion.labeling ==
         by_hand(ExpansionSolver<>(ExpansionOptions{{VisitOrder::random, 5}})).labeling);
-  CHECK(by_name({SolverKind::swap}).labeling == by_hand(SwapSolver<>()).labeling);
-  CHECK(by_name({SolverKind::lbp}).labeling == by_hand(LbpSolver()).labeling);
-  const Summary icm = by_name({SolverKind::icm, VisitOrder::random, 3});
+  CHECK(by_name(ExpansionOptions{}, MaxFlowKind::boost).labeling ==
+        by_hand(ExpansionSolver<BoostMaxFlow>()).labeling);
+  CHECK(by_name(SwapOptions{}).labeling == by_hand(SwapSolver<>()).labeling);
+  CHECK(by_name(LbpOptions{BpSchedule::parallel, 0.25}).labeling ==
+        by_hand(LbpSolver(LbpOptions{BpSchedule::parallel, 0.25})).labeling);
+  const Summary icm = by_name(IcmOptions{VisitOrder::random, 3});
   CHECK(icm.labeling == by_hand(IcmSolver(IcmOptions{VisitOrder::random, 3})).labeling);
   CHECK(icm.total_steps > 0);
-  CHECK_THROWS_WITH(by_name({SolverKind::lbp, VisitOrder::frequency}),
-                    Catch::Contains("solver choice: lbp"));
+  CHECK_THROWS_WITH(by_name(IcmOptions{VisitOrder::frequency}),
+                    Catch::StartsWith("solver.original: order 'frequency'"));
 }
 
-TEST_CASE("near moves chosen by name are made where near_levels says",
+TEST_CASE("near moves a SolverSpec names are made where expansion_spec's levels say",
           "[solvers][surface][driver]") {
   Rng rng(77);
   const PairwiseEnergy energy = potts_grid(rng, 30, 24, 6);
@@ -224,12 +238,11 @@ TEST_CASE("near moves chosen by name are made where near_levels says",
     return seen;
   };
   auto by_name = [&](NearLevels levels, bool shift_moves = false) {
-    SolverChoice choice;
-    choice.near_radius = shift_moves ? 0 : 1;
-    choice.shift_moves = shift_moves;
-    choice.near_levels = levels;
+    ExpansionOptions moves;
+    moves.near_radius = shift_moves ? 0 : 1;
+    moves.shift_moves = shift_moves;
     return energies([&](PartitionList& provider, const Observer& observer) {
-      with_chosen_solvers(choice, [&](auto&& solvers) {
+      with_solvers(expansion_spec(moves, levels), [&](auto&& solvers) {
         return coarse_to_fine(energy, provider, solvers, options, observer);
       });
     });

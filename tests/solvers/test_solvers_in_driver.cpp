@@ -8,10 +8,10 @@
 #include "c2f/adapters/graphcut/swap.hpp"
 #include "c2f/adapters/icm/icm.hpp"
 #include "c2f/adapters/lbp/lbp.hpp"
-#include "c2f/adapters/solver_choice.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/lift/partition_list.hpp"
+#include "c2f/run/solver_spec.hpp"
 #include "support/tiny_models.hpp"
 
 using namespace c2f;

@@ -129,6 +129,7 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
     }
     if (!improved) break;
   }
+  kept_bytes_ = std::max(kept_bytes_, expansion.kept_bytes());
   return Labeling(expansion.labeling().begin(), expansion.labeling().end());
 }
 

@@ -1,6 +1,9 @@
 #include "c2f/adapters/graphcut/move_options.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "c2f/core/memory_need.hpp"
 
 namespace c2f {
 
@@ -15,6 +18,51 @@ std::string ExpansionOptions::validate() const {
   if (!std::isfinite(near_sweep_gain) || near_sweep_gain < 0.0)
     return "near_sweep_gain must be finite and >= 0";
   return {};
+}
+
+std::optional<std::size_t> move_solver_bytes(const ProblemSize& size, GraphStorage storage) {
+  const std::size_t scale = storage == GraphStorage::adjacency_lists ? 2 : 1;
+  const auto nodes = checked_product({size.variables, 300 * scale});
+  const auto arcs = checked_product({size.edges, 240 * scale});
+  if (!nodes || !arcs) return std::nullopt;
+  return *nodes + *arcs;
+}
+
+std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
+                                                const ProblemSize& size, GraphStorage storage) {
+  const auto one = move_solver_bytes(size, storage);
+  const bool second = options.near_radius > 0 || options.shift_moves;
+  return one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;
+}
+
+std::optional<std::size_t> working_memory_bytes(const SwapOptions& /*options*/,
+                                                const ProblemSize& size, GraphStorage storage) {
+  return move_solver_bytes(size, storage);
+}
+
+namespace {
+
+std::optional<std::size_t> graphs_bytes(std::size_t moves, const ProblemSize& size,
+                                        GraphStorage storage) {
+  const auto one = move_solver_bytes(size, storage);
+  return one ? checked_product({*one, moves}) : one;
+}
+
+std::size_t label_count(const ProblemSize& size) {
+  return static_cast<std::size_t>(std::max(size.labels, 0));
+}
+
+}  // namespace
+
+std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& /*options*/,
+                                              const ProblemSize& size, GraphStorage storage) {
+  return graphs_bytes(label_count(size), size, storage);
+}
+
+std::optional<std::size_t> wanted_graph_bytes(const SwapOptions& /*options*/,
+                                              const ProblemSize& size, GraphStorage storage) {
+  const std::size_t labels = label_count(size);
+  return graphs_bytes(labels * (labels + 1) / 2, size, storage);
 }
 
 }  // namespace c2f

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+
 #include <stdexcept>
+#include "c2f/core/memory_need.hpp"
 
 namespace c2f {
 
@@ -13,6 +15,11 @@ std::string IcmOptions::validate() const {
     return "order 'frequency' orders labels, and ICM visits variables (use sequential or random)";
   }
   return {};
+}
+
+std::optional<std::size_t> working_memory_bytes(const IcmOptions& /*options*/,
+                                                const ProblemSize& size) {
+  return checked_product({size.variables, 16});
 }
 
 IcmSolver::IcmSolver(IcmOptions options) : options_(options), rng_state_(options.seed) {

@@ -1,5 +1,6 @@
 #include "c2f/adapters/lbp/lbp.hpp"
 #include "c2f/core/enum_names.hpp"
+#include "c2f/core/memory_need.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,12 @@ BpSchedule bp_schedule_from_string(std::string_view text) {
 std::string LbpOptions::validate() const {
   if (!(damping >= 0.0 && damping < 1.0)) return "damping must be in [0, 1)";
   return {};
+}
+
+std::optional<std::size_t> working_memory_bytes(const LbpOptions& /*options*/,
+                                                const ProblemSize& size) {
+  return checked_product({size.edges * 4 + size.variables * 3,
+                          static_cast<std::size_t>(std::max(size.labels, 1)), sizeof(double)});
 }
 
 LbpSolver::LbpSolver(LbpOptions options) : options_(options) {

@@ -79,4 +79,9 @@ std::size_t energy_memory_bytes(const PairwiseEnergy& energy) {
   return bytes;
 }
 
+ProblemSize problem_size(const PairwiseEnergy& energy) {
+  return {energy.num_variables(), energy.num_labels(), energy.edges().size(),
+          energy_memory_bytes(energy)};
+}
+
 }  // namespace c2f

@@ -1,6 +1,6 @@
 // Uses every component of an installed c2f through the umbrella header: a stereo schedule
-// preset (vision), colour-passing levels (lift), alpha-expansion chosen by name (graphcut,
-// solvers) in the driver. Exits 0 only when the run finishes on the original problem with an
+// preset (vision), colour-passing levels (lift), alpha-expansion run by the run layer (graphcut,
+// run) with the driver. Exits 0 only when the run finishes on the original problem with an
 // energy equal to evaluate() of its labeling and no higher than the flat run's start.
 #include <c2f/c2f.hpp>
 
@@ -16,9 +16,8 @@ int main() {
       shape, c2f::Connectivity::four, 4, std::move(unaries), c2f::PairwiseTerm::tsgo_step(),
       [](c2f::VariableIndex, c2f::VariableIndex) { return 0.3125; });
   c2f::ScheduleProvider levels(c2f::vision::parse_stereo_schedule("paper"), shape);
-  const c2f::Summary summary = c2f::with_chosen_solvers(
-      c2f::SolverChoice{c2f::SolverKind::expansion},
-      [&](auto&& solvers) { return c2f::coarse_to_fine(energy, levels, solvers, c2f::Options{}); });
+  const c2f::RunConfig config;  // alpha-expansion within the machine's default memory budget
+  const c2f::Summary summary = c2f::run(energy, levels, config).summary;
   const double start =
       energy.evaluate(c2f::initial_labeling(energy, c2f::InitialLabeling::unary_argmin));
   std::cout << "coarse-to-fine " << summary.energy << " from " << start << " in "

@@ -2,7 +2,6 @@
 // Umbrella header: every public header of the c2f library (the optional GPL-3 max-flow backend,
 // c2f/adapters/maxflow/kolmogorov_maxflow.hpp, is left out: include it by name).
 
-#include "c2f/adapters/coop/coop_memory.hpp"
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"
@@ -14,8 +13,6 @@
 #include "c2f/adapters/maxflow/boost_maxflow.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
-#include "c2f/adapters/run_memory.hpp"
-#include "c2f/adapters/solver_choice.hpp"
 #include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/default_init_allocator.hpp"
@@ -59,6 +56,13 @@
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/lift/threshold_partition.hpp"
 #include "c2f/lift/transfer.hpp"
+#include "c2f/run/coop_run.hpp"
+#include "c2f/run/memory_plan.hpp"
+#include "c2f/run/run.hpp"
+#include "c2f/run/run_config.hpp"
+#include "c2f/run/run_error.hpp"
+#include "c2f/run/segmentation_run.hpp"
+#include "c2f/run/solver_spec.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 #include "c2f/vision/segmentation/colour_gmm.hpp"

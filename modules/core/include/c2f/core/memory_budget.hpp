@@ -51,4 +51,17 @@ struct MemoryBudget {
 /// The bytes the arrays of `energy` take: its unaries, terms and edges.
 [[nodiscard]] std::size_t energy_memory_bytes(const PairwiseEnergy& energy);
 
+/// The sizes of a problem that a solver's memory depends on (each solver's options answer
+/// their own working memory from it: working_memory_bytes), known before the energy is built
+/// or read from it (problem_size).
+struct ProblemSize {
+  std::size_t variables = 0;
+  int labels = 0;
+  std::size_t edges = 0;
+  std::size_t energy_bytes = 0;  ///< what the energy's arrays take (energy_memory_bytes)
+};
+
+/// The sizes of `energy`.
+[[nodiscard]] ProblemSize problem_size(const PairwiseEnergy& energy);
+
 }  // namespace c2f

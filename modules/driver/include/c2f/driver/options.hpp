@@ -62,7 +62,7 @@ struct Options {
   LevelTransfer level_transfer = LevelTransfer::exact;
   /// When set, asked with each coarse level's number of groups, after its partition is built
   /// and before its energy is reduced, whether the level fits (e.g. the run's memory budget:
-  /// coarse_level_admission in c2f/adapters/run_memory.hpp). A level it declines is skipped:
+  /// coarse_level_admission in c2f/run/memory_plan.hpp). A level it declines is skipped:
   /// nothing is reduced or solved there (LevelSummary::skipped) and the next level starts from
   /// the last level solved. Unset: every level is solved.
   std::function<bool(std::size_t groups)> coarse_level_fits;

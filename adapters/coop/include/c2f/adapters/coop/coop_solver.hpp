@@ -65,8 +65,8 @@ struct CoopSolverOptions {
   int expansion_cycles = 10;
   RelaxationOptions relaxation;  ///< ceres only
   /// Bytes each step's alpha-expansion may keep in recycled move graphs
-  /// (MoveOptions::graph_memory_limit); fit_to_budget (coop_memory.hpp) sets it from a run's
-  /// memory budget.
+  /// (MoveOptions::graph_memory_limit); the run layer (c2f/run/coop_run.hpp) lowers it to what
+  /// a run's memory budget leaves.
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
 
   /// Empty when usable, else a message naming the field.
@@ -106,6 +106,9 @@ class CoopSolver {
   [[nodiscard]] const CoopStep& last_step() const noexcept { return last_; }
   /// The current auxiliary variables.
   [[nodiscard]] const CoopAuxiliary& aux() const noexcept { return h_; }
+  /// The most optional memory (recycled move graphs, kept move problems) any of this solver's
+  /// alpha-expansions has held (within options.graph_memory_limit).
+  [[nodiscard]] std::size_t kept_bytes() const noexcept { return kept_bytes_; }
 
  private:
   struct Relaxation;
@@ -127,6 +130,7 @@ class CoopSolver {
   std::size_t next_flip_ = 0;     ///< greedy: index l * K + g of the next entry to flip
   std::ptrdiff_t last_kept_flip_ = -1;
   std::unique_ptr<Relaxation> relaxation_;
+  std::size_t kept_bytes_ = 0;
 };
 
 static_assert(AnytimeSolver<CoopSolver, CoopEnergy>);

@@ -112,6 +112,11 @@ class ExpansionSolver {
   [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
   /// What the last step() did (all zero before the first step of a binding).
   [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
+  /// The optional memory in use (within options.graph_memory_limit): the kept move problems and
+  /// the recycled move graphs.
+  [[nodiscard]] std::size_t kept_bytes() const noexcept {
+    return problems_.memory_bytes() + state_.moves.recycled_bytes();
+  }
 
  private:
   /// Steps of a sweep spent on shift moves: up, then down.

@@ -3,10 +3,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/labeling.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/visit_order.hpp"
 
 namespace c2f {
@@ -60,6 +62,40 @@ struct ExpansionOptions : MoveOptions {
   [[nodiscard]] std::string validate() const;
   bool operator==(const ExpansionOptions&) const = default;
 };
+
+/// How a max-flow backend stores its graphs, for the memory estimates below: in flat arrays
+/// (ours, Kolmogorov's) or in adjacency lists, counted at twice the bytes (Boost Graph's).
+enum class GraphStorage { arrays, adjacency_lists };
+
+/// The bytes one binary-move solver works in on a problem of `size`: per variable and per edge,
+/// for the plain and the doubled QPBO graph with their capacities and problems, the move's d and
+/// p and its outputs (300 and 240 bytes with arrays: a flat Teddy run without recycling peaks at
+/// 344 MiB, which this puts at 380; adjacency lists are counted at twice that, 453 MiB against
+/// 505). std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> move_solver_bytes(const ProblemSize& size,
+                                                           GraphStorage storage);
+
+/// What alpha-expansion with `options` works in on a problem of `size` besides its optional
+/// memory (graph_memory_limit): one binary-move solver, two with near or shift moves.
+/// std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
+                                                              const ProblemSize& size,
+                                                              GraphStorage storage);
+/// The same for alpha-beta swap: one binary-move solver.
+[[nodiscard]] std::optional<std::size_t> working_memory_bytes(const SwapOptions& options,
+                                                              const ProblemSize& size,
+                                                              GraphStorage storage);
+
+/// The optional memory alpha-expansion would use on a problem of `size` if it had no limit: a
+/// recycled move graph per label, each a binary-move solver's size. std::nullopt when the count
+/// overflows.
+[[nodiscard]] std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& options,
+                                                            const ProblemSize& size,
+                                                            GraphStorage storage);
+/// The same for alpha-beta swap: a recycled move graph per pair of labels.
+[[nodiscard]] std::optional<std::size_t> wanted_graph_bytes(const SwapOptions& options,
+                                                            const ProblemSize& size,
+                                                            GraphStorage storage);
 
 /// What the last step of a graph-cut solver did.
 struct MoveStep : StepOutcome {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/visit_order.hpp"
 
@@ -26,7 +28,13 @@ struct IcmOptions {
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
+  bool operator==(const IcmOptions&) const = default;
 };
+
+/// What IcmSolver with `options` works in on a problem of `size`: its labeling and local costs
+/// (16 bytes per variable). std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> working_memory_bytes(const IcmOptions& options,
+                                                              const ProblemSize& size);
 
 class IcmSolver {
  public:

@@ -10,6 +10,7 @@
 // O(L^2) otherwise.
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -17,6 +18,7 @@
 
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/edge_incidence.hpp"
+#include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -36,7 +38,13 @@ struct LbpOptions {
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
+  bool operator==(const LbpOptions&) const = default;
 };
+
+/// What LbpSolver with `options` works in on a problem of `size`: two message arrays of two
+/// per edge and label, beliefs and scratch. std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> working_memory_bytes(const LbpOptions& options,
+                                                              const ProblemSize& size);
 
 /// What the last BP iteration did.
 struct LbpStep : StepOutcome {

@@ -1,15 +1,16 @@
-// A run's memory budget: how it is chosen and reported, and how it is split between the run's
-// floor and the recycled move graphs.
+// A run's memory budget: how it is chosen and reported, what each solver says it works in, and
+// how the run layer splits the budget between the run's floor, the recycled move graphs and
+// coarse levels.
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <limits>
 
-#include "c2f/adapters/run_memory.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/memory_need.hpp"
+#include "c2f/run/memory_plan.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;
@@ -49,20 +50,60 @@ TEST_CASE("the default budget is a quarter of the machine, growing to a run's ne
   CHECK_NOTHROW(two.require("a small run", std::size_t{1} << 20));
 }
 
-TEST_CASE("the recycled graphs get what the budget leaves above the run's floor", "[memory]") {
+namespace {
+
+/// Expansion with near moves of radius 3 on the levels `levels` says.
+SolverSpec near_expansion(NearLevels levels) {
+  ExpansionOptions options;
+  options.near_radius = 3;
+  return expansion_spec(options, levels);
+}
+
+}  // namespace
+
+TEST_CASE("each solver states its working memory, and the floor adds the energy's",
+          "[memory][run]") {
+  test::Rng rng(8);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
+  const ProblemSize size = problem_size(energy);
+  CHECK(size.variables == 600);
+  CHECK(size.labels == 6);
+  CHECK(size.energy_bytes == energy_memory_bytes(energy));
+  // Graph cuts: 300 bytes per variable and 240 per edge per binary-move solver, twice that for
+  // adjacency lists; near or shift moves add a second solver.
+  const std::size_t one = 600 * 300 + energy.edges().size() * 240;
+  CHECK(move_solver_bytes(size, GraphStorage::arrays) == one);
+  CHECK(move_solver_bytes(size, GraphStorage::adjacency_lists) == 2 * one);
+  ExpansionOptions near;
+  near.near_radius = 3;
+  CHECK(working_memory_bytes(ExpansionOptions{}, size, GraphStorage::arrays) == one);
+  CHECK(working_memory_bytes(near, size, GraphStorage::arrays) == 2 * one);
+  CHECK(working_memory_bytes(SwapOptions{}, size, GraphStorage::arrays) == one);
+  CHECK(wanted_graph_bytes(ExpansionOptions{}, size, GraphStorage::arrays) == 6 * one);
+  CHECK(wanted_graph_bytes(SwapOptions{}, size, GraphStorage::arrays) == 21 * one);
+  CHECK(working_memory_bytes(LbpOptions{}, size) ==
+        (energy.edges().size() * 4 + 600 * 3) * 6 * sizeof(double));
+  CHECK(working_memory_bytes(IcmOptions{}, size) == 600 * 16);
+  CHECK_FALSE(move_solver_bytes({std::size_t{1} << 62, 2, 0, 0}, GraphStorage::arrays));
+  // The run layer asks the spec's solver on its backend.
+  CHECK(working_memory_bytes(SolverOptions{SwapOptions{}}, MaxFlowKind::boost, size) == 2 * one);
+  CHECK(working_memory_bytes(SolverOptions{IcmOptions{}}, MaxFlowKind::dynamic, size) == 600 * 16);
+
+  const auto floor = run_memory_floor(SolverSpec{}, size);
+  REQUIRE(floor.has_value());
+  CHECK(*floor == (std::size_t{128} << 20) + size.energy_bytes + 600 * 64 + one);
+  CHECK(*run_memory_floor(near_expansion(NearLevels::original), size) == *floor + one);
+}
+
+TEST_CASE("the recycled graphs get what the budget leaves above the run's floor", "[memory][run]") {
   test::Rng rng(8);
   const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
   CHECK(energy_memory_bytes(energy) >=
         energy.unaries().bytes() + energy.edges().size() * sizeof(Edge));
-  SolverChoice choice;
-  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
+  const SolverSpec spec;
   const ProblemSize size = problem_size(energy);
-  const auto floor = run_memory_floor(choice, size);
+  const auto floor = run_memory_floor(spec, size);
   REQUIRE(floor.has_value());
-  // Near and shift moves add a second solver's working memory.
-  SolverChoice near = choice;
-  near.near_radius = 3;
-  CHECK(*run_memory_floor(near, size) > *floor);
   // The grid estimate before building matches the built energy's sizes.
   const auto predicted = grid_problem_size(30, 20, 6, CostStorage::double_precision);
   REQUIRE(predicted.has_value());
@@ -86,79 +127,73 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
                            std::vector<Edge>(single.edges().begin(), single.edges().end()))));
 
   const MemoryBudget budget{*floor + 12345, "a test"};
-  const SolverChoice fitted = fit_to_budget(choice, size, budget, "the run");
-  CHECK(fitted.graph_memory_limit == 12345);
-  // No limit of its own: unfitted, the solvers get MoveOptions' default; fitted, what the
-  // budget leaves.
-  const SolverChoice unset;
-  CHECK(unset.expansion_options().graph_memory_limit == MoveOptions{}.graph_memory_limit);
+  const MemoryPlan plan = plan_memory(spec, size, budget, std::nullopt, "the run");
+  CHECK(plan.floor == *floor);
+  CHECK(plan.budget == *floor + 12345);
+  CHECK(plan.graph_memory == 12345);
+  // Unlimited by the run: all the budget leaves, beyond MoveOptions' default too.
   const MemoryBudget roomy{*floor + MoveOptions{}.graph_memory_limit + 1, "a test"};
-  CHECK(fit_to_budget(unset, size, roomy, "the run").expansion_options().graph_memory_limit ==
+  CHECK(plan_memory(spec, size, roomy, std::nullopt, "the run").graph_memory ==
         MoveOptions{}.graph_memory_limit + 1);
-  CHECK(fit_to_budget(unset, size, budget, "the run").swap_options().graph_memory_limit == 12345);
-  choice.graph_memory_limit = 100;  // a smaller limit given stays
-  CHECK(fit_to_budget(choice, size, budget, "the run").graph_memory_limit == 100);
+  // A smaller limit given stays; the spec's options get the plan's limit on every level.
+  CHECK(plan_memory(spec, size, budget, 100, "the run").graph_memory == 100);
+  const SolverSpec limited = with_graph_memory(near_expansion(NearLevels::original), 777);
+  CHECK(std::get<ExpansionOptions>(limited.original).graph_memory_limit == 777);
+  CHECK(std::get<ExpansionOptions>(limited.coarse_options()).graph_memory_limit == 777);
+  // A default budget grows to the floor up to its ceiling.
+  const MemoryBudget growing{*floor / 2, "a share", *floor * 2};
+  CHECK(plan_memory(spec, size, growing, std::nullopt, "the run").budget == *floor);
   const MemoryBudget small{*floor - 1, "a test"};
   CHECK_THROWS_WITH(
-      fit_to_budget(choice, size, small, "the run"),
+      plan_memory(spec, size, small, std::nullopt, "the run"),
       Catch::StartsWith("the run needs ") &&
           Catch::EndsWith("more than the run's memory budget of " + small.describe()));
 }
 
 TEST_CASE("a coarse level is solved when its reduced energy and solver fit the room left",
-          "[memory]") {
+          "[memory][run]") {
   test::Rng rng(9);
   const PairwiseEnergy energy = test::random_grid_energy(rng, 30, 20, 6);
   const ProblemSize size = problem_size(energy);
-  SolverChoice choice;
-  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
-  const auto floor = run_memory_floor(choice, size);
+  const SolverSpec spec;
+  const auto floor = run_memory_floor(spec, size);
   REQUIRE(floor.has_value());
   // The level's reduced energy (double unaries, at most the original's edges), its solver and
   // its recycled graphs (none here: a limit of 0).
-  choice.graph_memory_limit = 0;
-  const auto level = coarse_level_memory(choice, size, 50);
+  const auto level = coarse_level_memory(spec, size, 50, 0);
   REQUIRE(level.has_value());
-  const auto solver_alone = coarse_level_memory(choice, size, 0);
+  const auto solver_alone = coarse_level_memory(spec, size, 0, 0);
   REQUIRE(solver_alone.has_value());
   CHECK(*level - *solver_alone >= 50 * 6 * sizeof(double));
-  CHECK(*coarse_level_memory(choice, size, 600) > *level);
-  // Unfitted: every level is admitted.
-  CHECK(coarse_level_admission(choice, size)(600));
-  // Fitted with all the budget to the graphs, the room is the original solver's share and the
+  CHECK(*coarse_level_memory(spec, size, 600, 0) > *level);
+  // Planned with all the budget to the graphs, the room is the original solver's share and the
   // graphs': small levels fit, a level as large as the original does not (its reduced energy
   // comes on top).
-  choice.graph_memory_limit = std::numeric_limits<std::size_t>::max();
-  const SolverChoice fitted = fit_to_budget(choice, size, MemoryBudget{*floor + 4096, "t"}, "run");
-  CHECK(*coarse_level_memory(fitted, size, 50) > *level);  // with its graphs
-  const auto fits = coarse_level_admission(fitted, size);
+  const MemoryPlan plan =
+      plan_memory(spec, size, MemoryBudget{*floor + 4096, "t"}, std::nullopt, "run");
+  CHECK(*coarse_level_memory(spec, size, 50, plan.graph_memory) > *level);  // with its graphs
+  const auto fits = coarse_level_admission(spec, size, plan);
   CHECK(fits(50));
   CHECK_FALSE(fits(600));
   // A smaller graph limit leaves the rest of the budget to coarse levels too.
-  SolverChoice capped = choice;
-  capped.graph_memory_limit = 0;
   const auto roomy = coarse_level_admission(
-      fit_to_budget(capped, size, MemoryBudget{*floor + *level * 4, "t"}, "run"), size);
+      spec, size, plan_memory(spec, size, MemoryBudget{*floor + *level * 4, "t"}, 0, "run"));
   CHECK(roomy(600));
   // Near moves on the original problem only: the coarse solver has no second solver.
-  SolverChoice near = choice;
-  near.graph_memory_limit = 0;
-  near.near_radius = 3;
-  CHECK(coarse_level_memory(near, size, 50) == level);
-  near.near_levels = NearLevels::all;
-  CHECK(*coarse_level_memory(near, size, 50) > *level);
+  CHECK(coarse_level_memory(near_expansion(NearLevels::original), size, 50, 0) == level);
+  CHECK(*coarse_level_memory(near_expansion(NearLevels::all), size, 50, 0) > *level);
 }
 
-TEST_CASE("a grid run needs the larger of its preparation and its floor", "[memory]") {
-  SolverChoice choice;
+TEST_CASE("a grid run needs the larger of its preparation and its floor", "[memory][run]") {
+  const SolverSpec spec;
   const auto floor =
-      run_memory_floor(choice, *grid_problem_size(30, 20, 6, CostStorage::double_precision));
+      run_memory_floor(spec, *grid_problem_size(30, 20, 6, CostStorage::double_precision));
   REQUIRE(floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, 0) == floor);
-  CHECK(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, *floor + 1) ==
+  CHECK(grid_run_memory_need(spec, 30, 20, 6, CostStorage::double_precision, 0) == floor);
+  CHECK(grid_run_memory_need(spec, 30, 20, 6, CostStorage::double_precision, *floor + 1) ==
         *floor + 1);
   // An overflowing preparation or grid is "beyond std::size_t", never a small number.
-  CHECK_FALSE(grid_run_memory_need(choice, 30, 20, 6, CostStorage::double_precision, std::nullopt));
-  CHECK_FALSE(grid_run_memory_need(choice, std::size_t{1} << 40, std::size_t{1} << 30, 256,
+  CHECK_FALSE(grid_run_memory_need(spec, 30, 20, 6, CostStorage::double_precision, std::nullopt));
+  CHECK_FALSE(grid_run_memory_need(spec, std::size_t{1} << 40, std::size_t{1} << 30, 256,
                                    CostStorage::single_precision, 0));
 }

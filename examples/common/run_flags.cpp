@@ -1,0 +1,160 @@
+#include "run_flags.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+
+#include "c2f/core/number_text.hpp"
+
+namespace c2f::examples {
+
+void RunFlags::declare(ToolOptions& options) {
+  options
+      .text("solver", &solver_,
+            "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), lbp "
+            "or icm")
+      .text("maxflow", &maxflow_,
+            "max-flow backend of expansion and swap: dynamic (ours: resumes each label's move "
+            "from its previous flow), boost (Boost Graph's Boykov-Kolmogorov) or kolmogorov "
+            "(GPL-3 libmaxflow, only in builds configured with -DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)")
+      .real("memory", &memory_gib_, {0.0, 65536.0},
+            "GiB the whole run may take: the energy and the solver's working memory first, what "
+            "they leave for the move graphs the dynamic backend recycles per label and for "
+            "coarse levels (0: a quarter of this machine's memory, growing to the run's needs "
+            "up to half, at most what is available; a run whose floor does not fit is refused "
+            "before it allocates)")
+      .text("graph-memory", &graph_memory_text_,
+            "at most this many GiB of the budget for recycled move graphs (0: no recycling; "
+            "default: all the budget leaves)")
+      .integer("near-radius", &near_radius_, {0, 1000000},
+               "expansion: 0 (every move may change every variable) or r: a move to a label frees "
+               "only the variables within r edges of that label or of a pixel whose cheapest "
+               "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
+               "most 1e-4 of the energy (convergence: three sweeps without decrease)")
+      .flag("shift-moves", &shift_moves_,
+            "expansion: every sweep begins with two moves in which every variable may step one "
+            "label up, then down, at once (moves regions that are off by one label, e.g. one "
+            "disparity; convergence: no expansion or shift move helps)")
+      .text("near-levels", &near_levels_,
+            "where --near-radius and --shift-moves apply: original (the default: the original "
+            "problem only; coarse levels make whole moves, the faster coarse-to-fine run, "
+            "docs/results.md) or all")
+      .text("label-order", &label_order_,
+            "order of expansion / swap moves (icm: of the variables): sequential (0, 1, ...), "
+            "random, or frequency (labels of most variables first, counted when each level "
+            "starts)")
+      .real("time-limit", &time_limit_, kTimeLimitRange, "seconds on the run clock (0: none)")
+      .integer("max-steps", &max_steps_, {0, kMaxSteps}, "solver steps in the whole run (0: none)")
+      .integer("plateau", &plateau_, {1, kMaxSteps},
+               "refine after this many steps without decrease")
+      .real("plateau-tolerance", &plateau_tolerance_, {0.0, 1.0, false, true},
+            "on coarse levels, a decrease over the --plateau steps counts only when larger than "
+            "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
+            "down)")
+      .integer("final-plateau", &final_plateau_, {0, kMaxSteps},
+               "stop after this many steps without decrease on the original problem (0: one "
+               "sweep: labels moves for expansion, three times that with --near-radius, label "
+               "pairs for swap, 4 iterations for lbp, 1 for icm)");
+}
+
+SolverSpec RunFlags::solver_spec() const {
+  const SolverKind kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
+  const VisitOrder order =
+      with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
+  const NearLevels levels =
+      near_levels_.empty()
+          ? NearLevels::original
+          : with_flag("--near-levels", [&] { return near_levels_from_string(near_levels_); });
+  if (!near_levels_.empty() && near_radius_ == 0 && !shift_moves_)
+    throw std::invalid_argument(
+        "--near-levels: has no effect without --near-radius or --shift-moves");
+  // The flags that may have asked for what the solver lacks, e.g. "--near-radius or
+  // --label-order with --solver swap: ...".
+  const auto refuse = [&](const std::string& problem) {
+    std::string flags = near_radius_ > 0 ? "--near-radius" : "";
+    if (shift_moves_) flags += flags.empty() ? "--shift-moves" : ", --shift-moves";
+    flags += flags.empty() ? "--label-order" : " or --label-order";
+    throw std::invalid_argument(flags + " with --solver " + solver_ + ": " + problem);
+  };
+  if (kind != SolverKind::expansion && near_radius_ != 0)
+    refuse("near moves are expansion moves; solver '" + solver_ + "' has none");
+  if (kind != SolverKind::expansion && shift_moves_)
+    refuse("shift moves are made by expansion; solver '" + solver_ + "' has none");
+
+  SolverSpec spec;
+  spec.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
+  if (!maxflow_available(spec.maxflow)) {
+    throw std::invalid_argument("--maxflow " + maxflow_ +
+                                ": not in this build (configure with "
+                                "-DC2F_WITH_KOLMOGOROV_MAXFLOW=ON)");
+  }
+  switch (kind) {
+    case SolverKind::expansion: {
+      ExpansionOptions options;
+      options.order = order;
+      options.near_radius = near_radius_;
+      options.shift_moves = shift_moves_;
+      spec = expansion_spec(options, levels, spec.maxflow);
+      break;
+    }
+    case SolverKind::swap: {
+      SwapOptions options;
+      options.order = order;
+      spec.original = options;
+      break;
+    }
+    case SolverKind::lbp:
+      if (order != VisitOrder::sequential) {
+        refuse("lbp visits every message in every step; the order '" + label_order_ +
+               "' applies to expansion, swap and icm");
+      }
+      spec.original = LbpOptions{};
+      break;
+    case SolverKind::icm: {
+      if (order == VisitOrder::frequency)
+        refuse("the order 'frequency' orders labels (expansion, swap); icm visits variables");
+      IcmOptions options;
+      options.order = order;
+      spec.original = options;
+      break;
+    }
+  }
+  if (const std::string problem = spec.validate(); !problem.empty()) refuse(problem);
+  return spec;
+}
+
+Options RunFlags::limits() const {
+  Options options;
+  options.plateau_steps = {plateau_};
+  options.plateau_tolerance = plateau_tolerance_;
+  options.plateau_steps_at_original = final_plateau_;
+  options.time_limit_seconds = time_limit_;
+  options.max_total_steps = max_steps_;
+  return options;
+}
+
+RunConfig RunFlags::config() const {
+  RunConfig config;
+  config.solver = solver_spec();
+  config.limits = limits();
+  config.memory = memory_gib_ == 0.0
+                      ? default_memory_budget()
+                      : memory_budget_of_gib(memory_gib_, "--memory " + format_real(memory_gib_));
+  if (!graph_memory_text_.empty()) {
+    const double gib = parse_real_option("--graph-memory", graph_memory_text_, {0.0, 65536.0});
+    config.graph_memory = static_cast<std::size_t>(gib * static_cast<double>(std::size_t{1} << 30));
+  }
+  return config;
+}
+
+std::string near_and_shift_moves_text(const SolverSpec& spec) {
+  const auto* options = std::get_if<ExpansionOptions>(&spec.original);
+  if (options == nullptr) return {};
+  std::string moves;
+  if (options->near_radius > 0)
+    moves = "near moves of radius " + std::to_string(options->near_radius);
+  if (options->shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
+  if (moves.empty()) return {};
+  return ", " + moves + (spec.coarse ? " on the original problem only" : " on every level");
+}
+
+}  // namespace c2f::examples

@@ -1,0 +1,46 @@
+#pragma once
+// The options that configure a run, shared by the tools that offer every pairwise solver
+// (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --near-radius,
+// --shift-moves, --near-levels, --label-order, --time-limit, --max-steps, --plateau,
+// --plateau-tolerance, --final-plateau. They become one RunConfig of the run layer.
+
+#include <string>
+
+#include "c2f/run/run_config.hpp"
+#include "tool_options.hpp"
+
+namespace c2f::examples {
+
+class RunFlags {
+ public:
+  /// Declares the thirteen options in `options` (this object receives their values, so it
+  /// must outlive options.parse()).
+  void declare(ToolOptions& options);
+
+  /// The run the parsed options configure, its memory budget resolved (--memory, else the
+  /// machine's default). Throws std::invalid_argument naming the option for an unknown name,
+  /// an option the solver does not take, or a backend not in this build.
+  [[nodiscard]] RunConfig config() const;
+
+ private:
+  [[nodiscard]] SolverSpec solver_spec() const;
+  [[nodiscard]] Options limits() const;
+
+  std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
+              near_levels_;        // empty: not given (NearLevels::original)
+  std::string graph_memory_text_;  // empty: what the budget leaves
+  double memory_gib_ = 0.0;        // 0: default_memory_budget()
+  int near_radius_ = 0;
+  bool shift_moves_ = false;
+  double time_limit_ = 0.0;  // seconds on the run clock, 0: none
+  long max_steps_ = 0;       // steps in the whole run, 0: none
+  int plateau_ = 4;          // steps without decrease that end a coarse level
+  double plateau_tolerance_ = 0.0;
+  int final_plateau_ = 0;  // on the original problem; 0: the solver's own convergence
+};
+
+/// ", near moves of radius R and shift moves on the original problem only" for the near and
+/// shift moves `spec` makes, else "" (a tool's summary line).
+[[nodiscard]] std::string near_and_shift_moves_text(const SolverSpec& spec);
+
+}  // namespace c2f::examples

@@ -1,0 +1,70 @@
+#pragma once
+// The run layer's entry point for pairwise energies: run(energy, levels, config, observer)
+// validates the configuration, plans the memory budget (the floor must fit; the graph-cut
+// solvers' recycled graphs get what it leaves; a coarse level is solved only when it fits),
+// builds the solver(s) the spec names, runs coarse_to_fine and reports the Summary with the
+// memory given and used. The tools, the Python package and the benches call it.
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#include "c2f/core/memory_budget.hpp"
+#include "c2f/core/observer.hpp"
+#include "c2f/core/pairwise_energy.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/run/memory_plan.hpp"
+#include "c2f/run/run_config.hpp"
+#include "c2f/run/run_error.hpp"
+#include "c2f/run/solver_spec.hpp"
+
+namespace c2f {
+
+namespace detail {
+
+/// The optional memory a solver reports holding (kept_bytes), 0 for one that keeps none.
+template <class Solver>
+std::size_t kept_bytes_of(const Solver& solver) {
+  if constexpr (requires { solver.kept_bytes(); }) {
+    return solver.kept_bytes();
+  } else {
+    return 0;
+  }
+}
+
+}  // namespace detail
+
+/// The plan of a run of `config` on `energy` (MemoryPlan): the floor, the graph memory and the
+/// room of coarse levels. Throws RunConfigError (field "memory") when the floor does not fit
+/// the budget, or naming the field config.validate() reports.
+[[nodiscard]] MemoryPlan plan_run(const PairwiseEnergy& energy, const RunConfig& config);
+
+/// The steps without decrease that mean convergence of the original problem's solver on
+/// `energy` (its quiet_steps_to_converge: one sweep of its moves), for rules that scale with it
+/// (e.g. segmentation's coarse plateau).
+[[nodiscard]] std::size_t sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy);
+
+/// Minimises `energy` over the partitions `levels` provides (none: flat) as `config` says. Throws
+/// RunConfigError naming the field of a configuration that is not usable or a budget the floor
+/// does not fit, and what coarse_to_fine throws (e.g. a start labeling of the wrong size).
+template <PartitionProvider<PairwiseEnergy> P>
+RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
+              const Observer& observer = {}) {
+  RunReport report;
+  report.budget = budget_or_default(config.memory);
+  RunConfig planned = config;
+  planned.memory = report.budget;
+  report.plan = plan_run(energy, planned);
+  const SolverSpec spec = with_graph_memory(config.solver, report.plan.graph_memory);
+  report.recycles = recycles_move_graphs(spec.original);
+  Options options = config.limits;
+  options.coarse_level_fits = coarse_level_admission(spec, problem_size(energy), report.plan);
+  report.summary = with_solvers(spec, [&](auto&& solvers) {
+    Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);
+    report.graph_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
+    return summary;
+  });
+  return report;
+}
+
+}  // namespace c2f

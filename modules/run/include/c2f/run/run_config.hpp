@@ -1,0 +1,63 @@
+#pragma once
+// A run configured ("this energy, that solver, this budget") and reported: RunConfig holds the
+// solver, the driver's limits and the memory budget, with one validator whose messages name the
+// field; RunReport is the driver's Summary plus the memory given and used, in the shape of
+// Ceres' Solver::Summary.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "c2f/core/memory_budget.hpp"
+#include "c2f/driver/options.hpp"
+#include "c2f/driver/summary.hpp"
+#include "c2f/run/memory_plan.hpp"
+#include "c2f/run/solver_spec.hpp"
+
+namespace c2f {
+
+/// How the run layer names a run's memory budget (MemoryBudget::describe) and where it came
+/// from: the budget given, or the machine's default (default_memory_budget) when unset.
+[[nodiscard]] MemoryBudget budget_or_default(const std::optional<MemoryBudget>& memory);
+
+/// A run of a pairwise energy: run(energy, levels, config, observer) in c2f/run/run.hpp.
+struct RunConfig {
+  SolverSpec solver;
+  /// The driver's rules: when a level is left and the run ends, the start labeling, the
+  /// transfer. Its coarse_level_fits is the run layer's (the budget decides which coarse levels
+  /// fit); one set here is refused.
+  Options limits;
+  /// The bytes the whole run may take; unset: the machine's default (default_memory_budget).
+  std::optional<MemoryBudget> memory = std::nullopt;
+  /// At most this many bytes of the budget for the graph-cut solvers' recycled move graphs
+  /// and kept move problems; unset: all that the budget leaves above the run's floor.
+  std::optional<std::size_t> graph_memory = std::nullopt;
+  /// How a refusal names what is run: "<energy_name> needs N, more than the run's memory
+  /// budget of M".
+  std::string energy_name = "the energy";
+
+  /// Empty when usable, else "<field>: <problem>" ("solver.original: near_radius must be >= 0",
+  /// "limits: time_limit_seconds must be ...", "memory: ...").
+  [[nodiscard]] std::string validate() const;
+};
+
+/// What a run did: the driver's Summary, and the memory it was given and used.
+struct RunReport {
+  Summary summary;
+  MemoryBudget budget;  ///< the budget given (or the default)
+  MemoryPlan plan;      ///< the floor and the limits the budget became
+  /// Whether the solver keeps optional memory (graph-cut solvers: recycled move graphs).
+  bool recycles = false;
+  /// The optional memory the original problem's solver held at the end (within
+  /// plan.graph_memory).
+  std::size_t graph_memory_used = 0;
+
+  /// "memory budget 5.9 GiB (a quarter of ...), recycled move graphs up to 2.1 GiB" (the second
+  /// part for solvers that recycle), as the tools' summaries write it.
+  [[nodiscard]] std::string memory_line() const;
+  /// memory_line's budget and limit with what was used: "memory: budget 5.9 GiB (...), floor
+  /// 380 MiB, recycled move graphs up to 2.1 GiB, 1.2 GiB used at the end".
+  [[nodiscard]] std::string memory_report() const;
+};
+
+}  // namespace c2f

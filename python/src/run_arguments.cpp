@@ -1,0 +1,218 @@
+#include "run_arguments.hpp"
+
+#include <climits>
+#include <cstdint>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "c2f/core/text_input.hpp"
+#include "numpy_input.hpp"
+
+namespace c2f::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// The entries of `options` (None: none) after checking that each key is one of `allowed`.
+std::vector<std::pair<std::string, py::handle>> option_items(
+    const py::handle& options, const std::string& owner,
+    const std::vector<std::string_view>& allowed) {
+  std::vector<std::pair<std::string, py::handle>> items;
+  if (options.is_none()) return items;
+  if (!py::isinstance<py::dict>(options)) {
+    throw py::type_error("options: expected a dict of " + owner + "'s options or None, got " +
+                         std::string(py::str(py::type::handle_of(options).attr("__name__"))));
+  }
+  std::string names;
+  for (const std::string_view name : allowed)
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(options)) {
+    if (!py::isinstance<py::str>(key)) throw py::type_error("options: keys are option names (str)");
+    const std::string name = key.cast<std::string>();
+    bool known = false;
+    for (const std::string_view candidate : allowed) known = known || candidate == name;
+    if (!known) {
+      throw py::value_error("options: '" + printable(name, 40) + "' is not an option of " + owner +
+                            " (its options: " + names + ")");
+    }
+    items.emplace_back(name, value);
+  }
+  return items;
+}
+
+std::string text_option(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value))
+    throw py::type_error(name + ": expected a str, got " +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+  return value.cast<std::string>();
+}
+
+bool flag_option(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::bool_>(value))
+    throw py::type_error(name + ": expected True or False, got " +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+  return value.cast<bool>();
+}
+
+/// Parses a name with `parse`, a std::invalid_argument becoming a ValueError naming `name`.
+template <class Parse>
+auto named_value(const py::handle& value, const std::string& name, Parse parse) {
+  const std::string text = text_option(value, name);
+  try {
+    return parse(text);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(name + ": " + error.what());
+  }
+}
+
+/// Sets the options every move-making solver has: order, seed, tolerance.
+template <class Options>
+bool set_move_option(Options& options, const std::string& key, const py::handle& value,
+                     const std::string& name) {
+  if (key == "order") {
+    options.order = named_value(value, name, visit_order_from_string);
+  } else if (key == "seed") {
+    options.seed = static_cast<std::uint64_t>(integer_argument(value, name, 0, INT64_MAX));
+  } else if (key == "tolerance") {
+    options.tolerance = real_argument(value, name);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string option_name(const std::string& key) {
+  return "options['" + key + "']";
+}
+
+}  // namespace
+
+SolverSpec solver_spec_from(const std::string& method, const py::handle& options) {
+  SolverKind kind;
+  try {
+    kind = solver_kind_from_string(method);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(std::string("method: ") + error.what());
+  }
+  const std::string owner = "method '" + method + "'";
+  SolverSpec spec;
+  switch (kind) {
+    case SolverKind::expansion: {
+      ExpansionOptions expansion;
+      NearLevels levels = NearLevels::original;
+      for (const auto& [key, value] :
+           option_items(options, owner,
+                        {"order", "seed", "tolerance", "near_radius", "near_sweep_gain",
+                         "shift_moves", "near_levels", "maxflow"})) {
+        const std::string name = option_name(key);
+        if (set_move_option(expansion, key, value, name)) continue;
+        if (key == "near_radius") {
+          expansion.near_radius = static_cast<int>(integer_argument(value, name, 0, INT32_MAX));
+        } else if (key == "near_sweep_gain") {
+          expansion.near_sweep_gain = real_argument(value, name);
+        } else if (key == "shift_moves") {
+          expansion.shift_moves = flag_option(value, name);
+        } else if (key == "near_levels") {
+          levels = named_value(value, name, near_levels_from_string);
+        } else {
+          spec.maxflow = named_value(value, name, maxflow_kind_from_string);
+        }
+      }
+      return expansion_spec(expansion, levels, spec.maxflow);
+    }
+    case SolverKind::swap: {
+      SwapOptions swap;
+      for (const auto& [key, value] :
+           option_items(options, owner, {"order", "seed", "tolerance", "maxflow"})) {
+        const std::string name = option_name(key);
+        if (!set_move_option(swap, key, value, name))
+          spec.maxflow = named_value(value, name, maxflow_kind_from_string);
+      }
+      spec.original = swap;
+      return spec;
+    }
+    case SolverKind::lbp: {
+      LbpOptions lbp;
+      for (const auto& [key, value] : option_items(options, owner, {"schedule", "damping"})) {
+        const std::string name = option_name(key);
+        if (key == "schedule") {
+          lbp.schedule = named_value(value, name, bp_schedule_from_string);
+        } else {
+          lbp.damping = real_argument(value, name);
+        }
+      }
+      spec.original = lbp;
+      return spec;
+    }
+    case SolverKind::icm: {
+      IcmOptions icm;
+      for (const auto& [key, value] : option_items(options, owner, {"order", "seed", "tolerance"}))
+        set_move_option(icm, key, value, option_name(key));
+      spec.original = icm;
+      return spec;
+    }
+  }
+  throw py::value_error("method: unknown solver '" + method + "'");
+}
+
+CoopSolverOptions coop_options_from(const py::handle& options) {
+  CoopSolverOptions coop;
+  for (const auto& [key, value] :
+       option_items(options, "method 'coop'", {"aux", "start", "expansion_cycles"})) {
+    const std::string name = option_name(key);
+    if (key == "aux") {
+      coop.strategy = named_value(value, name, aux_strategy_from_string);
+    } else if (key == "start") {
+      coop.start = named_value(value, name, expansion_start_from_string);
+    } else {
+      coop.expansion_cycles = static_cast<int>(integer_argument(value, name, 1, INT32_MAX));
+    }
+  }
+  return coop;
+}
+
+double optional_positive_real(const py::handle& value, const std::string& name) {
+  if (value.is_none()) return 0.0;
+  const double real = real_argument(value, name);
+  if (real <= 0.0) throw py::value_error(name + ": expected a number > 0, or None for no limit");
+  return real;
+}
+
+long optional_positive_count(const py::handle& value, const std::string& name) {
+  if (value.is_none()) return 0;
+  return static_cast<long>(integer_argument(value, name, 1, LONG_MAX));
+}
+
+std::optional<std::size_t> optional_gib_bytes(const py::handle& value, const std::string& name) {
+  if (value.is_none()) return std::nullopt;
+  const double gib = real_argument(value, name);
+  if (gib < 0.0 || gib > 65536.0)
+    throw py::value_error(name + ": expected a number of GiB in [0, 65536], or None");
+  return static_cast<std::size_t>(gib * static_cast<double>(std::size_t{1} << 30));
+}
+
+void raise_run_error(const RunConfigError& error) {
+  const std::string& field = error.field();
+  std::string problem = error.problem();
+  if (field.rfind("solver", 0) == 0 || field == "coop")
+    throw py::value_error("options: " + problem);
+  if (field == "limits") {
+    // The driver's field names, as the keywords that set them.
+    constexpr std::pair<std::string_view, std::string_view> kKeywords[] = {
+        {"time_limit_seconds", "time_limit"},
+        {"max_total_steps", "max_steps"},
+        {"plateau_steps[0]", "plateau"},
+        {"plateau_tolerance", "plateau_tolerance"}};
+    for (const auto& [cpp, keyword] : kKeywords) {
+      if (problem.rfind(cpp, 0) == 0) {
+        throw py::value_error(std::string(keyword) + ": " + problem.substr(cpp.size() + 1));
+      }
+    }
+  }
+  throw py::value_error(field + ": " + problem);
+}
+
+}  // namespace c2f::python

@@ -1,0 +1,196 @@
+// The run layer's entry points: run() is coarse_to_fine with the solver a SolverSpec names,
+// within a memory budget it plans, and reports what was given and used; every refusal names
+// its field; the segmentation recipe runs cooperative cuts and Potts as c2f-segment does.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+#include "c2f/adapters/coop/coop_solver.hpp"
+#include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/lift/partition_list.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/coop_run.hpp"
+#include "c2f/run/run.hpp"
+#include "c2f/run/run_error.hpp"
+#include "c2f/run/segmentation_run.hpp"
+#include "c2f/vision/segmentation/segmentation_energy.hpp"
+#include "c2f/vision/segmentation/segmentation_schedules.hpp"
+#include "support/random_models.hpp"
+#include "support/synthetic_segmentation.hpp"
+
+using namespace c2f;
+using namespace c2f::test;
+
+namespace {
+
+/// The energies after every step of a run.
+struct EnergyTrace {
+  std::vector<double> energies;
+  Observer observer() {
+    return [this](const StepEvent& event) {
+      energies.push_back(event.energy);
+      return ObserverDecision::continue_run;
+    };
+  }
+};
+
+/// The error run() threw for `config`, or fails.
+template <class Energy, class Config>
+RunConfigError refusal(const Energy& energy, const Config& config) {
+  PartitionList flat;
+  try {
+    (void)run(energy, flat, config);
+  } catch (const RunConfigError& error) {
+    return error;
+  }
+  FAIL("the run was not refused");
+  return RunConfigError("", "");
+}
+
+}  // namespace
+
+TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step", "[run]") {
+  Rng rng(31);
+  const PairwiseEnergy energy = random_grid_energy(rng, 16, 12, 5);
+  const DensePartition coarse = random_partition(rng, energy.num_variables(), 40);
+  ExpansionOptions near;
+  near.near_radius = 1;
+  near.order = VisitOrder::random;
+  RunConfig config;
+  config.solver = expansion_spec(near);
+  config.limits.plateau_steps = {3};
+  config.limits.max_total_steps = 60;
+
+  EnergyTrace by_run, by_hand;
+  PartitionList levels({coarse});
+  const RunReport report = run(energy, levels, config, by_run.observer());
+  ExpansionOptions whole = near;
+  whole.near_radius = 0;
+  // The run layer sets the graph-cut solvers' limit from the budget: the same limit by hand.
+  whole.graph_memory_limit = near.graph_memory_limit = report.plan.graph_memory;
+  ExpansionSolver<> coarse_solver(whole), original_solver(near);
+  PartitionList same_levels({coarse});
+  const Summary summary =
+      coarse_to_fine(energy, same_levels, LevelSolvers(coarse_solver, original_solver),
+                     config.limits, by_hand.observer());
+  CHECK(by_run.energies == by_hand.energies);
+  CHECK(report.summary.labeling == summary.labeling);
+  CHECK(report.summary.energy == summary.energy);
+
+  // What was given and used: the machine's default budget, a floor within it, the graphs
+  // within their limit.
+  CHECK(report.budget.bytes == default_memory_budget().bytes);
+  CHECK(report.plan.floor > 0);
+  CHECK(report.plan.floor <= report.plan.budget);
+  CHECK(report.plan.graph_memory == report.plan.budget - report.plan.floor);
+  CHECK(report.recycles);
+  CHECK(report.graph_memory_used > 0);
+  CHECK(report.graph_memory_used <= report.plan.graph_memory);
+  CHECK_THAT(report.memory_line(), Catch::StartsWith("memory budget ") &&
+                                       Catch::Contains(", recycled move graphs up to "));
+  CHECK_THAT(report.memory_report(), Catch::Contains(", floor ") && Catch::Contains(" used"));
+}
+
+TEST_CASE("a run's graph memory is what the budget leaves, at most what the config says",
+          "[run][memory]") {
+  Rng rng(32);
+  const PairwiseEnergy energy = random_grid_energy(rng, 12, 10, 4);
+  RunConfig config;
+  const auto floor = run_memory_floor(config.solver, problem_size(energy));
+  REQUIRE(floor);
+  config.memory = MemoryBudget{*floor + 100000, "a test"};
+  PartitionList flat;
+  CHECK(run(energy, flat, config).plan.graph_memory == 100000);
+  config.graph_memory = 0;  // no recycling: nothing kept, the same result
+  PartitionList again;
+  const RunReport without = run(energy, again, config);
+  CHECK(without.plan.graph_memory == 0);
+  CHECK(without.graph_memory_used == 0);
+  // LBP and ICM keep nothing and say so.
+  config.solver.original = IcmOptions{};
+  PartitionList icm_levels;
+  const RunReport icm = run(energy, icm_levels, config);
+  CHECK_FALSE(icm.recycles);
+  CHECK(icm.memory_line().find("recycled") == std::string::npos);
+}
+
+TEST_CASE("every refusal of the run layer names its field", "[run][validation]") {
+  Rng rng(33);
+  const PairwiseEnergy energy = random_grid_energy(rng, 8, 6, 3);
+  RunConfig config;
+  config.solver.original = LbpOptions{BpSchedule::sequential, 1.5};
+  RunConfigError error = refusal(energy, config);
+  CHECK(error.field() == "solver.original");
+  CHECK(error.problem() == "damping must be in [0, 1)");
+  CHECK(std::string(error.what()) == "solver.original: damping must be in [0, 1)");
+
+  config = RunConfig{};
+  config.limits.time_limit_seconds = -1;
+  error = refusal(energy, config);
+  CHECK(error.field() == "limits");
+  CHECK_THAT(error.problem(), Catch::StartsWith("time_limit_seconds must be finite"));
+
+  config = RunConfig{};
+  config.limits.coarse_level_fits = [](std::size_t) { return true; };
+  CHECK(refusal(energy, config).field() == "limits");
+
+  config = RunConfig{};
+  config.memory = MemoryBudget{1024, "a tiny budget"};
+  config.energy_name = "the test energy";
+  error = refusal(energy, config);
+  CHECK(error.field() == "memory");
+  CHECK_THAT(error.problem(),
+             Catch::StartsWith("the test energy needs ") && Catch::EndsWith("(a tiny budget)"));
+
+  CoopRunConfig coop;
+  coop.solver.expansion_cycles = 0;
+  CHECK(refusal(random_coop_energy(rng, 6, 5, 3, 2), coop).field() == "solver");
+}
+
+TEST_CASE("the segmentation recipe runs either method within the budget, as built by hand",
+          "[run][segmentation]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-run";
+  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, 48, 36, 5);
+  const vision::SegmentationScene scene = vision::load_segmentation_scene(
+      {files.image, files.seeds, "", vision::SeedConvention::colours});
+  const vision::SegmentationProblem problem =
+      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
+  const Schedule schedule = vision::parse_segmentation_schedule("paper", scene.num_labels());
+
+  for (const auto method : {vision::SegmentationMethod::coop, vision::SegmentationMethod::potts}) {
+    vision::SegmentationRunConfig config;
+    config.method = method;
+    EnergyTrace by_recipe, by_hand;
+    ScheduleProvider levels(schedule, scene.shape());
+    const RunReport report =
+        vision::run_segmentation(problem, levels, config, by_recipe.observer());
+    ScheduleProvider same_levels(schedule, scene.shape());
+    Options options;
+    if (method == vision::SegmentationMethod::potts) {
+      ExpansionOptions expansion;
+      expansion.graph_memory_limit = report.plan.graph_memory;
+      ExpansionSolver<> solver(expansion);
+      options.plateau_steps = {vision::coarse_plateau_steps(
+          solver.quiet_steps_to_converge(problem.potts), scene.num_labels(), false)};
+      coarse_to_fine(problem.potts, same_levels, solver, options, by_hand.observer());
+    } else {
+      CoopSolver solver;
+      options.plateau_steps = {vision::coarse_plateau_steps(
+          solver.quiet_steps_to_converge(problem.coop), scene.num_labels(), false)};
+      coarse_to_fine(problem.coop, same_levels, solver, options, by_hand.observer());
+    }
+    CHECK(by_recipe.energies == by_hand.energies);
+    CHECK(report.summary.reason == TerminationReason::converged);
+    CHECK(report.plan.floor <= report.plan.budget);
+  }
+  vision::SegmentationRunConfig bad;
+  bad.plateau = -2;
+  ScheduleProvider levels(schedule, scene.shape());
+  CHECK_THROWS_WITH(vision::run_segmentation(problem, levels, bad),
+                    Catch::StartsWith("plateau: expected -1"));
+  std::filesystem::remove_all(dir);
+}
