@@ -4,7 +4,9 @@
 # Declares one library (a folder of modules/ or adapters/): target c2f_<name>, alias c2f::<name>, exported as
 # c2f::<name> in the package component <component> (default core; see c2f_install.cmake),
 # public headers under <dir> (default: include/ next to the CMakeLists). Modules without
-# sources become INTERFACE (header-only) targets.
+# sources become INTERFACE (header-only) targets. Sources see the uninstalled support headers
+# (modules/core/support: c2f/support/*.hpp, the input layer, number text, checked sizes,
+# parallel_for, ...); public headers never include them.
 function(c2f_add_library)
   cmake_parse_arguments(ARG "" "NAME;INCLUDE_DIR;COMPONENT" "SOURCES;DEPENDS" ${ARGN})
   if(NOT ARG_COMPONENT)
@@ -21,6 +23,7 @@ function(c2f_add_library)
     target_compile_options(${target} PRIVATE
       $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion>)
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_include_directories(${target} PRIVATE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/modules/core/support>)
   else()
     add_library(${target} INTERFACE)
     set(scope INTERFACE)

@@ -35,6 +35,8 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "coop_flags.hpp"
 #include "support/coopcuts_files.hpp"
 #include "support/model_grid.hpp"

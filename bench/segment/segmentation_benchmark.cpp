@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/output_file.hpp"
 #include "coop_flags.hpp"
 #include "output_folder.hpp"
 #include "support/anytime_comparison.hpp"

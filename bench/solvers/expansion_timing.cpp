@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"

@@ -55,7 +55,9 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/output_file.hpp"
+#include "c2f/support/parallel_for.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"

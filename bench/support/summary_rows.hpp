@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/number_text.hpp"
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f::bench {
 
 /// The rows of `path` with their fields: empty lines and header lines (beginning with
 /// `header_start`, e.g. "scene\t") are skipped. Throws std::runtime_error naming the file when it
-/// cannot be read (c2f/core/input_file.hpp: a regular file of at most 64 MiB) or a row has other
+/// cannot be read (c2f/support/input_file.hpp: a regular file of at most 64 MiB) or a row has other
 /// than `columns` fields, and std::invalid_argument when it
 /// holds no row (a summary of nothing is no summary).
 inline std::vector<std::vector<std::string>> read_summary_rows(const std::string& path,

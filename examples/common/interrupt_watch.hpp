@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 
 namespace c2f::examples {
 

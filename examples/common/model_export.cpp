@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "c2f/core/output_file.hpp"
 #include "c2f/core/uai.hpp"
+#include "c2f/support/output_file.hpp"
 
 namespace c2f::examples {
 

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 namespace c2f::examples {
 

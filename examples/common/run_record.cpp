@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "c2f/core/output_file.hpp"
+#include "c2f/support/output_file.hpp"
 #include "progress_printer.hpp"
 
 namespace c2f::examples {

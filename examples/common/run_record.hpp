@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "c2f/core/observer.hpp"
-#include "c2f/core/trace.hpp"
+#include "c2f/driver/observer.hpp"
+#include "c2f/driver/trace.hpp"
 #include "interrupt_watch.hpp"
 #include "output_folder.hpp"
 

@@ -11,8 +11,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
 #include "staged_paths.hpp"
 
 namespace po = boost::program_options;

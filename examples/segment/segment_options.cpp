@@ -3,7 +3,7 @@
 #include "coop_flags.hpp"
 #include "tool_options.hpp"
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "c2f/core/enum_names.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/enum_names.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 
 namespace c2f::examples {

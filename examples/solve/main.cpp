@@ -9,6 +9,9 @@
 #include <fstream>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/memory_need.hpp"
+#include "c2f/support/output_file.hpp"
 #include "interrupt_watch.hpp"
 #include "output_paths.hpp"
 #include "run_record.hpp"

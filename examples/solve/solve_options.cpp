@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "run_flags.hpp"
 #include "tool_options.hpp"
 

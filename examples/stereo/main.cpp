@@ -10,6 +10,9 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/output_file.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "interrupt_watch.hpp"
 #include "model_export.hpp"
 #include "output_paths.hpp"

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 
 namespace c2f::examples {

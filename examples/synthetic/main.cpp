@@ -11,6 +11,7 @@
 #include <string>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/output_file.hpp"
 #include "interrupt_watch.hpp"
 #include "output_folder.hpp"
 #include "synthetic_options.hpp"

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {

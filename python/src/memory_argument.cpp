@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "numpy_input.hpp"
 
 namespace c2f::python {

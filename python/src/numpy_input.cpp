@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/text_input.hpp"
 #include "released_gil.hpp"
 
 namespace c2f::python {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/text_input.hpp"
 #include "numpy_input.hpp"
 
 namespace c2f::python {

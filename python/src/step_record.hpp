@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/driver/summary.hpp"
 
 namespace c2f::python {

@@ -13,9 +13,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "c2f/core/input_file.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/uai.hpp"
+#include "c2f/support/input_file.hpp"
 
 using namespace c2f;
 namespace fs = std::filesystem;

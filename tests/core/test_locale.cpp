@@ -9,10 +9,10 @@
 #include <sstream>
 #include <string>
 
-#include "c2f/core/number_text.hpp"
-#include "c2f/core/observer.hpp"
-#include "c2f/core/trace.hpp"
 #include "c2f/core/uai.hpp"
+#include "c2f/driver/observer.hpp"
+#include "c2f/driver/trace.hpp"
+#include "c2f/support/number_text.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 using c2f::parallel_for;
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "c2f/core/text_input.hpp"
 #include "c2f/core/uai.hpp"
+#include "c2f/support/text_input.hpp"
 
 using namespace c2f;
 

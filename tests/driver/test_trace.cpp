@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "c2f/adapters/icm/icm.hpp"
-#include "c2f/core/trace.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/driver/trace.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
 #include "support/random_models.hpp"
 

@@ -9,8 +9,8 @@
 
 #include "c2f/core/grid.hpp"
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/memory_need.hpp"
 #include "c2f/run/memory_plan.hpp"
+#include "c2f/support/memory_need.hpp"
 #include "support/random_models.hpp"
 
 using namespace c2f;

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "c2f/core/output_file.hpp"
+#include "c2f/support/output_file.hpp"
 #include "folder_swap.hpp"
 #include "output_folder.hpp"
 #include "staged_file.hpp"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/synthetic_problem.hpp"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "c2f/adapters/graphcut/expansion.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 #include "coop_relaxation.hpp"
 
 namespace c2f {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

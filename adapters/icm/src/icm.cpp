@@ -5,7 +5,7 @@
 #include <random>
 
 #include <stdexcept>
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

@@ -1,6 +1,6 @@
 #include "c2f/adapters/lbp/lbp.hpp"
-#include "c2f/core/enum_names.hpp"
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/enum_names.hpp"
+#include "c2f/support/memory_need.hpp"
 
 #include <algorithm>
 #include <cmath>

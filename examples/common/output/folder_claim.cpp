@@ -1,6 +1,6 @@
 #include "folder_claim.hpp"
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

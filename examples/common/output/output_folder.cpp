@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "folder_swap.hpp"
 #include "staged_paths.hpp"
 

@@ -1,4 +1,4 @@
-#include "c2f/core/input_file.hpp"
+#include "c2f/support/input_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

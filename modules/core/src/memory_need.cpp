@@ -1,4 +1,4 @@
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 namespace c2f {
 

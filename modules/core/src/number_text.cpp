@@ -1,4 +1,4 @@
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 #include <locale.h>
 

@@ -1,4 +1,4 @@
-#include "c2f/core/output_file.hpp"
+#include "c2f/support/output_file.hpp"
 
 #include <stdexcept>
 

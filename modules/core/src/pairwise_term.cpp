@@ -1,5 +1,5 @@
 #include "c2f/core/pairwise_term.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f {
 

@@ -1,10 +1,10 @@
 #include "c2f/core/uai.hpp"
 
-#include "c2f/core/input_file.hpp"
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/number_text.hpp"
-#include "c2f/core/output_file.hpp"
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
+#include "c2f/support/output_file.hpp"
+#include "c2f/support/text_input.hpp"
 
 #include <algorithm>
 #include <cmath>

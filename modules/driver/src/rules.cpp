@@ -1,5 +1,5 @@
 #include "c2f/driver/rules.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 
 #include <algorithm>
 #include <cmath>

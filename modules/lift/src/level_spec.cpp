@@ -1,6 +1,6 @@
 #include "c2f/lift/level_spec.hpp"
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 namespace c2f {
 

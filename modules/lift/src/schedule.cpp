@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/number_text.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f {
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "c2f/core/memory_need.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/run/run_error.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

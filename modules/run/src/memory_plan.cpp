@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

@@ -1,6 +1,6 @@
 #include "c2f/run/run_config.hpp"
 
-#include "c2f/core/memory_need.hpp"
+#include "c2f/support/memory_need.hpp"
 
 namespace c2f {
 

@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "c2f/core/enum_names.hpp"
 #include "c2f/run/coop_run.hpp"
 #include "c2f/run/run.hpp"
 #include "c2f/run/run_error.hpp"
+#include "c2f/support/enum_names.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
 
 namespace c2f::vision {

@@ -1,6 +1,6 @@
 #include "c2f/run/solver_spec.hpp"
 
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 
 namespace c2f {
 

@@ -15,8 +15,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f::vision {
 

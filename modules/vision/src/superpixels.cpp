@@ -1,5 +1,5 @@
 #include "c2f/vision/superpixels.hpp"
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 
 #include <algorithm>
 #include <opencv2/imgproc.hpp>

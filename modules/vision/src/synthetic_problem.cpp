@@ -1,7 +1,7 @@
 #include "c2f/vision/synthetic_problem.hpp"
 
-#include "c2f/core/memory_need.hpp"
-#include "c2f/core/output_file.hpp"
+#include "c2f/support/memory_need.hpp"
+#include "c2f/support/output_file.hpp"
 
 #include <algorithm>
 #include <cmath>

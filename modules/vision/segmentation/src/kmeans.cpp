@@ -5,8 +5,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "c2f/core/enum_names.hpp"
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/enum_names.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 namespace c2f::vision {
 

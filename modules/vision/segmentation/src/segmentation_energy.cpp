@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "c2f/core/grid.hpp"
-#include "c2f/core/memory_need.hpp"
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/memory_need.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "c2f/vision/segmentation/colour_gmm.hpp"
 #include "c2f/vision/segmentation/kmeans.hpp"
 

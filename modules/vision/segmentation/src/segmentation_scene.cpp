@@ -9,7 +9,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 #include "c2f/vision/image_io.hpp"
 
 namespace c2f::vision {

@@ -15,8 +15,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 

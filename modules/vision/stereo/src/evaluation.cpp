@@ -1,6 +1,6 @@
 #include "c2f/vision/stereo/evaluation.hpp"
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 
 #include <cmath>

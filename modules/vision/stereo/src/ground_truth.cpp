@@ -5,8 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/kitti2015.hpp"

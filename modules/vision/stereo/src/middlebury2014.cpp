@@ -5,9 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "c2f/core/input_file.hpp"
-#include "c2f/core/number_text.hpp"
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/input_file.hpp"
+#include "c2f/support/number_text.hpp"
+#include "c2f/support/text_input.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/ground_truth.hpp"

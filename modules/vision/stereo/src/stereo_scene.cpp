@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "c2f/core/input_file.hpp"
+#include "c2f/support/input_file.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/stereo/ground_truth.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"

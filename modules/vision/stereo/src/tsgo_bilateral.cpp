@@ -16,7 +16,7 @@
 #include <utility>
 
 #include "c2f/core/default_init_allocator.hpp"
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 namespace c2f::vision {
 

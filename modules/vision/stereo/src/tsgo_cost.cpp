@@ -1,6 +1,6 @@
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "stereo_pair_checks.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 
-#include "c2f/core/enum_names.hpp"
+#include "c2f/support/enum_names.hpp"
 
 #include <cmath>
 #include <limits>
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "c2f/core/grid.hpp"
-#include "c2f/core/memory_need.hpp"
-#include "c2f/core/parallel_for.hpp"
+#include "c2f/support/memory_need.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "c2f/vision/stereo/colour_weights.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 

@@ -9,6 +9,7 @@
 #include <functional>
 #include <iosfwd>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -26,8 +27,8 @@ namespace c2f {
 /// arity, counts larger than the file can hold or than 8 GiB of unary costs, and any data after
 /// the last table. Reads the whole stream before parsing.
 PairwiseEnergy read_uai(std::istream& in, std::string_view source = "<stream>");
-/// read_uai on a file read through the input layer (c2f/core/input_file.hpp: a regular file,
-/// refused by name before it could block), within `budget`: the file may take half of it, and
+/// read_uai on a file read through the input layer (a regular file, refused by name before it
+/// could block), within `budget`: the file may take half of it, and
 /// the memory its declarations imply (the unary costs of every variable and label, the largest
 /// table, the factors) must fit it and the machine (MemoryBudget::require) before the costs
 /// are allocated. Throws std::invalid_argument naming the path otherwise.
@@ -35,14 +36,19 @@ PairwiseEnergy read_uai_file(const std::string& path, const MemoryBudget& budget
 /// read_uai_file within the default budget (default_memory_budget).
 PairwiseEnergy read_uai_file(const std::string& path);
 
+/// Thrown by a long write that its caller asked to stop (an interrupt): what was written is
+/// incomplete and must not be used.
+struct WriteStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// Writes one unary factor per variable and one pairwise factor per edge (table
 /// weight * cost(a, b)) as potentials exp(-(cost - the factor's lowest cost)) with 17
 /// significant digits, all in (0, 1]. Reading the file back gives the energy minus the sum of
 /// the factors' lowest costs: every energy difference is kept (to rounding), whatever the
 /// costs' magnitude. Throws std::invalid_argument when two costs of one factor lie more than
 /// about 708 apart (their potentials' ratio leaves the normal double range).
-/// `stop`, when given, is asked between tables; when it says so the write ends with WriteStopped
-/// (c2f/core/output_file.hpp).
+/// `stop`, when given, is asked between tables; when it says so the write ends with WriteStopped.
 void write_uai(const PairwiseEnergy& energy, std::ostream& out,
                const std::function<bool()>& stop = {});
 /// An upper estimate of the bytes write_uai writes for `energy` (its tables dominate:

@@ -13,8 +13,8 @@
 
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/energy.hpp"
-#include "c2f/core/observer.hpp"
 #include "c2f/driver/detail/run_clock.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/driver/options.hpp"
 #include "c2f/driver/rules.hpp"
 #include "c2f/driver/summary.hpp"

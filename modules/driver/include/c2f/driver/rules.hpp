@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 
 namespace c2f {
 
@@ -34,7 +34,7 @@ struct Verdict {
   TerminationReason reason = TerminationReason::converged;
 };
 
-/// A rule reads the same per-step record the observer sees (StepEvent, c2f/core/observer.hpp).
+/// A rule reads the same per-step record the observer sees (StepEvent, c2f/driver/observer.hpp).
 using Rule = std::function<Verdict(const StepEvent&)>;
 
 /// Refine when the energy has not decreased by more than tolerance * max(1, |E|) over the

@@ -14,8 +14,8 @@
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/cooperative/coop_energy.hpp"
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/observer.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/run/memory_plan.hpp"
 #include "c2f/run/run_config.hpp"
 

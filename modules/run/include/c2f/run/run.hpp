@@ -10,9 +10,9 @@
 #include <string>
 
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/observer.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/run/memory_plan.hpp"
 #include "c2f/run/run_config.hpp"
 #include "c2f/run/run_error.hpp"

@@ -10,7 +10,7 @@
 
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/core/memory_budget.hpp"
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/run/run_config.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"

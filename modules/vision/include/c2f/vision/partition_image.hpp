@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "c2f/core/grid.hpp"
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 #include "c2f/lift/dense_partition.hpp"
 
 namespace c2f::vision {

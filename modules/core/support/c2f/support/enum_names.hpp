@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "c2f/core/text_input.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f {
 

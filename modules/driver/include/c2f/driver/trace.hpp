@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 
 namespace c2f {
 

@@ -1,8 +1,8 @@
-#include "c2f/core/trace.hpp"
+#include "c2f/driver/trace.hpp"
 
 #include <stdexcept>
 
-#include "c2f/core/number_text.hpp"
+#include "c2f/support/number_text.hpp"
 
 namespace c2f {
 

@@ -1,4 +1,4 @@
-#include "c2f/core/observer.hpp"
+#include "c2f/driver/observer.hpp"
 
 namespace c2f {
 

@@ -7,12 +7,6 @@
 
 namespace c2f {
 
-/// Thrown by a long write that its caller asked to stop (an interrupt): what was written is
-/// incomplete and must not be used.
-struct WriteStopped : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 /// Flushes and closes a written file stream; throws std::runtime_error naming `what` when any
 /// write failed (a full disk, /dev/full) so that a failed write is never a silent success.
 void close_checked(std::ofstream& stream, const std::string& what);
