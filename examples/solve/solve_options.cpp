@@ -1,6 +1,5 @@
 #include "solve_options.hpp"
 
-#include <array>
 #include <filesystem>
 #include <stdexcept>
 
@@ -11,13 +10,6 @@
 namespace c2f::examples {
 
 namespace {
-
-/// c2f-solve's presets: the paper's colour-passing levels, which need no image.
-std::span<const SchedulePreset> solve_presets() {
-  static const std::array<SchedulePreset, 1> presets{
-      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
-  return presets;
-}
 
 /// "WxH" with both sides in [1, 2^20].
 GridShape parse_grid(const std::string& text) {
@@ -66,15 +58,17 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   if (!grid.empty()) command.grid = parse_grid(grid);
   command.run = run.config();
   // The grammar now; the label count and the grid once the model is read.
-  with_flag("--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
+  with_flag("--schedule",
+            [&] { return Schedule::parse(command.schedule_text, pairwise_schedule_presets()); });
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
 }
 
 Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels) {
-  const Schedule schedule = with_flag(
-      "--schedule", [&] { return Schedule::parse(command.schedule_text, solve_presets()); });
+  const Schedule schedule = with_flag("--schedule", [&] {
+    return Schedule::parse(command.schedule_text, pairwise_schedule_presets());
+  });
   if (const std::string problem = schedule.validate(num_labels); !problem.empty())
     throw std::invalid_argument(option_message("--schedule", problem) + " (the model has " +
                                 std::to_string(num_labels) + " labels)");

@@ -45,13 +45,14 @@ class Energy:
     def grid(
         unary: npt.ArrayLike,
         term: Term = ...,
-        weight: float = 1.0,
-        weights: Optional[npt.ArrayLike] = None,
+        weight: Union[float, npt.ArrayLike] = 1.0,
         connectivity: int = 4,
     ) -> Energy:
-        """A grid energy from unary (H, W, L) float costs; `term` on the edges to the right and
-        down neighbours (and down-right, down-left when connectivity is 8), of weight `weight`
-        or weights[y, x, k] (shape (H, W, connectivity / 2)). Labelings come back as (H, W)."""
+        """A grid energy from unary (H, W, L) float costs (float32 kept in single precision);
+        `term` on the edges to the right and down neighbours (and down-right, down-left when
+        connectivity is 8), of weight `weight`: a number, or an array of shape
+        (H, W, connectivity / 2) whose [y, x, k] weighs the edge to the k-th neighbour of
+        (y, x). Labelings come back as (H, W)."""
     @staticmethod
     def read_uai(path: str, memory: Optional[float] = None) -> Energy:
         """A pairwise MARKOV model in the UAI format (energy = -ln potential). The path must be a

@@ -42,7 +42,7 @@ PairwiseTerm truncated_quadratic(const py::handle& truncation_argument,
 }
 
 PairwiseTerm table_term(const py::handle& object) {
-  FloatValues costs = float_values(object, "costs", 2, "(L, L)");
+  RealArray costs = float_values(object, "costs", 2, "(L, L)");
   if (costs.shape[0] != costs.shape[1]) {
     throw py::value_error("costs: expected a square array (L, L), got shape " +
                           shape_text(costs.shape));
@@ -52,7 +52,7 @@ PairwiseTerm table_term(const py::handle& object) {
 
 ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edges_object,
                            const py::handle& weights_object, const PairwiseTerm& term) {
-  FloatValues unary = float_values(unary_object, "unary", 2, "(N, L)");
+  CostArray unary = cost_array(unary_object, "unary", 2, "(N, L)");
   const std::size_t n = static_cast<std::size_t>(unary.shape[0]);
   const int labels = static_cast<int>(unary.shape[1]);
   std::vector<Edge> edges;
@@ -67,7 +67,7 @@ ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edg
       const std::size_t count = static_cast<std::size_t>(pairs.shape(0));
       std::vector<double> weights(count, 1.0);
       if (!weights_object.is_none()) {
-        FloatValues given = float_values(weights_object, "weights", 1, "(E,)");
+        RealArray given = float_values(weights_object, "weights", 1, "(E,)");
         if (given.values.size() != count) {
           throw py::value_error("weights: expected shape (" + std::to_string(count) +
                                 ",), one per edge, got shape " + shape_text(given.shape));
@@ -95,31 +95,40 @@ ModelEnergy general_energy(const py::handle& unary_object, const py::handle& edg
     throw py::value_error("weights: given without edges");
   }
   const ReleasedGil free;
-  return ModelEnergy{PairwiseEnergy(n, labels, std::move(unary.values), {term}, std::move(edges)),
+  if (unary.single_precision) {
+    return ModelEnergy{PairwiseEnergy::with_float_unaries(n, labels, std::move(unary.floats),
+                                                          {term}, std::move(edges)),
+                       {}};
+  }
+  return ModelEnergy{PairwiseEnergy(n, labels, std::move(unary.doubles), {term}, std::move(edges)),
                      {}};
 }
 
 ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term,
-                 const py::handle& weight_argument, const py::handle& weights_object,
-                 const py::handle& connectivity_argument) {
+                 const py::handle& weight_argument, const py::handle& connectivity_argument) {
   const auto connectivity =
       static_cast<int>(integer_argument(connectivity_argument, "connectivity", 4, 8));
   if (connectivity != 4 && connectivity != 8)
     throw py::value_error("connectivity: expected 4 or 8, got " + std::to_string(connectivity));
-  const double weight = real_argument(weight_argument, "weight");
-  FloatValues unary = float_values(unary_object, "unary", 3, "(H, W, L)");
+  // One weight for every edge (a number), or one per pixel and neighbour (an array).
+  const bool per_edge = py::isinstance<py::array>(weight_argument) ||
+                        py::isinstance<py::list>(weight_argument) ||
+                        py::isinstance<py::tuple>(weight_argument);
+  const double weight = per_edge ? 0.0 : real_argument(weight_argument, "weight");
+  CostArray unary = cost_array(unary_object, "unary", 3, "(H, W, L)");
   const py::ssize_t height = unary.shape[0], width = unary.shape[1];
   const int labels = static_cast<int>(unary.shape[2]);
-  FloatValues weights;
-  if (!weights_object.is_none()) {
+  RealArray weights;
+  if (per_edge) {
     const std::string shape = "(H, W, " + std::to_string(connectivity / 2) + ")";
-    weights = float_values(weights_object, "weights", 3, shape);
+    weights = float_values(weight_argument, "weight", 3, shape);
     if (weights.shape != std::vector<py::ssize_t>{height, width, connectivity / 2}) {
-      throw py::value_error(
-          "weights: expected shape (" + std::to_string(height) + ", " + std::to_string(width) +
-          ", " + std::to_string(connectivity / 2) + ") for a " + std::to_string(connectivity) +
-          "-connected grid (right, down" + (connectivity == 8 ? ", down-right, down-left" : "") +
-          "), got shape " + shape_text(weights.shape));
+      throw py::value_error("weight: expected a number or an array of shape (" +
+                            std::to_string(height) + ", " + std::to_string(width) + ", " +
+                            std::to_string(connectivity / 2) + ") for a " +
+                            std::to_string(connectivity) + "-connected grid (right, down" +
+                            (connectivity == 8 ? ", down-right, down-left" : "") + "), got shape " +
+                            shape_text(weights.shape));
     }
   }
   const GridShape shape{static_cast<std::size_t>(width), static_cast<std::size_t>(height)};
@@ -133,10 +142,16 @@ ModelEnergy grid(const py::handle& unary_object, const PairwiseTerm& term,
     const std::size_t k = right ? 0 : down ? 1 : v == u + shape.width + 1 ? 2 : 3;
     return given[u * per_pixel + k];
   };
+  const Connectivity neighbours = connectivity == 8 ? Connectivity::eight : Connectivity::four;
   const ReleasedGil free;
+  if (unary.single_precision) {
+    return ModelEnergy{
+        PairwiseEnergy::with_float_unaries(shape.size(), labels, std::move(unary.floats), {term},
+                                           grid_edges(shape, neighbours, edge_weight)),
+        {height, width}};
+  }
   return ModelEnergy{
-      make_grid_energy(shape, connectivity == 8 ? Connectivity::eight : Connectivity::four, labels,
-                       std::move(unary.values), term, edge_weight),
+      make_grid_energy(shape, neighbours, labels, std::move(unary.doubles), term, edge_weight),
       {height, width}};
 }
 
@@ -185,12 +200,12 @@ void bind_energy(py::module_& module) {
            "A general energy: unary (N, L) float costs, edges (E, 2) integer variable pairs, "
            "weights (E,) (default 1), one pairwise term on every edge.")
       .def_static("grid", &grid, py::arg("unary"), py::arg("term") = PairwiseTerm::potts(),
-                  py::arg("weight") = 1.0, py::arg("weights") = py::none(),
-                  py::arg("connectivity") = 4,
-                  "A grid energy: unary (H, W, L) float costs; `term` on the edges to the right "
-                  "and down neighbours (and down-right, down-left when connectivity is 8), each "
-                  "of weight `weight`, or of weights[y, x, k] for the k-th neighbour of (y, x) "
-                  "(weights of shape (H, W, connectivity / 2)). Labelings come back as (H, W).")
+                  py::arg("weight") = 1.0, py::arg("connectivity") = 4,
+                  "A grid energy: unary (H, W, L) float costs (float32 kept in single "
+                  "precision); `term` on the edges to the right and down neighbours (and "
+                  "down-right, down-left when connectivity is 8), each of weight `weight`: a "
+                  "number, or an array of shape (H, W, connectivity / 2) whose [y, x, k] weighs "
+                  "the edge to the k-th neighbour of (y, x). Labelings come back as (H, W).")
       .def_static(
           "read_uai",
           [](const std::string& path, const py::handle& memory) {
@@ -233,14 +248,18 @@ void bind_energy(py::module_& module) {
           "(H, W) for a grid energy, None for a general one.")
       .def_property_readonly(
           "unary",
-          [](const ModelEnergy& m) {
-            py::array_t<double> out({static_cast<py::ssize_t>(m.energy.num_variables()),
-                                     static_cast<py::ssize_t>(m.energy.num_labels())});
-            m.energy.unaries().visit(
-                [&](auto costs) { std::copy(costs.begin(), costs.end(), out.mutable_data()); });
-            return out;
+          [](const ModelEnergy& m) -> py::array {
+            const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(m.energy.num_variables()),
+                                                 static_cast<py::ssize_t>(m.energy.num_labels())};
+            return m.energy.unaries().visit([&](auto costs) -> py::array {
+              using Cost = std::remove_const_t<typename decltype(costs)::element_type>;
+              py::array_t<Cost> out(shape);
+              std::copy(costs.begin(), costs.end(), out.mutable_data());
+              return out;
+            });
           },
-          "A copy of the unary costs, (N, L), float64 (float-stored costs convert exactly).")
+          "A copy of the unary costs, (N, L), in the precision they are stored in: float32 for "
+          "an energy built from float32 costs (and the TSGO energy), else float64.")
       .def_property_readonly(
           "edges",
           [](const ModelEnergy& m) {

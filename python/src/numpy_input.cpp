@@ -114,23 +114,22 @@ void require_shape(const py::array& array, const std::string& name, int ndim,
 
 namespace {
 
-/// Converts and checks `count` entries; returns the index of the first non-finite one, or
+/// Copies and checks `count` entries; returns the index of the first non-finite one, or
 /// `count`.
-template <class T>
-std::size_t convert_finite(const T* data, std::size_t count, double* out) {
+template <class T, class Out>
+std::size_t copy_finite(const T* data, std::size_t count, Out* out) {
   std::size_t bad = count;
   for (std::size_t i = 0; i < count; ++i) {
-    const double value = static_cast<double>(data[i]);
+    const Out value = static_cast<Out>(data[i]);
     out[i] = value;
     if (!std::isfinite(value) && bad == count) bad = i;
   }
   return bad;
 }
 
-}  // namespace
-
-FloatValues float_values(const py::handle& object, const std::string& name, int ndim,
-                         const std::string& shape) {
+/// The float array `object` after its dtype and shape checks.
+py::array checked_float_array(const py::handle& object, const std::string& name, int ndim,
+                              const std::string& shape) {
   const py::array array = array_argument(object, name, "a float32 or float64 numpy array");
   const char kind = array.dtype().kind();
   if (kind != 'f' || (array.itemsize() != 4 && array.itemsize() != 8)) {
@@ -138,26 +137,60 @@ FloatValues float_values(const py::handle& object, const std::string& name, int 
                          std::string(py::str(array.dtype())));
   }
   require_shape(array, name, ndim, shape);
-  FloatValues result;
-  for (py::ssize_t d = 0; d < array.ndim(); ++d) result.shape.push_back(array.shape(d));
+  return array;
+}
+
+/// Copies the float32 or float64 `array` into `out` (resized), refusing a non-finite entry.
+template <class Out>
+void copy_checked(const py::array& array, const std::string& name, Out& out) {
   const std::size_t count = static_cast<std::size_t>(array.size());
-  result.values.resize(count);
+  out.resize(count);
   std::size_t bad = count;
   if (array.itemsize() == 4) {
     const auto source =
         py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
     const ReleasedGil free;
-    bad = convert_finite(source.data(), count, result.values.data());
+    bad = copy_finite(source.data(), count, out.data());
   } else {
     const auto source =
         py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
     const ReleasedGil free;
-    bad = convert_finite(source.data(), count, result.values.data());
+    bad = copy_finite(source.data(), count, out.data());
   }
   if (bad != count) {
     throw py::value_error(name + ": every entry must be finite; entry " + std::to_string(bad) +
                           " (flat index) is " +
-                          (std::isnan(result.values[bad]) ? "nan" : "infinite"));
+                          (std::isnan(static_cast<double>(out[bad])) ? "nan" : "infinite"));
+  }
+}
+
+std::vector<py::ssize_t> shape_of(const py::array& array) {
+  std::vector<py::ssize_t> shape;
+  for (py::ssize_t d = 0; d < array.ndim(); ++d) shape.push_back(array.shape(d));
+  return shape;
+}
+
+}  // namespace
+
+RealArray float_values(const py::handle& object, const std::string& name, int ndim,
+                       const std::string& shape) {
+  const py::array array = checked_float_array(object, name, ndim, shape);
+  RealArray result;
+  result.shape = shape_of(array);
+  copy_checked(array, name, result.values);
+  return result;
+}
+
+CostArray cost_array(const py::handle& object, const std::string& name, int ndim,
+                     const std::string& shape) {
+  const py::array array = checked_float_array(object, name, ndim, shape);
+  CostArray result;
+  result.shape = shape_of(array);
+  result.single_precision = array.itemsize() == 4;
+  if (result.single_precision) {
+    copy_checked(array, name, result.floats);
+  } else {
+    copy_checked(array, name, result.doubles);
   }
   return result;
 }

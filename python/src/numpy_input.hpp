@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/labeling.hpp"
 
 namespace c2f::python {
@@ -34,8 +35,17 @@ long long integer_argument(const py::handle& object, const std::string& name, lo
 double real_argument(const py::handle& object, const std::string& name);
 
 /// The entries of a float array and its shape.
-struct FloatValues {
+struct RealArray {
   std::vector<double> values;  ///< row-major
+  std::vector<py::ssize_t> shape;
+};
+
+/// Unary costs as the caller gave them: a float32 array kept in single precision (what
+/// PairwiseEnergy::with_float_unaries stores), a float64 array in double.
+struct CostArray {
+  bool single_precision = false;
+  std::vector<double> doubles;  ///< row-major, unless single_precision
+  c2f::FloatValues floats;      ///< row-major, when single_precision
   std::vector<py::ssize_t> shape;
 };
 
@@ -43,8 +53,13 @@ struct FloatValues {
 /// released while it runs). Throws TypeError naming `name` unless it is a float32 or float64
 /// numpy array, ValueError unless it has `ndim` dimensions (described by `shape`, e.g.
 /// "(H, W, L)"), is not empty, and every entry is finite. Strided arrays are read in order.
-FloatValues float_values(const py::handle& object, const std::string& name, int ndim,
-                         const std::string& shape);
+RealArray float_values(const py::handle& object, const std::string& name, int ndim,
+                       const std::string& shape);
+
+/// float_values for unary costs: a float32 array is kept in single precision (half the memory;
+/// every energy and reduction sums the same values in double as a widened copy would).
+CostArray cost_array(const py::handle& object, const std::string& name, int ndim,
+                     const std::string& shape);
 
 /// `object` as a C-contiguous int64 array with `ndim` dimensions. Throws TypeError naming `name`
 /// unless it is an integer numpy array (or a list of integers), ValueError unless it has `ndim`

@@ -2,7 +2,6 @@
 
 #include <pybind11/numpy.h>
 
-#include <array>
 #include <span>
 #include <variant>
 
@@ -14,22 +13,11 @@ namespace c2f::python {
 
 namespace py = pybind11;
 
-namespace {
-
-/// The schedules `paper` names, as c2f-solve has it.
-std::span<const SchedulePreset> presets() {
-  static const std::array<SchedulePreset, 1> list{
-      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
-  return list;
-}
-
-}  // namespace
-
 Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
   Schedule schedule;
   try {
-    schedule =
-        model.stereo ? vision::parse_stereo_schedule(text) : Schedule::parse(text, presets());
+    schedule = model.stereo ? vision::parse_stereo_schedule(text)
+                            : Schedule::parse(text, pairwise_schedule_presets());
   } catch (const std::invalid_argument& error) {
     // The parser's messages begin "schedule: " already.
     const std::string message = error.what();

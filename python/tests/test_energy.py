@@ -39,7 +39,7 @@ def test_grid_energy_has_the_neighbour_edges(rng, connectivity):
     unary = rng.random((h, w, labels)).astype(np.float32)
     per_pixel = connectivity // 2
     weights = rng.random((h, w, per_pixel))
-    energy = c2f.Energy.grid(unary, c2f.Term.truncated_linear(2.0), weights=weights,
+    energy = c2f.Energy.grid(unary, c2f.Term.truncated_linear(2.0), weight=weights,
                              connectivity=connectivity)
     assert energy.shape == (h, w)
     offsets = [(0, 1), (1, 0), (1, 1), (1, -1)][:per_pixel]
@@ -81,3 +81,31 @@ def test_uai_round_trip(rng, tmp_path):
         x = rng.integers(0, 3, 5)
         offsets.append(again.evaluate(x) - energy.evaluate(x))
     np.testing.assert_allclose(offsets, offsets[0], atol=1e-9)
+
+
+def test_float32_costs_stay_float32_and_solve_as_their_float64_copy(rng):
+    unary32 = rng.random((20, 24, 6)).astype(np.float32)
+    term = c2f.Term.truncated_linear(2.0)
+    single = c2f.Energy.grid(unary32, term, weight=0.4)
+    double = c2f.Energy.grid(unary32.astype(np.float64), term, weight=0.4)
+    assert single.unary.dtype == np.float32 and double.unary.dtype == np.float64
+    np.testing.assert_array_equal(single.unary, double.unary)
+    general = c2f.Energy(unary32.reshape(-1, 6), single.edges, single.weights, term)
+    assert general.unary.dtype == np.float32
+    # Every energy and reduction sums the same values in double: the same run, step for step.
+    for schedule in ["flat", "paper"]:
+        a, b = c2f.solve(single, schedule), c2f.solve(double, schedule)
+        np.testing.assert_array_equal(a.labeling, b.labeling)
+        np.testing.assert_array_equal(a.trace["energy"], b.trace["energy"])
+    x = rng.integers(0, 6, (20, 24))
+    assert single.evaluate(x) == double.evaluate(x)
+
+
+def test_grid_weight_is_a_number_or_one_per_pixel_and_neighbour(rng):
+    unary = rng.random((3, 4, 2))
+    with pytest.raises(ValueError, match=r"weight: expected a number or an array of shape \(3, 4, 2\)"):
+        c2f.Energy.grid(unary, weight=np.ones((3, 4, 1)))
+    with pytest.raises(TypeError, match="weight: expected a real number, got str"):
+        c2f.Energy.grid(unary, weight="heavy")
+    per_edge = c2f.Energy.grid(unary, weight=np.full((3, 4, 2), 0.5))
+    np.testing.assert_array_equal(per_edge.weights, c2f.Energy.grid(unary, weight=0.5).weights)

@@ -33,8 +33,8 @@ def test_non_finite_costs_are_refused(rng, bad):
     unary[1, 2, 1] = bad
     with pytest.raises(ValueError, match="unary: every entry must be finite; entry 13"):
         c2f.Energy.grid(unary)
-    with pytest.raises(ValueError, match="weights: every entry must be finite"):
-        c2f.Energy.grid(rng.random((3, 4, 2)), weights=np.full((3, 4, 2), bad))
+    with pytest.raises(ValueError, match="weight: every entry must be finite"):
+        c2f.Energy.grid(rng.random((3, 4, 2)), weight=np.full((3, 4, 2), bad))
     with pytest.raises(ValueError, match="costs: every entry must be finite"):
         c2f.Term.table(np.full((2, 2), bad))
 

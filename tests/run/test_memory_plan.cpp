@@ -126,20 +126,35 @@ TEST_CASE("the recycled graphs get what the budget leaves above the run's floor"
             PairwiseEnergy(600, 6, std::vector<double>(3600, 0.5), {PairwiseTerm::table(6, table)},
                            std::vector<Edge>(single.edges().begin(), single.edges().end()))));
 
+  // Too little above the floor for the kept move problems (6 x (600 + 1150) doubles): the
+  // recycled graphs get it all.
+  const std::size_t problems = 6 * (600 + energy.edges().size()) * sizeof(double);
+  CHECK(kept_problem_bytes(ExpansionOptions{}, size) == problems);
   const MemoryBudget budget{*floor + 12345, "a test"};
   const MemoryPlan plan = plan_memory(spec, size, budget, std::nullopt, "the run");
   CHECK(plan.floor == *floor);
   CHECK(plan.budget == *floor + 12345);
+  CHECK(plan.problem_memory == 0);
   CHECK(plan.graph_memory == 12345);
-  // Unlimited by the run: all the budget leaves, beyond MoveOptions' default too.
-  const MemoryBudget roomy{*floor + MoveOptions{}.graph_memory_limit + 1, "a test"};
-  CHECK(plan_memory(spec, size, roomy, std::nullopt, "the run").graph_memory ==
-        MoveOptions{}.graph_memory_limit + 1);
-  // A smaller limit given stays; the spec's options get the plan's limit on every level.
-  CHECK(plan_memory(spec, size, budget, 100, "the run").graph_memory == 100);
-  const SolverSpec limited = with_graph_memory(near_expansion(NearLevels::original), 777);
-  CHECK(std::get<ExpansionOptions>(limited.original).graph_memory_limit == 777);
-  CHECK(std::get<ExpansionOptions>(limited.coarse_options()).graph_memory_limit == 777);
+  // Room for them: the problems first, the graphs all the rest (beyond MoveOptions' default
+  // too, when the run sets no limit).
+  const MemoryBudget roomy{*floor + problems + MoveOptions{}.graph_memory_limit + 1, "a test"};
+  const MemoryPlan roomy_plan = plan_memory(spec, size, roomy, std::nullopt, "the run");
+  CHECK(roomy_plan.problem_memory == problems);
+  CHECK(roomy_plan.graph_memory == MoveOptions{}.graph_memory_limit + 1);
+  // A small graph limit given stays, and never drops the kept problems.
+  const MemoryPlan capped = plan_memory(spec, size, roomy, 100, "the run");
+  CHECK(capped.graph_memory == 100);
+  CHECK(capped.problem_memory == problems);
+  // Swap keeps no problems. The spec's options get the plan's limits on every level.
+  CHECK(plan_memory(SolverSpec{MaxFlowKind::dynamic, SwapOptions{}}, size, roomy, std::nullopt,
+                    "the run")
+            .problem_memory == 0);
+  const SolverSpec limited = with_memory_plan(near_expansion(NearLevels::original), capped);
+  for (const SolverOptions& options : {limited.original, limited.coarse_options()}) {
+    CHECK(std::get<ExpansionOptions>(options).graph_memory_limit == 100);
+    CHECK(std::get<ExpansionOptions>(options).problem_memory_limit == problems);
+  }
   // A default budget grows to the floor up to its ceiling.
   const MemoryBudget growing{*floor / 2, "a share", *floor * 2};
   CHECK(plan_memory(spec, size, growing, std::nullopt, "the run").budget == *floor);

@@ -72,6 +72,7 @@ TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step
   whole.near_radius = 0;
   // The run layer sets the graph-cut solvers' limit from the budget: the same limit by hand.
   whole.graph_memory_limit = near.graph_memory_limit = report.plan.graph_memory;
+  whole.problem_memory_limit = near.problem_memory_limit = report.plan.problem_memory;
   ExpansionSolver<> coarse_solver(whole), original_solver(near);
   PartitionList same_levels({coarse});
   const Summary summary =
@@ -86,10 +87,12 @@ TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step
   CHECK(report.budget.bytes == default_memory_budget().bytes);
   CHECK(report.plan.floor > 0);
   CHECK(report.plan.floor <= report.plan.budget);
-  CHECK(report.plan.graph_memory == report.plan.budget - report.plan.floor);
+  CHECK(report.plan.problem_memory > 0);
+  CHECK(report.plan.graph_memory ==
+        report.plan.budget - report.plan.floor - report.plan.problem_memory);
   CHECK(report.recycles);
-  CHECK(report.graph_memory_used > 0);
-  CHECK(report.graph_memory_used <= report.plan.graph_memory);
+  CHECK(report.optional_memory_used > 0);
+  CHECK(report.optional_memory_used <= report.plan.graph_memory + report.plan.problem_memory);
   CHECK_THAT(report.memory_line(), Catch::StartsWith("memory budget ") &&
                                        Catch::Contains(", recycled move graphs up to "));
   CHECK_THAT(report.memory_report(), Catch::Contains(", floor ") && Catch::Contains(" used"));
@@ -102,14 +105,18 @@ TEST_CASE("a run's graph memory is what the budget leaves, at most what the conf
   RunConfig config;
   const auto floor = run_memory_floor(config.solver, problem_size(energy));
   REQUIRE(floor);
-  config.memory = MemoryBudget{*floor + 100000, "a test"};
+  const std::size_t problems = *kept_problem_bytes(ExpansionOptions{}, problem_size(energy));
+  config.memory = MemoryBudget{*floor + problems + 100000, "a test"};
   PartitionList flat;
-  CHECK(run(energy, flat, config).plan.graph_memory == 100000);
-  config.graph_memory = 0;  // no recycling: nothing kept, the same result
+  const RunReport roomy = run(energy, flat, config);
+  CHECK(roomy.plan.problem_memory == problems);
+  CHECK(roomy.plan.graph_memory == 100000);
+  config.graph_memory = 0;  // no recycled graphs: the kept problems only, the same result
   PartitionList again;
   const RunReport without = run(energy, again, config);
   CHECK(without.plan.graph_memory == 0);
-  CHECK(without.graph_memory_used == 0);
+  CHECK(without.optional_memory_used == problems);
+  CHECK(without.summary.labeling == roomy.summary.labeling);
   // LBP and ICM keep nothing and say so.
   config.solver.original = IcmOptions{};
   PartitionList icm_levels;
@@ -173,6 +180,7 @@ TEST_CASE("the segmentation recipe runs either method within the budget, as buil
     if (method == vision::SegmentationMethod::potts) {
       ExpansionOptions expansion;
       expansion.graph_memory_limit = report.plan.graph_memory;
+      expansion.problem_memory_limit = report.plan.problem_memory;
       ExpansionSolver<> solver(expansion);
       options.plateau_steps = {vision::coarse_plateau_steps(
           solver.quiet_steps_to_converge(problem.potts), scene.num_labels(), false)};

@@ -115,8 +115,15 @@ double CoopSolver::step() {
 
 Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> start) {
   const PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
+  // Of graph_memory_limit, a quarter may keep the move problems when all of them fit in it; the
+  // recycled graphs get the rest.
   ExpansionOptions expansion_options;
-  expansion_options.graph_memory_limit = options_.graph_memory_limit;
+  const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
+                                   .value_or(static_cast<std::size_t>(-1));
+  expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;
+  expansion_options.graph_memory_limit =
+      options_.graph_memory_limit -
+      (problems <= expansion_options.problem_memory_limit ? problems : 0);
   ExpansionSolver<> expansion(expansion_options);
   expansion.bind(pairwise, start);
   const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);

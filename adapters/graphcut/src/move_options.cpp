@@ -54,6 +54,14 @@ std::size_t label_count(const ProblemSize& size) {
 
 }  // namespace
 
+std::optional<std::size_t> kept_problem_bytes(const ExpansionOptions& /*options*/,
+                                              const ProblemSize& size) {
+  return checked_product(
+      {label_count(size),
+       checked_sum({size.variables, size.edges}).value_or(static_cast<std::size_t>(-1)),
+       sizeof(double)});
+}
+
 std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& /*options*/,
                                               const ProblemSize& size, GraphStorage storage) {
   return graphs_bytes(label_count(size), size, storage);

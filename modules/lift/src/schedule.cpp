@@ -1,6 +1,7 @@
 #include "c2f/lift/schedule.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -189,6 +190,12 @@ std::string Schedule::validate_image(GridShape image) const {
     }
   }
   return {};
+}
+
+std::span<const SchedulePreset> pairwise_schedule_presets() {
+  static const std::array<SchedulePreset, 1> presets{
+      SchedulePreset{"paper", "cp:1,1 cp:2,1 cp:3,1 flat"}};
+  return presets;
 }
 
 }  // namespace c2f

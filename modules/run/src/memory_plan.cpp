@@ -12,6 +12,15 @@ constexpr std::size_t kProcessBytes = std::size_t{128} << 20;
 constexpr std::size_t kPerVariableBytes = 64;
 constexpr std::size_t kUnlimited = static_cast<std::size_t>(-1);
 
+/// The move problems a level of `size` keeps within `limit` (expansion: all of them or none).
+std::size_t kept_problems(const SolverOptions& options, const ProblemSize& size,
+                          std::size_t limit) {
+  const auto* expansion = std::get_if<ExpansionOptions>(&options);
+  if (expansion == nullptr) return 0;
+  const std::optional<std::size_t> bytes = kept_problem_bytes(*expansion, size);
+  return bytes && *bytes <= limit ? *bytes : 0;
+}
+
 /// The recycled graphs a level of `size` would keep with no limit (expansion: one per label;
 /// swap: one per pair of labels); 0 for solvers that keep none.
 std::optional<std::size_t> wanted_graphs(const SolverOptions& options, MaxFlowKind maxflow,
@@ -57,18 +66,23 @@ MemoryPlan plan_memory(const SolverSpec& spec, const ProblemSize& size, const Me
   plan.floor = *floor;
   plan.budget = budget.for_need(*floor);  // a default budget grows to the floor
   const std::size_t above_floor = plan.budget - plan.floor;
-  plan.graph_memory = std::min(graph_memory.value_or(kUnlimited), above_floor);
+  plan.problem_memory = kept_problems(spec.original, size, above_floor);
+  plan.graph_memory =
+      std::min(graph_memory.value_or(kUnlimited), above_floor - plan.problem_memory);
   // What the budget leaves above the floor, and the original problem's solver's share of the
   // floor: coarse levels run before that solver is built.
   plan.coarse_level_room = above_floor + *working_memory_bytes(spec.original, spec.maxflow, size);
   return plan;
 }
 
-SolverSpec with_graph_memory(SolverSpec spec, std::size_t bytes) {
-  const auto set = [bytes](SolverOptions& options) {
+SolverSpec with_memory_plan(SolverSpec spec, const MemoryPlan& plan) {
+  const auto set = [&plan](SolverOptions& options) {
     std::visit(
-        [bytes]<class Options>(Options& o) {
-          if constexpr (std::is_base_of_v<MoveOptions, Options>) o.graph_memory_limit = bytes;
+        [&plan]<class Options>(Options& o) {
+          if constexpr (std::is_base_of_v<MoveOptions, Options>)
+            o.graph_memory_limit = plan.graph_memory;
+          if constexpr (std::is_same_v<Options, ExpansionOptions>)
+            o.problem_memory_limit = plan.problem_memory;
         },
         options);
   };
@@ -78,7 +92,8 @@ SolverSpec with_graph_memory(SolverSpec spec, std::size_t bytes) {
 }
 
 std::optional<std::size_t> coarse_level_memory(const SolverSpec& spec, const ProblemSize& size,
-                                               std::size_t groups, std::size_t graph_memory) {
+                                               std::size_t groups, std::size_t graph_memory,
+                                               std::size_t problem_memory) {
   const ProblemSize level{groups, size.labels, size.edges, 0};
   const auto labels = static_cast<std::size_t>(std::max(size.labels, 0));
   const auto unaries = checked_product({groups, labels, sizeof(double)});
@@ -89,14 +104,15 @@ std::optional<std::size_t> coarse_level_memory(const SolverSpec& spec, const Pro
   // more than the limit.
   const auto wanted = wanted_graphs(spec.coarse_options(), spec.maxflow, level);
   const std::size_t graphs = std::min(wanted.value_or(kUnlimited), graph_memory);
-  return checked_sum({*unaries, *edges, *solver, graphs});
+  const std::size_t problems = kept_problems(spec.coarse_options(), level, problem_memory);
+  return checked_sum({*unaries, *edges, *solver, graphs, problems});
 }
 
 CoarseLevelFits coarse_level_admission(const SolverSpec& spec, const ProblemSize& size,
                                        const MemoryPlan& plan) {
   return [spec, size, plan](std::size_t groups) {
     const std::optional<std::size_t> need =
-        coarse_level_memory(spec, size, groups, plan.graph_memory);
+        coarse_level_memory(spec, size, groups, plan.graph_memory, plan.problem_memory);
     return need && *need <= plan.coarse_level_room;
   };
 }

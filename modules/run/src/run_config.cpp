@@ -17,21 +17,29 @@ std::string RunConfig::validate() const {
   return {};
 }
 
+namespace {
+
+/// ", recycled move graphs up to N[, kept move problems M]" for a solver that recycles.
+std::string optional_memory_text(const RunReport& report) {
+  if (!report.recycles) return {};
+  std::string text =
+      ", recycled move graphs up to " + format_bytes(static_cast<double>(report.plan.graph_memory));
+  if (report.plan.problem_memory > 0)
+    text += ", kept move problems " + format_bytes(static_cast<double>(report.plan.problem_memory));
+  return text;
+}
+
+}  // namespace
+
 std::string RunReport::memory_line() const {
-  std::string line = "memory budget " + budget.describe();
-  if (recycles) {
-    line += ", recycled move graphs up to " + format_bytes(static_cast<double>(plan.graph_memory));
-  }
-  return line;
+  return "memory budget " + budget.describe() + optional_memory_text(*this);
 }
 
 std::string RunReport::memory_report() const {
   std::string line = "memory: budget " + budget.describe() + ", floor " +
-                     format_bytes(static_cast<double>(plan.floor));
-  if (recycles) {
-    line += ", recycled move graphs up to " + format_bytes(static_cast<double>(plan.graph_memory)) +
-            ", " + format_bytes(static_cast<double>(graph_memory_used)) + " used at the end";
-  }
+                     format_bytes(static_cast<double>(plan.floor)) + optional_memory_text(*this);
+  if (recycles)
+    line += ", " + format_bytes(static_cast<double>(optional_memory_used)) + " used at the end";
   return line;
 }
 

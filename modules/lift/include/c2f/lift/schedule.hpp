@@ -34,6 +34,10 @@ struct SchedulePreset {
   std::string levels;
 };
 
+/// The presets of any pairwise energy (no image needed): "paper", the paper's colour-passing
+/// levels cp:1,1 cp:2,1 cp:3,1. c2f-solve and c2f.solve offer them; applications add their own.
+[[nodiscard]] std::span<const SchedulePreset> pairwise_schedule_presets();
+
 struct Schedule {
   std::vector<LevelSpec> levels;       ///< coarse levels, coarsest first
   std::vector<double> auto_fractions;  ///< non-empty for auto:...; levels is then empty

@@ -71,7 +71,7 @@ RunReport run(const CoopEnergy& energy, P& levels, const CoopRunConfig& config,
   options.graph_memory_limit = report.plan.graph_memory;
   CoopSolver solver(options);
   report.summary = coarse_to_fine(energy, levels, solver, config.limits, observer);
-  report.graph_memory_used = solver.kept_bytes();
+  report.optional_memory_used = solver.kept_bytes();
   return report;
 }
 

@@ -23,8 +23,12 @@ struct MemoryPlan {
   /// labelings and partitions (64 bytes per variable), and the original problem's solver's
   /// working memory.
   std::size_t floor = 0;
+  /// Alpha-expansion's problem_memory_limit: its kept move problems (num_labels x (N + E)
+  /// doubles, which make a move's problem cost what changed since) when they fit what the
+  /// budget leaves above the floor, else 0. They come first: a small graph cap never drops them.
+  std::size_t problem_memory = 0;
   /// The graph-cut solvers' graph_memory_limit on every level: what the budget leaves above the
-  /// floor, or less when the run's graph_memory says so.
+  /// floor and the kept problems, or less when the run's graph_memory says so.
   std::size_t graph_memory = 0;
   /// The bytes a coarse level's reduced energy, its solver's working memory and its recycled
   /// graphs may take: what the budget leaves above the floor, plus the original problem's
@@ -52,17 +56,20 @@ struct MemoryPlan {
                                      std::optional<std::size_t> graph_memory,
                                      const std::string& what);
 
-/// `spec` with every graph-cut options' graph_memory_limit (original and coarse) set to `bytes`.
-[[nodiscard]] SolverSpec with_graph_memory(SolverSpec spec, std::size_t bytes);
+/// `spec` with every graph-cut options' graph_memory_limit (original and coarse) set to
+/// plan.graph_memory, and expansion's problem_memory_limit to plan.problem_memory.
+[[nodiscard]] SolverSpec with_memory_plan(SolverSpec spec, const MemoryPlan& plan);
 
 /// An upper estimate of the bytes a coarse level of `groups` groups of a problem of `size` takes
 /// beside the floor: its reduced energy (unaries in double, at most as many edges as the
-/// original), its solver's working memory (spec.coarse_options()) and its recycled move graphs
-/// (one per move, at most graph_memory). std::nullopt when the count overflows.
+/// original), its solver's working memory (spec.coarse_options()), its kept move problems
+/// (expansion, when they fit problem_memory) and its recycled move graphs (one per move, at most
+/// graph_memory). std::nullopt when the count overflows.
 [[nodiscard]] std::optional<std::size_t> coarse_level_memory(const SolverSpec& spec,
                                                              const ProblemSize& size,
                                                              std::size_t groups,
-                                                             std::size_t graph_memory);
+                                                             std::size_t graph_memory,
+                                                             std::size_t problem_memory = 0);
 
 /// Whether a coarse level of this many groups is solved (the driver's Options::coarse_level_fits).
 using CoarseLevelFits = std::function<bool(std::size_t groups)>;

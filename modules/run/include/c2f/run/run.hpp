@@ -55,13 +55,13 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   RunConfig planned = config;
   planned.memory = report.budget;
   report.plan = plan_run(energy, planned);
-  const SolverSpec spec = with_graph_memory(config.solver, report.plan.graph_memory);
+  const SolverSpec spec = with_memory_plan(config.solver, report.plan);
   report.recycles = recycles_move_graphs(spec.original);
   Options options = config.limits;
   options.coarse_level_fits = coarse_level_admission(spec, problem_size(energy), report.plan);
   report.summary = with_solvers(spec, [&](auto&& solvers) {
     Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);
-    report.graph_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
+    report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
     return summary;
   });
   return report;

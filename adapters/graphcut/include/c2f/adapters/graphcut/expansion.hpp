@@ -62,14 +62,14 @@ class ExpansionSolver {
     return (options_.near_radius > 0 ? 3 : 1) * steps_per_sweep(energy.num_labels());
   }
 
-  /// Starts from `start` (validated); fixes the move graphs' topology. Of
-  /// options.graph_memory_limit, up to a quarter keeps every label's move problem (d, p) for
-  /// patching, the rest recycled move graphs (keys: the labels, then shifts up and down).
+  /// Starts from `start` (validated); fixes the move graphs' topology. Every label's move
+  /// problem (d, p) is kept for patching within options.problem_memory_limit, recycled move
+  /// graphs (keys: the labels, then shifts up and down) within options.graph_memory_limit.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
-    problems_.bind(energy, options_.graph_memory_limit / 4);
+    problems_.bind(energy, options_.problem_memory_limit);
     state_.bind(energy, start, "ExpansionSolver::bind: start",
                 static_cast<std::size_t>(energy.num_labels()) + shift_steps(),
-                options_.graph_memory_limit - problems_.memory_bytes());
+                options_.graph_memory_limit);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -112,8 +112,8 @@ class ExpansionSolver {
   [[nodiscard]] std::span<const Label> labeling() const noexcept { return state_.labeling; }
   /// What the last step() did (all zero before the first step of a binding).
   [[nodiscard]] const MoveStep& last_step() const noexcept { return last_; }
-  /// The optional memory in use (within options.graph_memory_limit): the kept move problems and
-  /// the recycled move graphs.
+  /// The optional memory in use: the kept move problems (within options.problem_memory_limit)
+  /// and the recycled move graphs (within options.graph_memory_limit).
   [[nodiscard]] std::size_t kept_bytes() const noexcept {
     return problems_.memory_bytes() + state_.moves.recycled_bytes();
   }

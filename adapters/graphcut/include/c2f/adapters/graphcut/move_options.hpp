@@ -21,13 +21,12 @@ struct MoveOptions {
   /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
   /// that lowers the energy is accepted (and no move that keeps it equal).
   double tolerance = 0.0;
-  /// Bytes recycling may take. With a backend that resumes from its flow (the default
-  /// DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move graphs from
-  /// its second move on while they fit (binary_move.hpp), so a repeated move costs in
-  /// proportion to what changed since; moves beyond the limit share one graph. Expansion also
-  /// keeps every label's move problem for patching when that fits in a quarter of the limit
-  /// (detail/expansion_problems.hpp). 0 turns both off. With exact arithmetic results do not
-  /// depend on it; with rounding, ties between minimum cuts may break differently.
+  /// Bytes recycled move graphs may take. With a backend that resumes from its flow (the
+  /// default DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move
+  /// graphs from its second move on while they fit (binary_move.hpp), so a repeated move costs
+  /// in proportion to what changed since; moves beyond the limit share one graph. 0 turns
+  /// recycling off. With exact arithmetic results do not depend on it; with rounding, ties
+  /// between minimum cuts may break differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
 
   /// Empty when usable, else a message naming the field.
@@ -51,6 +50,11 @@ struct ExpansionOptions : MoveOptions {
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;
+  /// Bytes the kept move problems may take: every label's move problem (d, p) is kept for
+  /// patching when all of them fit (detail/expansion_problems.hpp), so a move's problem costs
+  /// in proportion to what changed since that label's last move. 0 turns it off; results never
+  /// depend on it (a patched problem is bitwise the one computed in full).
+  std::size_t problem_memory_limit = std::size_t{13} << 26;  // 0.8125 GiB
   /// Every sweep begins with two shift moves (detail/shift_moves.hpp): every variable may step
   /// one label up, in one move; then one label down. For labels with an order (disparities),
   /// they move a region that is off by one label all at once, which no expansion move can; the
@@ -86,8 +90,13 @@ enum class GraphStorage { arrays, adjacency_lists };
                                                               const ProblemSize& size,
                                                               GraphStorage storage);
 
-/// The optional memory alpha-expansion would use on a problem of `size` if it had no limit: a
-/// recycled move graph per label, each a binary-move solver's size. std::nullopt when the count
+/// The bytes alpha-expansion's kept move problems take on a problem of `size`: num_labels x
+/// (N + E) doubles. std::nullopt when the count overflows.
+[[nodiscard]] std::optional<std::size_t> kept_problem_bytes(const ExpansionOptions& options,
+                                                            const ProblemSize& size);
+
+/// The recycled move graphs alpha-expansion would keep on a problem of `size` if it had no
+/// limit: one per label, each a binary-move solver's size. std::nullopt when the count
 /// overflows.
 [[nodiscard]] std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& options,
                                                             const ProblemSize& size,
