@@ -55,9 +55,9 @@
 #include <vector>
 
 #include "c2f/c2f.hpp"
+#include "c2f/support/number_text.hpp"
 #include "c2f/support/output_file.hpp"
 #include "c2f/support/parallel_for.hpp"
-#include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/disparity_io.hpp"
 #include "c2f/vision/stereo/evaluation.hpp"
 #include "c2f/vision/stereo/middlebury.hpp"
@@ -153,9 +153,6 @@ std::uint64_t energy_fingerprint(const PairwiseEnergy& energy) {
 Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::string& schedule,
           int near_radius, bool shift_moves, const Settings& settings,
           const std::string& trace_path) {
-  const PairwiseEnergy& energy = problem.energy;
-  const Schedule parsed = parse_stereo_schedule(schedule);
-  ScheduleProvider provider(parsed, scene.shape(), slic_source(problem.guide));
   ExpansionOptions expansion;
   expansion.order = settings.label_order;
   expansion.near_radius = near_radius;
@@ -171,11 +168,12 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
-  run.summary = c2f::run(energy, provider, config, [&](const StepEvent& event) {
-                  writer(event);
-                  run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
-                  return ObserverDecision::continue_run;
-                }).summary;
+  run.summary =
+      run_stereo(problem, parse_stereo_schedule(schedule), config, [&](const StepEvent& event) {
+        writer(event);
+        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+        return ObserverDecision::continue_run;
+      }).run.summary;
   close_checked(file, trace_path);
   run.errors = scene_errors(labels_to_disparity(run.summary.labeling, scene.shape()), scene);
   return run;

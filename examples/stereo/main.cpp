@@ -73,14 +73,10 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
                            std::to_string(shape.height) + " pixels and " +
                            std::to_string(command.tsgo.labels) + " labels solved by " +
                            std::string(to_string(command.run.solver.kind()));
-  command.run.memory->require(
-      (command.scene.empty() ? "LEFT '" + command.pair.left + "': "
-                             : "--scene " + command.scene + ": ") +
-          what,
-      grid_run_memory_need(command.run.solver, shape.width, shape.height, command.tsgo.labels,
-                           CostStorage::single_precision,
-                           tsgo_memory_estimate(shape.width, shape.height, command.tsgo.labels,
-                                                command.tsgo.threads)));
+  command.run.memory->require((command.scene.empty() ? "LEFT '" + command.pair.left + "': "
+                                                     : "--scene " + command.scene + ": ") +
+                                  what,
+                              stereo_memory_need(shape, command.tsgo, command.run.solver));
 }
 
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
@@ -113,22 +109,22 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
 /// The run: the configured solver on the schedule's levels within the budget (the recycled
 /// move graphs get what it leaves above the run's floor on the built energy), every step traced
 /// (with its error when there is GT) and each level's partition kept for --save-partitions.
-RunReport solve(const examples::StereoCommand& command, const StereoScene& scene,
-                const StereoProblem& problem, ScheduleProvider& levels, examples::RunRecord& record,
-                LevelPartitionRecorder& partitions, const examples::InterruptWatch& interrupts) {
+StereoRunReport solve(const examples::StereoCommand& command, const StereoScene& scene,
+                      const StereoProblem& problem, examples::RunRecord& record,
+                      LevelPartitionRecorder& partitions,
+                      const examples::InterruptWatch& interrupts) {
   RunConfig config = command.run;
   config.energy_name = "the run on the TSGO energy";
-  return run(
-      problem.tsgo.energy, levels, config,
+  return run_stereo(
+      problem.tsgo, command.schedule, config,
       record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
                       interrupts, {std::ref(partitions)}));
 }
 
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
                    const StereoScene& scene, const StereoProblem& problem,
-                   const ScheduleProvider& levels, const RunReport& run,
-                   const std::optional<BadPixelRates>& rates, const std::string& dataset_error,
-                   const examples::InterruptWatch& interrupts) {
+                   const StereoRunReport& stereo_run, const std::optional<BadPixelRates>& rates,
+                   const std::string& dataset_error, const examples::InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
   std::ofstream report((out / "summary.txt").string());
   if (!report) throw std::runtime_error("cannot write '" + (out / "summary.txt").string() + "'");
@@ -139,8 +135,8 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << examples::near_and_shift_moves_text(command.run.solver) << "\n"
          << "TSGO step 1: " << problem.seconds << " s on " << resolved_threads(command.tsgo.threads)
          << " threads (not on the run clock, same for every schedule)\n"
-         << run.memory_line() << "\n";
-  examples::write_run_report(report, levels.reports(), run.summary, interrupts);
+         << stereo_run.run.memory_line() << "\n";
+  examples::write_run_report(report, stereo_run.levels, stereo_run.run.summary, interrupts);
   if (!scene.gt_convention.empty()) report << "GT read as " << scene.gt_convention << "\n";
   if (!dataset_error.empty()) report << dataset_error << "\n";
   if (rates) {
@@ -171,13 +167,13 @@ struct RunScores {
 /// Stages the disparity maps, summary.txt and the saved partitions, and returns the scores.
 RunScores write_outputs(const examples::RunRecord& record, const examples::StereoCommand& command,
                         const StereoScene& scene, const StereoProblem& problem,
-                        const ScheduleProvider& levels, const LevelPartitionRecorder& partitions,
-                        const RunReport& run, const examples::InterruptWatch& interrupts) {
-  const Labeling& labeling = run.summary.labeling;
+                        const LevelPartitionRecorder& partitions, const StereoRunReport& stereo_run,
+                        const examples::InterruptWatch& interrupts) {
+  const Labeling& labeling = stereo_run.run.summary.labeling;
   RunScores scores{
       write_disparity_outputs(record.staging().string(), labeling, scene, command.tsgo.labels),
       scene_error_line(labeling, scene)};
-  write_summary(record.staging(), command, scene, problem, levels, run, scores.rates,
+  write_summary(record.staging(), command, scene, problem, stereo_run, scores.rates,
                 scores.dataset_error, interrupts);
   partitions.write(record.staging().string(), scene.shape());
   return scores;
@@ -217,14 +213,13 @@ int main(int argc, char** argv) {
     if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
-    ScheduleProvider levels(command.schedule, scene.shape(), slic_source(problem.tsgo.guide));
     LevelPartitionRecorder partitions(command.save_partitions);
-    const RunReport run = solve(command, scene, problem, levels, record, partitions, interrupts);
+    const StereoRunReport run = solve(command, scene, problem, record, partitions, interrupts);
 
     const RunScores scores =
-        write_outputs(record, command, scene, problem, levels, partitions, run, interrupts);
+        write_outputs(record, command, scene, problem, partitions, run, interrupts);
     record.commit();
-    report_end(command, run.summary, scores, interrupts);
+    report_end(command, run.run.summary, scores, interrupts);
     return interrupts.exit_code();
   });
 }

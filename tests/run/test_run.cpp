@@ -1,6 +1,7 @@
 // The run layer's entry points: run() is coarse_to_fine with the solver a SolverSpec names,
 // within a memory budget it plans, and reports what was given and used; every refusal names
-// its field; the segmentation recipe runs cooperative cuts and Potts as c2f-segment does.
+// its field; the segmentation recipe runs cooperative cuts and Potts as c2f-segment does, and
+// the stereo recipe a TSGO energy over a stereo schedule.
 
 #include <catch2/catch.hpp>
 
@@ -17,10 +18,14 @@
 #include "c2f/run/run.hpp"
 #include "c2f/run/run_error.hpp"
 #include "c2f/run/segmentation_run.hpp"
+#include "c2f/run/stereo_run.hpp"
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
+#include "c2f/vision/stereo/stereo_schedules.hpp"
+#include "c2f/vision/superpixels.hpp"
 #include "support/random_models.hpp"
 #include "support/synthetic_segmentation.hpp"
+#include "support/synthetic_stereo.hpp"
 
 using namespace c2f;
 using namespace c2f::test;
@@ -201,4 +206,34 @@ TEST_CASE("the segmentation recipe runs either method within the budget, as buil
   CHECK_THROWS_WITH(vision::run_segmentation(problem, levels, bad),
                     Catch::StartsWith("plateau: expected -1"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the stereo recipe runs the TSGO energy over a stereo schedule, as built by hand",
+          "[run][stereo]") {
+  const SyntheticPair pair = synthetic_pair(64, 48, 3, 7, 11);
+  vision::TsgoOptions tsgo;
+  tsgo.labels = 10;
+  const vision::TsgoProblem problem = vision::tsgo_problem(pair.left, pair.right, tsgo);
+  const GridShape shape{64, 48};
+  RunConfig config;
+  config.limits.max_total_steps = 80;
+  for (const char* text : {"paper", "paper-slic"}) {
+    const Schedule schedule = vision::parse_stereo_schedule(text);
+    EnergyTrace by_recipe, by_hand;
+    const vision::StereoRunReport report =
+        vision::run_stereo(problem, schedule, config, by_recipe.observer());
+    ScheduleProvider levels(schedule, shape, vision::slic_source(problem.guide));
+    const RunReport hand = run(problem.energy, levels, config, by_hand.observer());
+    CHECK(by_recipe.energies == by_hand.energies);
+    CHECK(report.run.summary.labeling == hand.summary.labeling);
+    CHECK(report.levels.size() == levels.reports().size());
+    CHECK(report.levels.size() == schedule.levels.size());
+  }
+  // Before anything is built: the larger of TSGO step 1's peak and the run's floor.
+  const auto need = vision::stereo_memory_need(shape, tsgo, config.solver);
+  REQUIRE(need.has_value());
+  CHECK(*need ==
+        std::max(*vision::tsgo_memory_estimate(64, 48, 10, tsgo.threads),
+                 *run_memory_floor(config.solver,
+                                   *grid_problem_size(64, 48, 10, CostStorage::single_precision))));
 }

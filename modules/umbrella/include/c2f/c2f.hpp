@@ -56,6 +56,7 @@
 #include "c2f/run/run_error.hpp"
 #include "c2f/run/segmentation_run.hpp"
 #include "c2f/run/solver_spec.hpp"
+#include "c2f/run/stereo_run.hpp"
 #include "c2f/vision/image_io.hpp"
 #include "c2f/vision/partition_image.hpp"
 #include "c2f/vision/segmentation/colour_gmm.hpp"

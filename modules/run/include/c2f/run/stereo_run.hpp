@@ -1,0 +1,39 @@
+#pragma once
+// The stereo application's run: the TSGO energy of a scene minimised over a stereo schedule's
+// levels (slic levels segment the energy's guide image) with the run layer, within one memory
+// budget. c2f-stereo and the stereo bench run it.
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "c2f/core/grid.hpp"
+#include "c2f/driver/observer.hpp"
+#include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/run_config.hpp"
+#include "c2f/vision/stereo/tsgo_energy.hpp"
+
+namespace c2f::vision {
+
+/// What a stereo run of `solver` on a scene of `shape` needs before anything is built: the
+/// larger of TSGO step 1's peak (tsgo_memory_estimate with tsgo's labels and threads) and the
+/// run's floor on the TSGO energy (float unaries). std::nullopt when either overflows. Give it
+/// to MemoryBudget::require.
+[[nodiscard]] std::optional<std::size_t> stereo_memory_need(GridShape shape,
+                                                            const TsgoOptions& tsgo,
+                                                            const SolverSpec& solver);
+
+/// A stereo run's report: the run layer's, and one line per level of the schedule (its
+/// partition and how long building it took).
+struct StereoRunReport {
+  RunReport run;
+  std::vector<LevelReport> levels;
+};
+
+/// Minimises problem.energy over `schedule`'s levels (none: flat; slic levels segment
+/// problem.guide) as `config` says. Throws as run() does (RunConfigError naming the field).
+StereoRunReport run_stereo(const TsgoProblem& problem, const Schedule& schedule,
+                           const RunConfig& config, const Observer& observer = {});
+
+}  // namespace c2f::vision

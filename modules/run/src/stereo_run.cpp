@@ -1,0 +1,25 @@
+#include "c2f/run/stereo_run.hpp"
+
+#include "c2f/run/memory_plan.hpp"
+#include "c2f/run/run.hpp"
+#include "c2f/vision/superpixels.hpp"
+
+namespace c2f::vision {
+
+std::optional<std::size_t> stereo_memory_need(GridShape shape, const TsgoOptions& tsgo,
+                                              const SolverSpec& solver) {
+  return grid_run_memory_need(
+      solver, shape.width, shape.height, tsgo.labels, CostStorage::single_precision,
+      tsgo_memory_estimate(shape.width, shape.height, tsgo.labels, tsgo.threads));
+}
+
+StereoRunReport run_stereo(const TsgoProblem& problem, const Schedule& schedule,
+                           const RunConfig& config, const Observer& observer) {
+  const GridShape shape{static_cast<std::size_t>(problem.guide.cols),
+                        static_cast<std::size_t>(problem.guide.rows)};
+  ScheduleProvider levels(schedule, shape, slic_source(problem.guide));
+  RunReport report = run(problem.energy, levels, config, observer);
+  return {std::move(report), levels.reports()};
+}
+
+}  // namespace c2f::vision
