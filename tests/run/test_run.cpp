@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <vector>
@@ -236,4 +237,45 @@ TEST_CASE("the stereo recipe runs the TSGO energy over a stereo schedule, as bui
         std::max(*vision::tsgo_memory_estimate(64, 48, 10, tsgo.threads),
                  *run_memory_floor(config.solver,
                                    *grid_problem_size(64, 48, 10, CostStorage::single_precision))));
+}
+
+TEST_CASE("a coarse level whose fixed part fits runs with the recycled graphs it leaves room for",
+          "[run][memory]") {
+  Rng rng(34);
+  const PairwiseEnergy energy = random_grid_energy(rng, 24, 20, 40);
+  const ProblemSize size = problem_size(energy);
+  // A level of almost every variable (the last ten join the first ten): its reduced energy and
+  // solver take more than the original solver's share of the floor, so beside the whole graph
+  // limit it would not fit.
+  std::vector<int> ids(energy.num_variables());
+  for (std::size_t v = 0; v < ids.size(); ++v)
+    ids[v] = static_cast<int>(v < ids.size() - 10 ? v : v - (ids.size() - 10));
+  const DensePartition coarse = DensePartition::from_ids(ids);
+  RunConfig config;
+  config.solver.original = ExpansionOptions{};
+  config.graph_memory = 0;  // the plan's limit is set below through the budget instead
+  const auto floor = run_memory_floor(config.solver, size);
+  REQUIRE(floor);
+  const std::size_t fixed = *coarse_level_memory(config.solver, size, coarse.num_groups(), 0, 0);
+  const std::size_t with_graphs =
+      *coarse_level_memory(config.solver, size, coarse.num_groups(), std::size_t{1} << 40, 0);
+  REQUIRE(with_graphs > fixed);
+  // Room for the fixed part and a little more, not for every graph.
+  const std::size_t working =
+      *working_memory_bytes(config.solver.original, MaxFlowKind::dynamic, size);
+  REQUIRE(fixed > working);
+  config.graph_memory.reset();
+  config.memory = MemoryBudget{*floor + (fixed - working) + 4096, "a test"};
+  PartitionList levels({coarse});
+  EnergyTrace trace;
+  const RunReport report = run(energy, levels, config, trace.observer());
+  REQUIRE(report.summary.levels.size() == 2);
+  CHECK_FALSE(report.summary.levels[0].skipped);
+  CHECK(report.summary.levels[0].steps > 0);
+  for (std::size_t i = 1; i < trace.energies.size(); ++i)  // the level switch: to rounding
+    CHECK(trace.energies[i] <= trace.energies[i - 1] + 1e-9 * std::abs(trace.energies[i - 1]));
+  // Where the fixed part does not fit, the level is skipped (and the run says so).
+  config.memory = MemoryBudget{*floor + (fixed - working) / 2, "a test"};
+  PartitionList same({coarse});
+  CHECK(run(energy, same, config).summary.levels[0].skipped);
 }

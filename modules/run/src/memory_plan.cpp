@@ -112,7 +112,7 @@ CoarseLevelFits coarse_level_admission(const SolverSpec& spec, const ProblemSize
                                        const MemoryPlan& plan) {
   return [spec, size, plan](std::size_t groups) {
     const std::optional<std::size_t> need =
-        coarse_level_memory(spec, size, groups, plan.graph_memory, plan.problem_memory);
+        coarse_level_memory(spec, size, groups, 0, plan.problem_memory);
     return need && *need <= plan.coarse_level_room;
   };
 }

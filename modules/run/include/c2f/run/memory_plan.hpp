@@ -75,7 +75,9 @@ struct MemoryPlan {
 using CoarseLevelFits = std::function<bool(std::size_t groups)>;
 
 /// Options::coarse_level_fits for a run of `spec` on `size` planned as `plan`: a level fits when
-/// coarse_level_memory is at most plan.coarse_level_room.
+/// its fixed part (coarse_level_memory without recycled graphs) is at most
+/// plan.coarse_level_room. Its recycled graphs are optional: run() gives each coarse level
+/// what the room leaves beside that part (at most plan.graph_memory).
 [[nodiscard]] CoarseLevelFits coarse_level_admission(const SolverSpec& spec,
                                                      const ProblemSize& size,
                                                      const MemoryPlan& plan);

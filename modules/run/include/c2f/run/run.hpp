@@ -1,7 +1,8 @@
 #pragma once
 // The run layer's entry point for pairwise energies: run(energy, levels, config, observer)
 // validates the configuration, plans the memory budget (the floor must fit; the graph-cut
-// solvers' recycled graphs get what it leaves; a coarse level is solved only when it fits),
+// solvers' recycled graphs get what it leaves; a coarse level is solved when its reduced
+// energy, working memory and kept problems fit, its recycled graphs getting what they leave),
 // builds the solver(s) the spec names, runs coarse_to_fine and reports the Summary with the
 // memory given and used. The tools, the Python package and the benches call it.
 
@@ -13,6 +14,7 @@
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
 #include "c2f/driver/observer.hpp"
+#include "c2f/run/detail/level_budget_solver.hpp"
 #include "c2f/run/memory_plan.hpp"
 #include "c2f/run/run_config.hpp"
 #include "c2f/run/run_error.hpp"
@@ -57,13 +59,31 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   report.plan = plan_run(energy, planned);
   const SolverSpec spec = with_memory_plan(config.solver, report.plan);
   report.recycles = recycles_move_graphs(spec.original);
+  const ProblemSize size = problem_size(energy);
   Options options = config.limits;
-  options.coarse_level_fits = coarse_level_admission(spec, problem_size(energy), report.plan);
-  report.summary = with_solvers(spec, [&](auto&& solvers) {
+  options.coarse_level_fits = coarse_level_admission(spec, size, report.plan);
+  const auto solve = [&](auto&& solvers) {
     Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);
     report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
     return summary;
-  });
+  };
+  report.summary = std::visit(
+      [&]<class Options>(const Options& original) -> Summary {
+        const Options& coarse = std::get<Options>(spec.coarse_options());
+        if constexpr (std::is_base_of_v<MoveOptions, Options>) {
+          // Graph-cut solvers: the coarse levels' recycled graphs get what each level leaves.
+          return with_maxflow_backend(spec.maxflow, [&]<class Backend>(Backend) -> Summary {
+            using Solver = typename detail::SolverFor<Options, Backend>::type;
+            Solver original_solver(original);
+            detail::LevelBudgetSolver<Solver, Options> coarse_solver(coarse, spec, size,
+                                                                     report.plan);
+            return solve(LevelSolvers(coarse_solver, original_solver));
+          });
+        } else {
+          return detail::with_level_solvers<Options, DynamicMaxFlow>(original, coarse, solve);
+        }
+      },
+      spec.original);
   return report;
 }
 
