@@ -16,8 +16,8 @@
 
 namespace c2f {
 
-/// How the run layer names a run's memory budget (MemoryBudget::describe) and where it came
-/// from: the budget given, or the machine's default (default_memory_budget) when unset.
+/// The budget a run uses: `memory` when given, else the machine's default
+/// (default_memory_budget).
 [[nodiscard]] MemoryBudget budget_or_default(const std::optional<MemoryBudget>& memory);
 
 /// A run of a pairwise energy: run(energy, levels, config, observer) in c2f/run/run.hpp.
@@ -29,8 +29,9 @@ struct RunConfig {
   Options limits;
   /// The bytes the whole run may take; unset: the machine's default (default_memory_budget).
   std::optional<MemoryBudget> memory = std::nullopt;
-  /// At most this many bytes of the budget for the graph-cut solvers' recycled move graphs
-  /// and kept move problems; unset: all that the budget leaves above the run's floor.
+  /// At most this many bytes of the budget for the graph-cut solvers' recycled move graphs;
+  /// unset: all that the budget leaves above the run's floor and expansion's kept move
+  /// problems (which are planned first, apart from this limit).
   std::optional<std::size_t> graph_memory = std::nullopt;
   /// How a refusal names what is run: "<energy_name> needs N, more than the run's memory
   /// budget of M".
