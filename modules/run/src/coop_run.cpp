@@ -18,11 +18,7 @@ constexpr std::size_t kRelaxationDoublesPerUnknown = 43;
 
 std::string CoopRunConfig::validate() const {
   if (std::string problem = solver.validate(); !problem.empty()) return "solver: " + problem;
-  if (std::string problem = limits.validate(); !problem.empty()) return "limits: " + problem;
-  if (limits.coarse_level_fits)
-    return "limits: coarse_level_fits is the run layer's to set (from the memory budget)";
-  if (memory && memory->bytes == 0) return "memory: a budget of 0 bytes";
-  return {};
+  return validate_limits_and_memory(limits, memory);
 }
 
 std::optional<std::size_t> working_memory_bytes(const CoopSolverOptions& options,

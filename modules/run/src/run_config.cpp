@@ -8,13 +8,18 @@ MemoryBudget budget_or_default(const std::optional<MemoryBudget>& memory) {
   return memory ? *memory : default_memory_budget();
 }
 
-std::string RunConfig::validate() const {
-  if (std::string problem = solver.validate(); !problem.empty()) return "solver." + problem;
+std::string validate_limits_and_memory(const Options& limits,
+                                       const std::optional<MemoryBudget>& memory) {
   if (std::string problem = limits.validate(); !problem.empty()) return "limits: " + problem;
   if (limits.coarse_level_fits)
     return "limits: coarse_level_fits is the run layer's to set (from the memory budget)";
   if (memory && memory->bytes == 0) return "memory: a budget of 0 bytes";
   return {};
+}
+
+std::string RunConfig::validate() const {
+  if (std::string problem = solver.validate(); !problem.empty()) return "solver." + problem;
+  return validate_limits_and_memory(limits, memory);
 }
 
 namespace {

@@ -202,6 +202,7 @@ using c2f::uai_bytes_estimate;
 using c2f::UnaryCosts;
 using c2f::UnaryRow;
 using c2f::validate_labeling;
+using c2f::validate_limits_and_memory;
 using c2f::VariableIndex;
 using c2f::Verdict;
 using c2f::visit_order_from_string;

@@ -20,6 +20,11 @@ namespace c2f {
 /// (default_memory_budget).
 [[nodiscard]] MemoryBudget budget_or_default(const std::optional<MemoryBudget>& memory);
 
+/// Empty when a run's `limits` and `memory` are usable, else "limits: <problem>" or
+/// "memory: <problem>" (the part of RunConfig::validate every kind of run shares).
+[[nodiscard]] std::string validate_limits_and_memory(const Options& limits,
+                                                     const std::optional<MemoryBudget>& memory);
+
 /// A run of a pairwise energy: run(energy, levels, config, observer) in c2f/run/run.hpp.
 struct RunConfig {
   SolverSpec solver;
