@@ -1,8 +1,10 @@
 #include "released_gil.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <thread>
 
 namespace c2f::python {
 
@@ -45,8 +47,21 @@ ReleasedGil::ReleasedGil() {
 }
 
 ReleasedGil::~ReleasedGil() {
-  PyEval_RestoreThread(state_);
   Regions& r = regions();
+  bool exiting = false;
+  {
+    const std::lock_guard lock(r.mutex);
+    exiting = r.exiting;
+    if (exiting) {
+      --r.open;
+      r.ended.notify_all();
+    }
+  }
+  // Once the exit hook has run, this is a daemon thread (Python joins every other thread before
+  // its exit hooks): it never takes the GIL back, since finalisation could end it inside a later
+  // call and unwind our C++ frames. It waits, holding nothing, for the process to end.
+  while (exiting) std::this_thread::sleep_for(std::chrono::hours(1));
+  PyEval_RestoreThread(state_);
   const std::lock_guard lock(r.mutex);
   --r.open;
   r.ended.notify_all();

@@ -7,8 +7,10 @@
 // script ends, or when Ctrl-C ends the main thread while it joins a solving thread, would do
 // exactly that. So the package registers an atexit hook, which Python runs before finalisation,
 // that refuses every new release, asks running solves to stop at their next step
-// (interpreter_exiting), and waits, without the GIL, until every released region has taken the
-// GIL back. Finalisation then never meets a thread of ours that lacks the GIL.
+// (interpreter_exiting), and waits, without the GIL, until every released region has ended its
+// work. A region that ends after the hook (a daemon thread's: Python joins every other thread
+// before its exit hooks) never takes the GIL back but waits, holding nothing, for the process to
+// end, so finalisation never stops a thread of ours inside C++ frames.
 
 #include <pybind11/pybind11.h>
 
@@ -19,7 +21,8 @@ namespace c2f::python {
 class ReleasedGil {
  public:
   ReleasedGil();
-  ~ReleasedGil();  ///< takes the GIL back, then counts the region as ended
+  ~ReleasedGil();  ///< takes the GIL back and counts the region as ended (once the exit hook
+                   ///< has run: counts it, then waits for the process to end)
   ReleasedGil(const ReleasedGil&) = delete;
   ReleasedGil& operator=(const ReleasedGil&) = delete;
 
