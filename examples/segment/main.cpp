@@ -125,6 +125,33 @@ void report_end(const examples::SegmentCommand& command, const Summary& summary,
   examples::print_run_end("c2f-segment", summary, interrupts, command.out_dir, command.quiet);
 }
 
+/// The run: the method's solver on the schedule's levels within the budget (the recycled move
+/// graphs get what it leaves; a cooperative run keeps the Potts energy beside it), every step
+/// traced (with its pixel error when there is GT) and each level's partition kept.
+RunReport solve(const examples::SegmentCommand& command, const SegmentationScene& scene,
+                const TimedProblem& built, ScheduleProvider& levels, examples::RunRecord& record,
+                LevelPartitionRecorder& partitions, const examples::InterruptWatch& interrupts) {
+  return run_segmentation(built.problem, levels, command.run,
+                          record.observer(scene.truth.empty() ? TraceWriter::ErrorFunction{}
+                                                              : pixel_error_function(scene),
+                                          interrupts, {std::ref(partitions)}));
+}
+
+/// Stages the label image, overlay, summary.txt and the saved partitions; returns the pixel
+/// error (with GT).
+std::optional<double> write_outputs(const examples::RunRecord& record,
+                                    const examples::SegmentCommand& command,
+                                    const SegmentationScene& scene, const TimedProblem& built,
+                                    const ScheduleProvider& levels,
+                                    const LevelPartitionRecorder& partitions, const RunReport& run,
+                                    const examples::InterruptWatch& interrupts) {
+  const auto error =
+      write_segmentation_outputs(record.staging().string(), run.summary.labeling, scene);
+  write_summary(record.staging(), command, scene, built, levels, run, error, interrupts);
+  partitions.write(record.staging().string(), scene.shape());
+  return error;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -151,18 +178,10 @@ int main(int argc, char** argv) {
 
     ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
     LevelPartitionRecorder partitions(command.save_partitions);
-    // The recycled move graphs get what the budget leaves (a cooperative run keeps the Potts
-    // energy beside it).
-    const RunReport run =
-        run_segmentation(built.problem, levels, command.run,
-                         record.observer(scene.truth.empty() ? TraceWriter::ErrorFunction{}
-                                                             : pixel_error_function(scene),
-                                         interrupts, {std::ref(partitions)}));
+    const RunReport run = solve(command, scene, built, levels, record, partitions, interrupts);
 
     const auto error =
-        write_segmentation_outputs(record.staging().string(), run.summary.labeling, scene);
-    write_summary(record.staging(), command, scene, built, levels, run, error, interrupts);
-    partitions.write(record.staging().string(), scene.shape());
+        write_outputs(record, command, scene, built, levels, partitions, run, interrupts);
     record.commit();
     report_end(command, run.summary, error, interrupts);
     return interrupts.exit_code();

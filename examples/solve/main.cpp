@@ -59,6 +59,24 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
   close_checked(report, "summary.txt");
 }
 
+/// The files a run writes into its output folder.
+const std::vector<std::string> kOutputs = {"labeling.mpe", "trace.csv", "summary.txt"};
+
+/// The run's configuration for `model`, checked before any output is staged: the model and the
+/// run's floor must fit the budget (recycled move graphs get the rest); says so on stderr.
+RunConfig planned_config(const examples::SolveCommand& command, const TimedModel& model) {
+  RunConfig config = command.run;
+  config.energy_name = "MODEL '" + command.model + "' solved by " +
+                       std::string(to_string(command.run.solver.kind()));
+  const MemoryPlan plan = plan_run(model.energy, config);
+  if (!command.quiet) {
+    std::fprintf(stderr, "c2f-solve: memory budget %s, floor %s\n",
+                 command.run.memory->describe().c_str(),
+                 format_bytes(static_cast<double>(plan.floor)).c_str());
+  }
+  return config;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -70,28 +88,18 @@ int main(int argc, char** argv) {
     const examples::SolveCommand& command = *parsed;
     set_input_memory_limit(command.run.memory->ceiling());  // no input may take more to read
 
-    const std::vector<std::string> owned = {"labeling.mpe", "trace.csv", "summary.txt"};
     examples::check_output_paths(
-        {command.out_dir, owned, {{"--trace", command.trace, "trace.csv"}}},
+        {command.out_dir, kOutputs, {{"--trace", command.trace, "trace.csv"}}},
         {{"MODEL", command.model}});
     const TimedModel model = read_model(command);
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
     const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
     ScheduleProvider levels(schedule, shape);
-    // The model and the run's floor must fit the budget (checked before any output is staged);
-    // recycled move graphs get the rest.
-    RunConfig config = command.run;
-    config.energy_name = "MODEL '" + command.model + "' solved by " +
-                         std::string(to_string(command.run.solver.kind()));
-    const MemoryPlan plan = plan_run(model.energy, config);
-    if (!command.quiet) {
-      std::fprintf(stderr, "c2f-solve: memory budget %s, floor %s\n",
-                   command.run.memory->describe().c_str(),
-                   format_bytes(static_cast<double>(plan.floor)).c_str());
-    }
+    const RunConfig config = planned_config(command, model);
     // Outputs are staged and moved into place together at the end.
-    examples::RunRecord record(command.out_dir, owned, command.trace, "c2f-solve", command.quiet);
+    examples::RunRecord record(command.out_dir, kOutputs, command.trace, "c2f-solve",
+                               command.quiet);
     const RunReport run = c2f::run(model.energy, levels, config,
                                    record.observer(TraceWriter::ErrorFunction{}, interrupts));
 
