@@ -130,3 +130,56 @@ TEST_CASE("the driver takes levels of a foreign partition type through its trait
   PartitionList dense({to_dense_partition(halves), to_dense_partition(quarters)});
   CHECK(run(stripes) == run(dense));
 }
+
+TEST_CASE("reduce and the transfers read a foreign partition as its dense copy",
+          "[concepts][lift]") {
+  test::Rng rng(5);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 12, 6, 4);
+  const foreign::Stripes halves(12, 6, 6), quarters(12, 6, 3);
+  const DensePartition dense_halves = to_dense_partition(halves);
+  const DensePartition dense_quarters = to_dense_partition(quarters);
+  static_assert(ReducibleEnergy<PairwiseEnergy, foreign::Stripes>);
+  CHECK(refines(quarters, halves));
+  CHECK_FALSE(refines(halves, quarters));
+  CHECK(refines(quarters, dense_halves));
+
+  const PairwiseEnergy reduced = reduce(energy, quarters);
+  const PairwiseEnergy reduced_dense = reduce(energy, dense_quarters);
+  REQUIRE(reduced.num_variables() == 4);
+  const Labeling on_quarters{2, 0, 3, 1};
+  CHECK(reduced.evaluate(on_quarters) == reduced_dense.evaluate(on_quarters));
+  CHECK(expand(on_quarters, quarters) == expand(on_quarters, dense_quarters));
+
+  const Labeling on_halves{1, 3};
+  CHECK(transfer_labels(on_halves, halves, quarters) ==
+        transfer_labels(on_halves, dense_halves, dense_quarters));
+  CHECK(transfer_labels_by_majority(on_quarters, quarters, halves) ==
+        transfer_labels_by_majority(on_quarters, dense_quarters, dense_halves));
+  CHECK_THROWS_WITH(transfer_labels(on_quarters, quarters, halves),
+                    Catch::Contains("does not refine"));
+}
+
+namespace foreign {
+/// A partition whose group_of answers outside [0, num_groups): a broken foreign type.
+struct OutOfRange {
+  std::size_t n;
+};
+}  // namespace foreign
+
+template <>
+struct c2f::partition_traits<foreign::OutOfRange> {
+  static std::size_t num_variables(const foreign::OutOfRange& p) { return p.n; }
+  static std::size_t num_groups(const foreign::OutOfRange&) { return 1; }
+  static std::size_t group_of(const foreign::OutOfRange&, std::size_t v) { return v; }
+  static std::span<const VariableIndex> members(const foreign::OutOfRange&, std::size_t) {
+    return {};
+  }
+};
+
+TEST_CASE("a foreign partition with a group id out of range is refused by name",
+          "[concepts][lift]") {
+  test::Rng rng(6);
+  const PairwiseEnergy energy = test::random_grid_energy(rng, 3, 1, 2);
+  CHECK_THROWS_WITH(reduce(energy, foreign::OutOfRange{3}),
+                    Catch::Contains("variable 1 is in group 1, but there are 1 groups"));
+}

@@ -120,7 +120,7 @@ double CoopEnergy::evaluate_unchecked(std::span<const Label> labeling) const {
   return total + parameters_.lambda * pairwise;
 }
 
-CoopEnergy reduce(const CoopEnergy& energy, const DensePartition& partition) {
+CoopEnergy reduce(const CoopEnergy& energy, const GroupIds& partition) {
   if (partition.num_variables() != energy.num_variables()) {
     throw std::invalid_argument("reduce: the partition has " +
                                 std::to_string(partition.num_variables()) +
@@ -130,7 +130,7 @@ CoopEnergy reduce(const CoopEnergy& energy, const DensePartition& partition) {
   const auto L = static_cast<std::size_t>(energy.num_labels());
   std::vector<double> unaries(groups * L, 0.0);
   for (std::size_t v = 0; v < energy.num_variables(); ++v) {
-    const std::size_t g = partition.group_of(v);
+    const std::size_t g = partition[v];
     for (std::size_t l = 0; l < L; ++l) unaries[g * L + l] += energy.unaries()[v * L + l];
   }
   // Entries of edges between groups as (smaller group, larger group, side, class, weight),
@@ -144,8 +144,8 @@ CoopEnergy reduce(const CoopEnergy& energy, const DensePartition& partition) {
   std::vector<Item> items;
   items.reserve(energy.entries().size());
   for (const CoopEdge& edge : energy.edges()) {
-    const VariableIndex gu = partition.group_of(edge.u);
-    const VariableIndex gv = partition.group_of(edge.v);
+    const VariableIndex gu = partition[edge.u];
+    const VariableIndex gv = partition[edge.v];
     if (gu == gv) continue;  // never cut
     const bool flipped = gv < gu;
     const VariableIndex a = flipped ? gv : gu;

@@ -73,22 +73,6 @@ DensePartition DensePartition::single_group(std::size_t num_variables) {
   return DensePartition(std::vector<VariableIndex>(num_variables, 0), num_variables == 0 ? 0 : 1);
 }
 
-bool DensePartition::is_refinement_of(const DensePartition& coarser) const {
-  if (coarser.num_variables() != num_variables()) return false;
-  constexpr VariableIndex kUnset = std::numeric_limits<VariableIndex>::max();
-  std::vector<VariableIndex> coarse_group(num_groups(), kUnset);
-  for (std::size_t v = 0; v < group_of_.size(); ++v) {
-    VariableIndex& seen = coarse_group[group_of_[v]];
-    const VariableIndex c = coarser.group_of_[v];
-    if (seen == kUnset) {
-      seen = c;
-    } else if (seen != c) {
-      return false;
-    }
-  }
-  return true;
-}
-
 DensePartition intersect(const DensePartition& a, const DensePartition& b) {
   if (a.num_variables() != b.num_variables()) {
     throw std::invalid_argument("intersect: the partitions cover " +

@@ -21,7 +21,7 @@ bool has_nonzero_diagonal(const PairwiseTerm& term, int num_labels) {
 
 }  // namespace
 
-PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partition) {
+PairwiseEnergy reduce(const PairwiseEnergy& energy, const GroupIds& partition) {
   if (partition.num_variables() != energy.num_variables()) {
     throw std::invalid_argument(
         "reduce: the partition has " + std::to_string(partition.num_variables()) +
@@ -38,7 +38,7 @@ PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partit
   energy.unaries().visit([&](auto costs) {
     for (std::size_t v = 0; v < energy.num_variables(); ++v) {
       const auto row = costs.subspan(v * L, L);
-      double* target = unaries.data() + static_cast<std::size_t>(partition.group_of(v)) * L;
+      double* target = unaries.data() + static_cast<std::size_t>(partition[v]) * L;
       for (std::size_t l = 0; l < L; ++l) target[l] += static_cast<double>(row[l]);
     }
   });
@@ -55,8 +55,8 @@ PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partit
   std::vector<std::pair<VariableIndex, VariableIndex>> oriented(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const Edge& e = edges[i];
-    VariableIndex a = partition.group_of(e.u);
-    VariableIndex b = partition.group_of(e.v);
+    VariableIndex a = partition[e.u];
+    VariableIndex b = partition[e.v];
     if (a == b) {
       if (term_diagonal[e.term]) {
         double* target = unaries.data() + static_cast<std::size_t>(a) * L;

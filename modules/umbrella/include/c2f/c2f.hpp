@@ -76,8 +76,6 @@
 #include "c2f/vision/stereo/middlebury2014.hpp"
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
-#include "c2f/vision/stereo/tsgo_bilateral.hpp"
-#include "c2f/vision/stereo/tsgo_cost.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 #include "c2f/vision/superpixels.hpp"
 #include "c2f/vision/synthetic_problem.hpp"

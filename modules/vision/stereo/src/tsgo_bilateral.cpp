@@ -6,13 +6,11 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
-#include <latch>
 #include <limits>
 #include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <utility>
 
 #include "c2f/core/default_init_allocator.hpp"
@@ -270,31 +268,6 @@ struct Workspace {
 /// Member m's share [share(total, m, members), share(total, m + 1, members)) of `total` items.
 std::size_t share(std::size_t total, std::size_t m, std::size_t members) {
   return total * m / members;
-}
-
-/// Runs member(m) for every m < members, each on a thread of its own (the calling thread is
-/// member 0), and returns when all have returned. Members may wait for each other (at a
-/// std::barrier of `members`), so none starts before every thread exists: when a thread cannot
-/// be started, none has begun, and the std::system_error is rethrown. A member must not throw.
-template <typename Member>
-void run_team(std::size_t members, const Member& member) {
-  std::latch started(1);
-  bool abandoned = false;             // written before `started` opens
-  std::vector<std::jthread> helpers;  // joined when this returns or throws
-  try {
-    for (std::size_t m = 1; m < members; ++m) {
-      helpers.emplace_back([&, m] {
-        started.wait();
-        if (!abandoned) member(m);
-      });
-    }
-  } catch (...) {
-    abandoned = true;
-    started.count_down();
-    throw;
-  }
-  started.count_down();
-  member(0);
 }
 
 /// The cross-bilateral smoothing of image-sized slices, with everything that does not depend on

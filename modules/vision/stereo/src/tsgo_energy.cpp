@@ -11,6 +11,7 @@
 #include "c2f/support/memory_need.hpp"
 #include "c2f/support/parallel_for.hpp"
 #include "c2f/vision/stereo/colour_weights.hpp"
+#include "c2f/vision/stereo/tsgo_bilateral.hpp"
 #include "c2f/vision/stereo/tsgo_cost.hpp"
 
 namespace c2f::vision {

@@ -122,7 +122,13 @@ class CoopEnergy {
 /// u) with the weights of equal classes summed per side; the class totals T_g and parameters
 /// are kept. reduce(e, p).evaluate(y) == e.evaluate(expand(y, p)) up to rounding. Throws
 /// std::invalid_argument when the partition does not cover the energy's variables.
-CoopEnergy reduce(const CoopEnergy& energy, const DensePartition& partition);
+CoopEnergy reduce(const CoopEnergy& energy, const GroupIds& groups);
+
+/// reduce(energy, GroupIds(partition)) for any Partition type.
+template <Partition P>
+CoopEnergy reduce(const CoopEnergy& energy, const P& partition) {
+  return reduce(energy, GroupIds(partition));
+}
 
 /// What colour passing reads of a cooperative-cut energy: its unaries, and one factor per edge
 /// coloured by its (u-side classes, v-side classes), ordered (weights are not part of the

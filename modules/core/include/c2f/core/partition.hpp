@@ -4,7 +4,11 @@
 
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "c2f/core/labeling.hpp"
 
@@ -42,5 +46,72 @@ concept Partition = requires(const P& p, std::size_t i) {
   { partition_traits<P>::group_of(p, i) } -> std::convertible_to<std::size_t>;
   { partition_traits<P>::members(p, i) } -> std::convertible_to<std::span<const VariableIndex>>;
 };
+
+namespace detail {
+template <class P>
+concept StoresGroupIds = requires(const P& p) {
+  { p.group_ids() } -> std::convertible_to<std::span<const VariableIndex>>;
+};
+}  // namespace detail
+
+/// The group of every variable of a Partition in one contiguous array: how reduce, the
+/// transfers and the driver read any partition type. Borrowed from a type that stores it (a
+/// member `group_ids()`, e.g. DensePartition: no copy, and the partition must outlive this);
+/// otherwise gathered once through partition_traits::group_of, O(N) time and one VariableIndex
+/// per variable (no member lists). Throws std::invalid_argument when a gathered group id is not
+/// below num_groups.
+class GroupIds {
+ public:
+  template <Partition P>
+  explicit GroupIds(const P& partition)
+      : num_groups_(static_cast<std::size_t>(partition_traits<P>::num_groups(partition))) {
+    if constexpr (detail::StoresGroupIds<P>) {
+      ids_ = partition.group_ids();
+    } else {
+      owned_.resize(static_cast<std::size_t>(partition_traits<P>::num_variables(partition)));
+      for (std::size_t v = 0; v < owned_.size(); ++v) {
+        const auto g = static_cast<std::size_t>(partition_traits<P>::group_of(partition, v));
+        if (g >= num_groups_) {
+          throw std::invalid_argument("partition: variable " + std::to_string(v) + " is in group " +
+                                      std::to_string(g) + ", but there are " +
+                                      std::to_string(num_groups_) + " groups");
+        }
+        owned_[v] = static_cast<VariableIndex>(g);
+      }
+      ids_ = owned_;
+    }
+  }
+  GroupIds(const GroupIds&) = delete;  // ids_ may point into owned_
+  GroupIds& operator=(const GroupIds&) = delete;
+
+  [[nodiscard]] std::size_t num_variables() const noexcept { return ids_.size(); }
+  [[nodiscard]] std::size_t num_groups() const noexcept { return num_groups_; }
+  [[nodiscard]] VariableIndex operator[](std::size_t v) const noexcept { return ids_[v]; }
+  [[nodiscard]] std::span<const VariableIndex> ids() const noexcept { return ids_; }
+
+ private:
+  std::vector<VariableIndex> owned_;
+  std::span<const VariableIndex> ids_;
+  std::size_t num_groups_;
+};
+
+/// True when every group of `fine` lies inside one group of `coarse` (fine is finer than or
+/// equal to coarse); false when the variable counts differ. O(N + groups of fine).
+template <Partition Fine, Partition Coarse>
+bool refines(const Fine& fine, const Coarse& coarse) {
+  const GroupIds f(fine), c(coarse);
+  if (f.num_variables() != c.num_variables()) return false;
+  constexpr VariableIndex kUnset = std::numeric_limits<VariableIndex>::max();
+  std::vector<VariableIndex> coarse_group(f.num_groups(), kUnset);
+  for (std::size_t v = 0; v < f.num_variables(); ++v) {
+    VariableIndex& seen = coarse_group[f[v]];
+    if (seen == kUnset) {
+      seen = c[v];
+    } else if (seen != c[v]) {
+      return false;
+    }
+  }
+  return true;
+}
 
 }  // namespace c2f

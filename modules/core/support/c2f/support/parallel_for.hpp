@@ -4,10 +4,14 @@
 // across tasks in an order that depends on scheduling. Standard threads, started per call: the
 // tasks are coarse (labels, rows), so a pool or work stealing would save nothing measurable,
 // and the thread count of each call is exactly the caller's (no global setting, unlike OpenCV's
-// cv::setNumThreads).
+// cv::setNumThreads). Two shapes: parallel_for hands out independent tasks; run_team runs a team
+// whose members work in lockstep (e.g. at a std::barrier).
 
 #include <cstddef>
 #include <functional>
+#include <latch>
+#include <thread>
+#include <vector>
 
 namespace c2f {
 
@@ -20,5 +24,30 @@ namespace c2f {
 /// handed out in index order. Rethrows the exception of the lowest index that threw, after
 /// every thread has ended (the other tasks still run).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads);
+
+/// Runs member(m) for every m < members, each on a thread of its own (the calling thread is
+/// member 0), and returns when all have returned. Members may wait for each other (at a
+/// std::barrier of `members`), so none starts before every thread exists: when a thread cannot
+/// be started, none has begun, and the std::system_error is rethrown. A member must not throw.
+template <typename Member>
+void run_team(std::size_t members, const Member& member) {
+  std::latch started(1);
+  bool abandoned = false;             // written before `started` opens
+  std::vector<std::jthread> helpers;  // joined when this returns or throws
+  try {
+    for (std::size_t m = 1; m < members; ++m) {
+      helpers.emplace_back([&, m] {
+        started.wait();
+        if (!abandoned) member(m);
+      });
+    }
+  } catch (...) {
+    abandoned = true;
+    started.count_down();
+    throw;
+  }
+  started.count_down();
+  member(0);
+}
 
 }  // namespace c2f

@@ -115,10 +115,12 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
       }
     }
   }
+  using LevelPartition = provided_partition_t<P, E>;
+  using Traits = partition_traits<LevelPartition>;
   LevelSolver<E, CoarseSolver, OriginalSolver> solver(coarse_solver, original_solver);
   RunClock clock;
   Summary summary;
-  std::optional<DensePartition> previous;  // partition of the last finished level
+  std::optional<LevelPartition> previous;  // partition of the last finished level
   Labeling labeling;                       // labeling on the last finished level
   int previous_level = -1;                 // its index
   bool solved_any = false;                 // a level before this one was solved
@@ -129,25 +131,24 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
     LevelSummary stats;
     stats.level = level;
     const double level_start = clock.elapsed();
-    std::optional<DensePartition> partition;
-    if (auto provided = levels.next(energy))
-      partition.emplace(to_dense_partition(std::move(*provided)));
+    std::optional<LevelPartition> partition = levels.next(energy);
     const double partition_done = clock.elapsed();
     stats.partition_seconds = partition_done - level_start;
 
     const bool at_original = !partition.has_value();
     if (!at_original && previous && transfer == LevelTransfer::exact &&
-        !partition->is_refinement_of(*previous)) {
+        !refines(*partition, *previous)) {
       throw std::invalid_argument(
           "coarse_to_fine: the partition of level " + std::to_string(level) + " (" +
-          std::to_string(partition->num_groups()) + " groups) does not refine level " +
-          std::to_string(previous_level) + " (" + std::to_string(previous->num_groups()) +
+          std::to_string(Traits::num_groups(*partition)) + " groups) does not refine level " +
+          std::to_string(previous_level) + " (" + std::to_string(Traits::num_groups(*previous)) +
           " groups), so labels cannot be handed down with the same energy; order the levels "
           "coarse to fine, or hand labels down by majority (LevelTransfer::majority)");
     }
-    if (!at_original && coarse_level_fits && !coarse_level_fits(partition->num_groups())) {
+    const std::size_t groups = at_original ? 0 : Traits::num_groups(*partition);
+    if (!at_original && coarse_level_fits && !coarse_level_fits(groups)) {
       stats.skipped = true;
-      stats.num_variables = partition->num_groups();
+      stats.num_variables = groups;
       summary.levels.push_back(stats);
       continue;
     }
@@ -175,8 +176,10 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
     stats.setup_seconds = setup_done - partition_done;
     stats.num_variables = energy_traits<E>::num_variables(level_energy);
 
+    std::optional<GroupIds> group_ids;  // borrowed from the partition when it stores them
+    if (!at_original) group_ids.emplace(*partition);
     const std::span<const VariableIndex> group_of =
-        at_original ? std::span<const VariableIndex>{} : partition->group_ids();
+        group_ids ? group_ids->ids() : std::span<const VariableIndex>{};
     history.assign(1, solver.energy());
     stats.start_energy = history.back();
 
@@ -265,12 +268,13 @@ Options with_solver_convergence(Options options, const S& original_solver, const
 /// energy is handed down unchanged; LevelTransfer::majority accepts any level sequence and
 /// hands labels down by majority vote, which can change the energy at a level switch.
 ///
-/// Levels may come as any Partition type (converted with to_dense_partition, on the clock).
+/// Levels may come as any Partition type, read through partition_traits without conversion.
 /// Throws std::invalid_argument when a provided partition does not cover the energy's variables
 /// or, with LevelTransfer::exact, does not refine the previous level.
-template <ReducibleEnergy E, PartitionProvider<E> P, SolversFor<E> Solvers>
-Summary coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Options& options,
-                       const Observer& observer = {}) {
+template <Energy E, PartitionProvider<E> P, SolversFor<E> Solvers>
+requires ReducibleEnergy<E, provided_partition_t<P, E>> Summary
+coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Options& options,
+               const Observer& observer = {}) {
   auto& coarse = detail::coarse_of(solvers);
   auto& original = detail::original_of(solvers);
   return detail::run_levels(energy, levels, coarse, original,

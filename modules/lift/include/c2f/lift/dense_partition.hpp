@@ -41,7 +41,9 @@ class DensePartition {
 
   /// True when every group of this partition lies inside one group of `coarser` (this is finer
   /// than or equal to coarser). False when the variable counts differ. O(N + groups).
-  [[nodiscard]] bool is_refinement_of(const DensePartition& coarser) const;
+  [[nodiscard]] bool is_refinement_of(const DensePartition& coarser) const {
+    return refines(*this, coarser);
+  }
 
   friend bool operator==(const DensePartition& a, const DensePartition& b) {
     return a.group_of_ == b.group_of_;
@@ -55,8 +57,10 @@ class DensePartition {
 
 static_assert(Partition<DensePartition>);
 
-/// Any Partition as a DensePartition (read through partition_traits): what the driver, reduce
-/// and the transfers work on. O(N) for a foreign type; a DensePartition is passed through.
+/// Any Partition as a DensePartition (read through partition_traits), for code that needs its
+/// member lists or stores levels (e.g. a PartitionList). O(N) for a foreign type; a
+/// DensePartition is passed through. reduce, the transfers and the driver take any Partition
+/// and need no conversion.
 template <Partition P>
 DensePartition to_dense_partition(const P& partition) {
   using Traits = partition_traits<P>;

@@ -3,6 +3,7 @@
 
 #include <concepts>
 #include <optional>
+#include <utility>
 
 #include "c2f/core/energy.hpp"
 #include "c2f/core/partition.hpp"
@@ -31,5 +32,11 @@ template <class P, class E>
 concept PartitionProvider = Energy<E> && requires(P& provider, const E& energy) {
   { provider.next(energy) } -> OptionalPartition;
 };
+
+/// The partition type a PartitionProvider P yields for energies of type E.
+template <class P, class E>
+requires PartitionProvider<P, E>
+using provided_partition_t =
+    typename decltype(std::declval<P&>().next(std::declval<const E&>()))::value_type;
 
 }  // namespace c2f

@@ -20,12 +20,18 @@ namespace c2f {
 ///    orientation.
 /// O(N * L + E) time, no allocation per edge. Throws std::invalid_argument when the partition
 /// has a different number of variables than the energy.
-PairwiseEnergy reduce(const PairwiseEnergy& energy, const DensePartition& partition);
+PairwiseEnergy reduce(const PairwiseEnergy& energy, const GroupIds& groups);
 
-/// An energy type whose reduction by a DensePartition (energy_traits<E>::reduce) is an energy
-/// of the same type, so one solver type serves every level of a coarse-to-fine run.
-template <class E>
-concept ReducibleEnergy = Energy<E> && requires(const E& e, const DensePartition& p) {
+/// reduce(energy, GroupIds(partition)) for any Partition type.
+template <Partition P>
+PairwiseEnergy reduce(const PairwiseEnergy& energy, const P& partition) {
+  return reduce(energy, GroupIds(partition));
+}
+
+/// An energy type whose reduction by a partition of type P (energy_traits<E>::reduce) is an
+/// energy of the same type, so one solver type serves every level of a coarse-to-fine run.
+template <class E, class P = DensePartition>
+concept ReducibleEnergy = Energy<E> && Partition<P> && requires(const E& e, const P& p) {
   { energy_traits<E>::reduce(e, p) } -> std::same_as<E>;
 };
 

@@ -10,7 +10,6 @@
 
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/vision/stereo/cost_volume.hpp"
-#include "c2f/vision/stereo/tsgo_bilateral.hpp"
 
 namespace c2f::vision {
 
@@ -22,6 +21,17 @@ enum class StereoSmoothness {
 
 std::string_view to_string(StereoSmoothness smoothness);
 StereoSmoothness stereo_smoothness_from_string(std::string_view text);
+
+/// The cross-bilateral filter that ends step 1 (TSGO's one iteration of message passing on the
+/// fully connected MRF).
+struct BilateralOptions {
+  int cell = 18;               ///< grid cell size in pixels (spatial sigma = one cell)
+  double colour_sigma = 0.75;  ///< in 8-bit colour units
+  double cutoff_sigmas = 3.0;  ///< clusters farther apart than cutoff * sigma do not mix
+  int cluster_levels = 12;     ///< 2^12 = 4096 clusters (the reference's 4000 rounded up)
+  int threads = 0;             ///< threads filtering labels (0: the machine's cores); the
+                               ///< result is the same for every count
+};
 
 struct TsgoOptions {
   int labels = 85;  ///< disparities 0..labels-1

@@ -1,12 +1,14 @@
 #pragma once
 // TSGO's "one iteration of message passing on the fully connected MRF": a normalised
 // cross-bilateral filter of every cost slice, guided by the view's colour image, computed on a
-// coarse spatial grid per colour cluster (the last stage of TSGO's step 1).
+// coarse spatial grid per colour cluster (the last stage of TSGO's step 1). Internal to the
+// stereo library (not installed): the public entry point is tsgo_cost / tsgo_problem.
 
 #include <opencv2/core.hpp>
 #include <vector>
 
 #include "c2f/vision/stereo/cost_volume.hpp"
+#include "c2f/vision/stereo/tsgo_energy.hpp"
 
 namespace c2f::vision {
 
@@ -25,15 +27,6 @@ struct ColourClusters {
 /// (0: the machine's cores), and the clusters are the same for every count. Throws
 /// std::invalid_argument for an empty or non-8-bit 3-channel image or levels outside [0, 20].
 ColourClusters median_cut_clusters(const cv::Mat& image, int levels, int threads = 0);
-
-struct BilateralOptions {
-  int cell = 18;               ///< grid cell size in pixels (spatial sigma = one cell)
-  double colour_sigma = 0.75;  ///< in 8-bit colour units
-  double cutoff_sigmas = 3.0;  ///< clusters farther apart than cutoff * sigma do not mix
-  int cluster_levels = 12;     ///< 2^12 = 4096 clusters (the reference's 4000 rounded up)
-  int threads = 0;             ///< threads filtering labels (0: the machine's cores); the
-                               ///< result is the same for every count
-};
 
 /// Filters every cost slice in place: each pixel splats its cost (and a unit weight)
 /// bilinearly into the 4 surrounding grid nodes of its colour cluster; the grids are blurred

@@ -7,6 +7,7 @@
 //   -> robust_transform -> fill_left_border -> cross_bilateral_filter (tsgo_bilateral.hpp)
 //
 // Images are 8-bit BGR (OpenCV's order, the same planar B, G, R order the reference uses).
+// Internal to the stereo library (not installed): the public entry point is tsgo_cost.
 
 #include <array>
 #include <opencv2/core.hpp>
