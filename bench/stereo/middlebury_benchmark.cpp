@@ -197,10 +197,9 @@ Preparation prepare_timed(const std::string& name, const StereoScene& scene,
   std::optional<std::uint64_t> first_fingerprint;
   // Prepares on `options`, appends the seconds to `seconds` and checks the energy.
   auto prepare = [&](const TsgoOptions& options, std::vector<double>& seconds) {
-    const auto start = std::chrono::steady_clock::now();
-    TsgoProblem prepared = tsgo_problem(scene.left, scene.right, options);
-    seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    PreparedStereo timed = prepare_stereo(scene, options);
+    seconds.push_back(timed.seconds);
+    TsgoProblem prepared = std::move(timed.problem);
     const std::uint64_t fingerprint = energy_fingerprint(prepared.energy);
     if (!first_fingerprint) first_fingerprint = fingerprint;
     if (fingerprint != *first_fingerprint) {

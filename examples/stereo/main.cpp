@@ -1,7 +1,6 @@
 // c2f-stereo: TSGO stereo matching, flat or coarse to fine. The options become library calls
 // in named steps: load the scene, build the TSGO energy, solve, write the outputs.
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,7 +11,6 @@
 #include "c2f/c2f.hpp"
 #include "c2f/support/input_file.hpp"
 #include "c2f/support/output_file.hpp"
-#include "c2f/support/parallel_for.hpp"
 #include "interrupt_watch.hpp"
 #include "model_export.hpp"
 #include "output_paths.hpp"
@@ -24,7 +22,6 @@
 
 using namespace c2f;
 using namespace c2f::vision;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
@@ -80,17 +77,11 @@ void require_memory_for(const examples::StereoCommand& command, const StereoScen
 }
 
 /// TSGO step 1 (the cost volume) and step 2 (the energy), timed apart from the run clock: it is
-/// the same for flat and coarse-to-fine runs.
-struct StereoProblem {
-  TsgoProblem tsgo;  ///< the energy and the image its SLIC levels segment
-  double seconds;
-};
-
-StereoProblem build_problem(const examples::StereoCommand& command, const StereoScene& scene) {
-  const auto start = Clock::now();
-  TsgoProblem problem = [&] {
+/// the same for flat and coarse-to-fine runs. Errors name the views.
+PreparedStereo prepare(const examples::StereoCommand& command, const StereoScene& scene) {
+  PreparedStereo prepared = [&] {
     try {
-      return tsgo_problem(scene.left, scene.right, command.tsgo);
+      return prepare_stereo(scene, command.tsgo);
     } catch (const std::invalid_argument& error) {  // a problem of these views: name them
       throw std::invalid_argument(
           (command.scene.empty()
@@ -99,30 +90,29 @@ StereoProblem build_problem(const examples::StereoCommand& command, const Stereo
           ": " + error.what());
     }
   }();
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!command.quiet)
-    std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s on %u threads\n", seconds,
-                 resolved_threads(command.tsgo.threads));
-  return {std::move(problem), seconds};
+    std::fprintf(stderr, "c2f-stereo: TSGO step 1 (cost volume) %.2f s on %u threads\n",
+                 prepared.seconds, prepared.threads);
+  return prepared;
 }
 
 /// The run: the configured solver on the schedule's levels within the budget (the recycled
 /// move graphs get what it leaves above the run's floor on the built energy), every step traced
 /// (with its error when there is GT) and each level's partition kept for --save-partitions.
 StereoRunReport solve(const examples::StereoCommand& command, const StereoScene& scene,
-                      const StereoProblem& problem, examples::RunRecord& record,
+                      const PreparedStereo& problem, examples::RunRecord& record,
                       LevelPartitionRecorder& partitions,
                       const examples::InterruptWatch& interrupts) {
   RunConfig config = command.run;
   config.energy_name = "the run on the TSGO energy";
   return run_stereo(
-      problem.tsgo, command.schedule, config,
+      problem.problem, command.schedule, config,
       record.observer(scene.gt.empty() ? TraceWriter::ErrorFunction{} : bad_pixel_error(scene),
                       interrupts, {std::ref(partitions)}));
 }
 
 void write_summary(const std::filesystem::path& out, const examples::StereoCommand& command,
-                   const StereoScene& scene, const StereoProblem& problem,
+                   const StereoScene& scene, const PreparedStereo& problem,
                    const StereoRunReport& stereo_run, const std::optional<BadPixelRates>& rates,
                    const std::string& dataset_error, const examples::InterruptWatch& interrupts) {
   const GridShape shape = scene.shape();
@@ -133,7 +123,7 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << ", solver " << to_string(command.run.solver.kind()) << ", max-flow "
          << to_string(command.run.solver.maxflow)
          << examples::near_and_shift_moves_text(command.run.solver) << "\n"
-         << "TSGO step 1: " << problem.seconds << " s on " << resolved_threads(command.tsgo.threads)
+         << "TSGO step 1: " << problem.seconds << " s on " << problem.threads
          << " threads (not on the run clock, same for every schedule)\n"
          << stereo_run.run.memory_line() << "\n";
   examples::write_run_report(report, stereo_run.levels, stereo_run.run.summary, interrupts);
@@ -166,7 +156,7 @@ struct RunScores {
 
 /// Stages the disparity maps, summary.txt and the saved partitions, and returns the scores.
 RunScores write_outputs(const examples::RunRecord& record, const examples::StereoCommand& command,
-                        const StereoScene& scene, const StereoProblem& problem,
+                        const StereoScene& scene, const PreparedStereo& problem,
                         const LevelPartitionRecorder& partitions, const StereoRunReport& stereo_run,
                         const examples::InterruptWatch& interrupts) {
   const Labeling& labeling = stereo_run.run.summary.labeling;
@@ -208,9 +198,9 @@ int main(int argc, char** argv) {
                                command.quiet);
     announce(command, scene);
     require_memory_for(command, scene);
-    const StereoProblem problem = build_problem(command, scene);
+    const PreparedStereo problem = prepare(command, scene);
     // The model as UAI, staged with the other outputs (it lands only if the run does).
-    if (!examples::export_uai(problem.tsgo.energy, command.export_uai, record, interrupts))
+    if (!examples::export_uai(problem.problem.energy, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
     LevelPartitionRecorder partitions(command.save_partitions);

@@ -230,6 +230,17 @@ TEST_CASE("the stereo recipe runs the TSGO energy over a stereo schedule, as bui
     CHECK(report.levels.size() == levels.reports().size());
     CHECK(report.levels.size() == schedule.levels.size());
   }
+  // The recipe's first step: the scene's problem as tsgo_problem builds it, on the threads asked.
+  vision::StereoScene scene;
+  scene.left = pair.left;
+  scene.right = pair.right;
+  tsgo.threads = 2;
+  const vision::PreparedStereo prepared = vision::prepare_stereo(scene, tsgo);
+  CHECK(prepared.threads == 2);
+  const Labeling some(64 * 48, 3);
+  CHECK(prepared.problem.energy.evaluate(some) == problem.energy.evaluate(some));
+  CHECK(prepared.problem.energy.num_labels() == 10);
+  tsgo.threads = 0;
   // Before anything is built: the larger of TSGO step 1's peak and the run's floor.
   const auto need = vision::stereo_memory_need(shape, tsgo, config.solver);
   REQUIRE(need.has_value());

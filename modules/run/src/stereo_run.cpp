@@ -1,7 +1,10 @@
 #include "c2f/run/stereo_run.hpp"
 
+#include <chrono>
+
 #include "c2f/run/memory_plan.hpp"
 #include "c2f/run/run.hpp"
+#include "c2f/support/parallel_for.hpp"
 #include "c2f/vision/superpixels.hpp"
 
 namespace c2f::vision {
@@ -11,6 +14,13 @@ std::optional<std::size_t> stereo_memory_need(GridShape shape, const TsgoOptions
   return grid_run_memory_need(
       solver, shape.width, shape.height, tsgo.labels, CostStorage::single_precision,
       tsgo_memory_estimate(shape.width, shape.height, tsgo.labels, tsgo.threads));
+}
+
+PreparedStereo prepare_stereo(const StereoScene& scene, const TsgoOptions& tsgo) {
+  const auto start = std::chrono::steady_clock::now();
+  TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  return {std::move(problem), seconds.count(), resolved_threads(tsgo.threads)};
 }
 
 StereoRunReport run_stereo(const TsgoProblem& problem, const Schedule& schedule,

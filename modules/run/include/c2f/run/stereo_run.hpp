@@ -1,7 +1,9 @@
 #pragma once
-// The stereo application's run: the TSGO energy of a scene minimised over a stereo schedule's
-// levels (slic levels segment the energy's guide image) with the run layer, within one memory
-// budget. c2f-stereo and the stereo bench run it.
+// The stereo application's recipe, scene -> report in two steps: prepare_stereo builds the TSGO
+// energy of a scene (timed apart from the run clock: it is the same for every schedule), and
+// run_stereo minimises it over a stereo schedule's levels (slic levels segment the energy's guide
+// image) with the run layer, within one memory budget. c2f-stereo and the stereo bench use both;
+// the bench prepares a scene once for all its schedules.
 
 #include <cstddef>
 #include <optional>
@@ -12,6 +14,7 @@
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/run/run_config.hpp"
+#include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
 
 namespace c2f::vision {
@@ -23,6 +26,17 @@ namespace c2f::vision {
 [[nodiscard]] std::optional<std::size_t> stereo_memory_need(GridShape shape,
                                                             const TsgoOptions& tsgo,
                                                             const SolverSpec& solver);
+
+/// A scene's TSGO problem and what preparing it took.
+struct PreparedStereo {
+  TsgoProblem problem;
+  double seconds = 0.0;  ///< wall time of TSGO steps 1 and 2
+  unsigned threads = 1;  ///< the threads they ran on (tsgo.threads resolved)
+};
+
+/// TSGO steps 1 and 2 on the scene's views with `tsgo` (tsgo_problem), timed. Throws as
+/// tsgo_problem does (std::invalid_argument for views it cannot use).
+PreparedStereo prepare_stereo(const StereoScene& scene, const TsgoOptions& tsgo);
 
 /// A stereo run's report: the run layer's, and one line per level of the schedule (its
 /// partition and how long building it took).
