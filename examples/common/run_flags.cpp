@@ -30,10 +30,11 @@ void RunFlags::declare(ToolOptions& options) {
                "only the variables within r edges of that label or of a pixel whose cheapest "
                "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
                "most 1e-4 of the energy (convergence: three sweeps without decrease)")
-      .flag("shift-moves", &shift_moves_,
-            "expansion: every sweep begins with two moves in which every variable may step one "
-            "label up, then down, at once (moves regions that are off by one label, e.g. one "
-            "disparity; convergence: no expansion or shift move helps)")
+      .on_off("shift-moves", &shift_moves_,
+              "expansion: every sweep begins with two moves in which every variable may step one "
+              "label up, then down, at once (moves regions that are off by one label, e.g. one "
+              "disparity; convergence: no expansion or shift move helps); --shift-moves=off "
+              "makes none")
       .text("near-levels", &near_levels_,
             "where --near-radius and --shift-moves apply: original (the default: the original "
             "problem only; coarse levels make whole moves, the faster coarse-to-fine run, "
@@ -69,15 +70,19 @@ SolverSpec RunFlags::solver_spec() const {
         "--near-levels: has no effect without --near-radius or --shift-moves");
   // The flags that may have asked for what the solver lacks, e.g. "--near-radius or
   // --label-order with --solver swap: ...".
+  // Near and shift moves are expansion's: other solvers leave the defaults aside, and refuse
+  // values that differ from them.
+  const bool near_radius_given = near_radius_ != defaults_.near_radius;
+  const bool shift_moves_given = shift_moves_ != defaults_.shift_moves;
   const auto refuse = [&](const std::string& problem) {
-    std::string flags = near_radius_ > 0 ? "--near-radius" : "";
-    if (shift_moves_) flags += flags.empty() ? "--shift-moves" : ", --shift-moves";
+    std::string flags = near_radius_given ? "--near-radius" : "";
+    if (shift_moves_given) flags += flags.empty() ? "--shift-moves" : ", --shift-moves";
     flags += flags.empty() ? "--label-order" : " or --label-order";
     throw std::invalid_argument(flags + " with --solver " + solver_ + ": " + problem);
   };
-  if (kind != SolverKind::expansion && near_radius_ != 0)
+  if (kind != SolverKind::expansion && near_radius_ != 0 && near_radius_given)
     refuse("near moves are expansion moves; solver '" + solver_ + "' has none");
-  if (kind != SolverKind::expansion && shift_moves_)
+  if (kind != SolverKind::expansion && shift_moves_ && shift_moves_given)
     refuse("shift moves are made by expansion; solver '" + solver_ + "' has none");
 
   SolverSpec spec;

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "c2f/run/defaults.hpp"
 #include "c2f/run/run_config.hpp"
 #include "tool_options.hpp"
 
@@ -13,6 +14,15 @@ namespace c2f::examples {
 
 class RunFlags {
  public:
+  /// The flags' defaults (shown in --help) are the tool's RunDefaults: the library's one
+  /// definition of what a run does when nothing is named.
+  explicit RunFlags(const RunDefaults& defaults)
+      : defaults_(defaults),
+        near_radius_(defaults.near_radius),
+        shift_moves_(defaults.shift_moves),
+        plateau_(defaults.plateau_steps),
+        plateau_tolerance_(defaults.plateau_tolerance) {}
+
   /// Declares the thirteen options in `options` (this object receives their values, so it
   /// must outlive options.parse()).
   void declare(ToolOptions& options);
@@ -26,16 +36,17 @@ class RunFlags {
   [[nodiscard]] SolverSpec solver_spec() const;
   [[nodiscard]] Options limits() const;
 
+  RunDefaults defaults_;
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
               near_levels_;        // empty: not given (NearLevels::original)
   std::string graph_memory_text_;  // empty: what the budget leaves
   double memory_gib_ = 0.0;        // 0: default_memory_budget()
-  int near_radius_ = 0;
-  bool shift_moves_ = false;
+  int near_radius_;
+  bool shift_moves_;
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none
   long max_steps_ = 0;       // steps in the whole run, 0: none
-  int plateau_ = 4;          // steps without decrease that end a coarse level
-  double plateau_tolerance_ = 0.0;
+  int plateau_;              // steps without decrease that end a coarse level
+  double plateau_tolerance_;
   int final_plateau_ = 0;  // on the original problem; 0: the solver's own convergence
 };
 

@@ -30,7 +30,14 @@ GridShape parse_grid(const std::string& text) {
 std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   SolveCommand command;
   std::string grid;
-  RunFlags run;
+  const RunDefaults defaults = pairwise_defaults();
+  RunFlags run(defaults);
+  const std::string schedule_help =
+      "default: " + defaults.grid_schedule + " with --grid, else " + defaults.general_schedule +
+      " (the measured best, docs/results.md); flat (the original problem only, the fair "
+      "baseline), paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
+      "such as \"cp:2,1 cp:2,2 flat\"; with --grid also agg, local, threshold, blocks and /cc "
+      "levels (see docs/solve.md)";
   ToolOptions options(
       "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
       "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
@@ -39,10 +46,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
       "> 0 (cost = -ln potential). Writes labeling.mpe (the UAI MPE result format), trace.csv\n"
       "and summary.txt. Progress goes to stderr.\n\nOptions");
   options.path("out,o", &command.out_dir, "output directory (created)")
-      .text("schedule", &command.schedule_text,
-            "flat, paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
-            "such as \"cp:2,1 cp:2,2 flat\"; with --grid also local, threshold, blocks and /cc "
-            "levels (see docs/solve.md)")
+      .text("schedule", &command.schedule_text, schedule_help.c_str())
       .text("grid", &grid,
             "WIDTHxHEIGHT: the model's variables are a row-major pixel grid (enables grid levels)")
       .path("trace", &command.trace, "trace CSV (default OUTDIR/trace.csv)")
@@ -58,6 +62,8 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   if (!grid.empty()) command.grid = parse_grid(grid);
   command.run = run.config();
   // The grammar now; the label count and the grid once the model is read.
+  if (command.schedule_text.empty())
+    command.schedule_text = defaults.schedule(command.grid.has_value());
   with_flag("--schedule",
             [&] { return Schedule::parse(command.schedule_text, pairwise_schedule_presets()); });
   if (command.trace.empty())

@@ -11,10 +11,10 @@
 namespace c2f::examples {
 
 struct SolveCommand {
-  std::string model;                   ///< the UAI MARKOV file
-  std::string out_dir;                 ///< labeling.mpe, trace.csv, summary.txt
-  std::string schedule_text = "flat";  ///< checked against the model once it is read
-  std::optional<GridShape> grid;       ///< --grid WxH: the variables are a row-major grid
+  std::string model;              ///< the UAI MARKOV file
+  std::string out_dir;            ///< labeling.mpe, trace.csv, summary.txt
+  std::string schedule_text;      ///< checked against the model once it is read; empty: the default
+  std::optional<GridShape> grid;  ///< --grid WxH: the variables are a row-major grid
   /// The solver, the limits and the memory budget (--memory, else the machine's default,
   /// always set).
   RunConfig run;

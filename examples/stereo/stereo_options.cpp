@@ -8,6 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "c2f/run/stereo_run.hpp"
 #include "c2f/support/number_text.hpp"
 #include "c2f/vision/stereo/stereo_schedules.hpp"
 
@@ -15,8 +16,9 @@ namespace c2f::examples {
 
 std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   StereoCommand command;
-  std::string schedule = "paper", smoothness = "tsgo_step";
-  RunFlags run;
+  const RunDefaults defaults = vision::stereo_defaults();
+  std::string schedule = defaults.grid_schedule, smoothness = "tsgo_step";
+  RunFlags run(defaults);
   ToolOptions options(
       "c2f-stereo: TSGO stereo matching solved flat or coarse to fine (C2F-TSGO).\n\n"
       "Usage: c2f-stereo LEFT RIGHT -o OUTDIR [options]\n"
@@ -35,14 +37,13 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
                "2014 calib.txt or 128 for KITTI, else 85; disparity.png holds disparities below "
                "256)")
       .text("schedule", &schedule,
-            "flat, paper (CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic "
-            "(the same three levels with another partition kind), paper-cc (split into connected "
-            "components), regions (connected regions of equal best labels; fastest with whole "
-            "moves only: local:1,1/cc with --plateau-tolerance 3e-5), aggregated (agg:1/cc flat: "
-            "connected regions of equal best label of 3x3-summed unaries; fastest measured and "
-            "best labeling at deadlines with --plateau-tolerance 3e-5 --near-radius 5 "
-            "--shift-moves), "
-            "or levels such as \"cp:2,2 cp:2,3 flat\" (see docs/stereo.md)")
+            "aggregated (agg:1/cc flat: connected regions of equal best label of 3x3-summed "
+            "unaries; with the default moves and tolerance the fastest measured, docs/results.md), "
+            "flat (the original problem only, with the same moves: the fair baseline), paper "
+            "(CP(1,1) CP(2,1) CP(3,1) flat), paper-local, paper-threshold, paper-slic (the same "
+            "three levels with another partition kind), paper-cc (split into connected "
+            "components), regions (local:1,1/cc), or levels such as \"cp:2,2 cp:2,3 flat\" (see "
+            "docs/stereo.md)")
       .flag("allow-non-refining", &command.allow_non_refining,
             "accept levels that do not refine each other (labels handed down by majority vote)")
       .text("smoothness", &smoothness, "tsgo_step or truncated_linear (the paper's wording)")

@@ -6,7 +6,7 @@ the result and its trace::
     import numpy as np, c2f
     unary = np.random.rand(240, 320, 8)                 # (H, W, L) costs
     energy = c2f.Energy.grid(unary, c2f.Term.potts(), weight=0.5)
-    result = c2f.solve(energy, schedule="paper")
+    result = c2f.solve(energy)                         # coarse to fine, the measured defaults
     result.labeling.shape                                # (240, 320)
     result.energy == energy.evaluate(result.labeling)    # True
 
@@ -20,11 +20,11 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 import numpy as np
 
-from ._c2f import (Energy, Term, _segment, _solve, bad_pixel_rates, expand, partition,
+from ._c2f import (Energy, Term, _defaults, _segment, _solve, bad_pixel_rates, expand, partition,
                    read_image, read_segmentation, read_stereo_pair, reduce, stereo_energy,
                    transfer)
 
-__all__ = ["Energy", "Term", "Result", "solve", "stereo", "stereo_energy", "read_image",
+__all__ = ["Energy", "Term", "Result", "defaults", "solve", "stereo", "stereo_energy", "read_image",
            "read_stereo_pair", "bad_pixel_rates", "segment", "read_segmentation", "partition",
            "reduce", "expand", "transfer"]
 
@@ -57,16 +57,37 @@ Schedule = Union[str, Sequence[np.ndarray]]
 Callback = Callable[[Dict[str, Any]], Optional[bool]]
 
 
+def defaults(name: str = "pairwise") -> Dict[str, Any]:
+    """The library's defaults: what ``solve`` runs where an argument is None.
+
+    Parameters
+    ----------
+    name : {'pairwise', 'stereo'}, default 'pairwise'
+        'pairwise' for any pairwise energy (``solve``, ``c2f-solve``), 'stereo' for the TSGO
+        stereo energy (``stereo``, ``c2f-stereo``).
+
+    Returns
+    -------
+    dict
+        ``grid_schedule`` and ``general_schedule`` (the schedule on a grid energy and on any
+        other), expansion's ``near_radius`` and ``shift_moves`` (on the original problem),
+        ``plateau`` and ``plateau_tolerance`` (coarse levels): the configuration measured best
+        on a tuning set and confirmed on instances set aside (docs/results.md, "Defaults").
+    """
+    return _defaults(name)
+
+
 def solve(
     energy: Energy,
-    schedule: Schedule = "flat",
+    schedule: Optional[Schedule] = None,
     *,
+    defaults: str = "pairwise",
     method: str = "expansion",
     options: Optional[Dict[str, Any]] = None,
     time_limit: Optional[float] = None,
     max_steps: Optional[int] = None,
-    plateau: int = 4,
-    plateau_tolerance: float = 0.0,
+    plateau: Optional[int] = None,
+    plateau_tolerance: Optional[float] = None,
     start: Union[str, np.ndarray] = "unary_argmin",
     callback: Optional[Callback] = None,
     memory: Optional[float] = None,
@@ -78,12 +99,17 @@ def solve(
     ----------
     energy : Energy
         The pairwise energy (``Energy.grid``, ``Energy.general``, ``stereo_energy``, ...).
-    schedule : str or sequence of ndarray, default 'flat'
-        The coarse levels, coarsest first: 'flat' (the original problem only), 'paper' (colour
+    schedule : str or sequence of ndarray, optional
+        The coarse levels, coarsest first. None: the defaults' (coarse to fine: 'agg:2/cc' on a
+        grid energy, 'cp:1,1' on any other, see ``defaults``). 'flat' (the original problem
+        only, with the same moves: the fair baseline), 'paper' (colour
         passing CP(1,1) CP(2,1) CP(3,1)), any schedule text of the library ('cp:1,1 cp:2,1',
         'auto:0.01,0.1', and on a grid energy also 'agg:2/cc', 'blocks:4', 'threshold:0.5',
         ...), or a list of your own partitions, each an integer array of group ids of every
         variable (equal ids: one group), each refining the one before.
+    defaults : {'pairwise', 'stereo'}, default 'pairwise'
+        Which of the library's measured defaults (``defaults(name)``) fill the arguments left
+        None and expansion's ``near_radius`` and ``shift_moves`` not in ``options``.
     method : {'expansion', 'swap', 'lbp', 'icm'}, default 'expansion'
         The solver: alpha-expansion with QPBO moves, alpha-beta swap, loopy belief propagation
         or iterated conditional modes.
@@ -102,11 +128,13 @@ def solve(
         Stop once the run clock passes this many seconds (None: no limit).
     max_steps : int, optional
         Stop after this many solver steps over all levels (None: no limit).
-    plateau : int, default 4
+    plateau : int, optional
         A coarse level is refined after this many steps without a decrease (the original
-        problem ends where the solver has converged: one sweep of its moves).
-    plateau_tolerance : float, default 0
-        On coarse levels, decreases below this fraction of abs(E) do not count.
+        problem ends where the solver has converged: one sweep of its moves). None: the
+        defaults' (4).
+    plateau_tolerance : float, optional
+        On coarse levels, decreases below this fraction of abs(E) do not count. None: the
+        defaults'.
     start : str or ndarray, default 'unary_argmin'
         The first labeling: 'unary_argmin', 'zero', or a labeling of your own (an integer array
         of shape (N,) or the grid's (H, W)); on a coarse first level each group starts at the
@@ -143,13 +171,15 @@ def solve(
     The GIL is released while the solver runs.
     """
     return _result(lambda: _solve(
-        energy, list(schedule) if isinstance(schedule, tuple) else schedule, method=method,
+        energy, list(schedule) if isinstance(schedule, tuple) else schedule, defaults=defaults,
+        method=method,
         options=options, time_limit=time_limit, max_steps=max_steps, plateau=plateau,
         plateau_tolerance=plateau_tolerance, start=start, callback=callback, memory=memory,
         graph_memory=graph_memory))
 
 
-def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Schedule = "paper",
+def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85,
+           schedule: Optional[Schedule] = None,
            *, smoothness: str = "tsgo_step", truncation: float = 2.0, threads: int = 0,
            **run_options: Any) -> Result:
     """TSGO stereo of two views, coarse to fine: ``c2f-stereo LEFT RIGHT --labels L --schedule S``.
@@ -160,9 +190,10 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Sche
         RGB uint8 views of shape (H, W, 3).
     labels : int, default 85
         Disparities 0..labels-1 of the left view (result.labeling, shape (H, W)).
-    schedule : str or sequence of ndarray, default 'paper'
-        Every schedule of ``solve``, and the stereo presets ('paper', 'paper-slic', 'regions',
-        'aggregated', ...).
+    schedule : str or sequence of ndarray, optional
+        Every schedule of ``solve``, and the stereo presets ('aggregated', 'paper',
+        'paper-slic', 'regions', ...). None: the stereo defaults (``defaults('stereo')``:
+        'aggregated' with near and shift moves), as c2f-stereo runs.
     smoothness, truncation : str, float
         The TSGO pairwise term ('tsgo_step' or 'truncated_linear') and its truncation.
     threads : int, default 0
@@ -173,7 +204,7 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85, schedule: Sche
     """
     energy = stereo_energy(left, right, labels, smoothness, truncation, threads,
                            run_options.get("memory"))
-    return solve(energy, schedule, **run_options)
+    return solve(energy, schedule, **{"defaults": "stereo", **run_options})
 
 
 def _result(call: Callable[[], Dict[str, Any]]) -> Result:

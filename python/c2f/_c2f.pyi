@@ -81,16 +81,20 @@ class Energy:
     def weights(self) -> npt.NDArray[np.float64]:
         """A copy of the edges' weights, (E,)."""
 
+def _defaults(name: str) -> Dict[str, Any]:
+    """The library's RunDefaults named 'pairwise' or 'stereo', as a dict."""
+
 def _solve(
     energy: Energy,
-    schedule: Union[str, Sequence[npt.ArrayLike]],
+    schedule: Optional[Union[str, Sequence[npt.ArrayLike]]],
     *,
+    defaults: str,
     method: str,
     options: Optional[Dict[str, Any]],
     time_limit: Optional[float],
     max_steps: Optional[int],
-    plateau: int,
-    plateau_tolerance: float,
+    plateau: Optional[int],
+    plateau_tolerance: Optional[float],
     start: Union[str, npt.ArrayLike],
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],
     memory: Optional[float],

@@ -12,7 +12,9 @@
 #include "c2f/lift/partition_list.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/defaults.hpp"
 #include "c2f/run/run.hpp"
+#include "c2f/run/stereo_run.hpp"
 #include "memory_argument.hpp"
 #include "model_energy.hpp"
 #include "numpy_input.hpp"
@@ -40,15 +42,28 @@ PartitionList partition_list(const py::list& partitions, std::size_t num_variabl
   }
 }
 
-/// The driver's rules from c2f.solve's keywords (None: no limit).
-Options limits_from(const ModelEnergy& model, const py::handle& time_limit,
-                    const py::handle& max_steps, const py::handle& plateau,
-                    const py::handle& plateau_tolerance, const py::handle& start) {
+/// The RunDefaults c2f.solve's `defaults` names: 'pairwise' or 'stereo'.
+RunDefaults named_defaults(const std::string& name) {
+  if (name == "pairwise") return pairwise_defaults();
+  if (name == "stereo") return vision::stereo_defaults();
+  throw py::value_error("defaults: expected 'pairwise' or 'stereo', got '" + name + "'");
+}
+
+/// The driver's rules from c2f.solve's keywords (None: no limit; plateau and plateau_tolerance
+/// None: the defaults').
+Options limits_from(const ModelEnergy& model, const RunDefaults& defaults,
+                    const py::handle& time_limit, const py::handle& max_steps,
+                    const py::handle& plateau, const py::handle& plateau_tolerance,
+                    const py::handle& start) {
   Options limits;
   limits.time_limit_seconds = optional_positive_real(time_limit, "time_limit");
   limits.max_total_steps = optional_positive_count(max_steps, "max_steps");
-  limits.plateau_steps = {static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
-  limits.plateau_tolerance = real_argument(plateau_tolerance, "plateau_tolerance");
+  limits.plateau_steps = {
+      plateau.is_none() ? defaults.plateau_steps
+                        : static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
+  limits.plateau_tolerance = plateau_tolerance.is_none()
+                                 ? defaults.plateau_tolerance
+                                 : real_argument(plateau_tolerance, "plateau_tolerance");
   if (py::isinstance<py::str>(start)) {
     try {
       limits.initial_labeling = initial_labeling_from_string(start.cast<std::string>());
@@ -62,15 +77,19 @@ Options limits_from(const ModelEnergy& model, const py::handle& time_limit,
   return limits;
 }
 
-py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
-               const std::string& method, const py::handle& options, const py::handle& time_limit,
-               const py::handle& max_steps, const py::handle& plateau,
-               const py::handle& plateau_tolerance, const py::object& start,
-               const py::object& callback, const py::handle& memory,
+py::dict solve(const ModelEnergy& model, const py::object& given_schedule,
+               const std::string& defaults_name, const std::string& method,
+               const py::handle& options, const py::handle& time_limit, const py::handle& max_steps,
+               const py::handle& plateau, const py::handle& plateau_tolerance,
+               const py::object& start, const py::object& callback, const py::handle& memory,
                const py::handle& graph_memory) {
+  const RunDefaults defaults = named_defaults(defaults_name);
+  const py::object schedule_object =
+      given_schedule.is_none() ? py::str(defaults.schedule(!model.shape.empty())) : given_schedule;
   RunConfig config;
-  config.solver = solver_spec_from(method, options);
-  config.limits = limits_from(model, time_limit, max_steps, plateau, plateau_tolerance, start);
+  config.solver = solver_spec_from(method, options, defaults);
+  config.limits =
+      limits_from(model, defaults, time_limit, max_steps, plateau, plateau_tolerance, start);
   config.memory = memory_budget_from(memory);
   config.graph_memory = optional_gib_bytes(graph_memory, "graph_memory");
   StepRecord record(callback, model.shape);
@@ -101,13 +120,28 @@ py::dict solve(const ModelEnergy& model, const py::object& schedule_object,
   return record.result(summary, summary.report());
 }
 
+/// A RunDefaults as a dict (c2f.defaults).
+py::dict defaults_dict(const std::string& name) {
+  const RunDefaults defaults = named_defaults(name);
+  py::dict out;
+  out["grid_schedule"] = defaults.grid_schedule;
+  out["general_schedule"] = defaults.general_schedule;
+  out["near_radius"] = defaults.near_radius;
+  out["shift_moves"] = defaults.shift_moves;
+  out["plateau"] = defaults.plateau_steps;
+  out["plateau_tolerance"] = defaults.plateau_tolerance;
+  return out;
+}
+
 }  // namespace
 
 void bind_solve(py::module_& module) {
+  module.def("_defaults", &defaults_dict, py::arg("name"),
+             "The library's RunDefaults named 'pairwise' or 'stereo', as a dict.");
   module.def("_solve", &solve, py::arg("energy"), py::arg("schedule"), py::kw_only(),
-             py::arg("method"), py::arg("options"), py::arg("time_limit"), py::arg("max_steps"),
-             py::arg("plateau"), py::arg("plateau_tolerance"), py::arg("start"),
-             py::arg("callback"), py::arg("memory"), py::arg("graph_memory"),
+             py::arg("defaults"), py::arg("method"), py::arg("options"), py::arg("time_limit"),
+             py::arg("max_steps"), py::arg("plateau"), py::arg("plateau_tolerance"),
+             py::arg("start"), py::arg("callback"), py::arg("memory"), py::arg("graph_memory"),
              "The engine of c2f.solve (which documents the arguments); returns a dict.");
 }
 

@@ -90,7 +90,8 @@ std::string option_name(const std::string& key) {
 
 }  // namespace
 
-SolverSpec solver_spec_from(const std::string& method, const py::handle& options) {
+SolverSpec solver_spec_from(const std::string& method, const py::handle& options,
+                            const RunDefaults& defaults) {
   SolverKind kind;
   try {
     kind = solver_kind_from_string(method);
@@ -101,7 +102,9 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
   SolverSpec spec;
   switch (kind) {
     case SolverKind::expansion: {
-      ExpansionOptions expansion;
+      ExpansionOptions expansion;  // the defaults' moves unless options name others
+      expansion.near_radius = defaults.near_radius;
+      expansion.shift_moves = defaults.shift_moves;
       NearLevels levels = NearLevels::original;
       for (const auto& [key, value] :
            option_items(options, owner,

@@ -13,6 +13,7 @@
 
 #include "c2f/adapters/coop/coop_solver.hpp"
 #include "c2f/driver/options.hpp"
+#include "c2f/run/defaults.hpp"
 #include "c2f/run/run_error.hpp"
 #include "c2f/run/solver_spec.hpp"
 
@@ -21,10 +22,12 @@ namespace c2f::python {
 /// The solver `method` names ('expansion', 'swap', 'lbp', 'icm') with `options` (None or a dict
 /// of that solver's option names: order, seed, tolerance, near_radius, near_sweep_gain,
 /// shift_moves, near_levels and maxflow for expansion; order, seed, tolerance and maxflow for
-/// swap; schedule and damping for lbp; order, seed and tolerance for icm). ValueError naming
+/// swap; schedule and damping for lbp; order, seed and tolerance for icm); expansion's
+/// near_radius and shift_moves not named are `defaults`'. ValueError naming
 /// `method` or `options['name']` for an unknown name or value, TypeError for a value of the
 /// wrong type.
-SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& options);
+SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& options,
+                            const RunDefaults& defaults);
 
 /// The cooperative cut's solver options from `options` (None or a dict: aux, start,
 /// expansion_cycles), as solver_spec_from.

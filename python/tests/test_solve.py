@@ -135,3 +135,36 @@ def test_a_run_starts_from_a_labeling_of_ones_own(rng):
         c2f.solve(energy, start=np.full((10, 12), 4))
     with pytest.raises(ValueError, match="start: expected a labeling of shape"):
         c2f.solve(energy, start=np.zeros(7, dtype=int))
+
+
+def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path):
+    """c2f.solve with nothing named runs c2f.defaults(): the same run as naming every value,
+    and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
+    defaults = c2f.defaults()
+    assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "shift_moves",
+                             "plateau", "plateau_tolerance"}
+    energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
+    implicit = c2f.solve(energy)
+    explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
+                         plateau_tolerance=defaults["plateau_tolerance"],
+                         options={"near_radius": defaults["near_radius"],
+                                  "shift_moves": defaults["shift_moves"]})
+    np.testing.assert_array_equal(implicit.trace["energy"], explicit.trace["energy"])
+    assert implicit.trace["level"].max() > 0  # coarse to fine, not flat
+
+    build = os.environ.get("C2F_BUILD_DIR")
+    if not build:
+        pytest.skip("C2F_BUILD_DIR is not set (ctest sets it): no c2f-solve to compare with")
+    model = tmp_path / "model.uai"
+    energy.write_uai(str(model))
+    for grid, read in ((["--grid", "16x12"], c2f.Energy.grid(
+            energy.unary.reshape(12, 16, 5), c2f.Term.truncated_linear(3.0), weight=0.7)),
+                       ([], c2f.Energy.read_uai(str(model)))):
+        out = tmp_path / ("grid" if grid else "general")
+        subprocess.run([os.path.join(build, "examples/solve/c2f-solve"), str(model), "-o",
+                        str(out), "-q", *grid], check=True)
+        cli = np.array([int(w) for w in (out / "labeling.mpe").read_text().split()[2:]])
+        result = c2f.solve(read)
+        np.testing.assert_array_equal(result.labeling.reshape(-1), cli)
+        schedule = defaults["grid_schedule" if grid else "general_schedule"]
+        assert f"schedule {schedule}" in (out / "summary.txt").read_text()

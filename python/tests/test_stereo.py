@@ -44,6 +44,24 @@ def test_teddy_through_python_and_through_c2f_stereo(teddy, tmp_path):
     assert f"final energy {result.energy:.6f}" in (out / "summary.txt").read_text()
 
 
+def test_stereo_defaults_are_c2f_stereos(teddy, tmp_path):
+    """c2f.stereo with no schedule runs c2f.defaults('stereo'), as c2f-stereo with no flags."""
+    defaults = c2f.defaults("stereo")
+    assert defaults["grid_schedule"] == defaults["general_schedule"]
+    result = c2f.stereo(teddy["left"], teddy["right"], labels=20)
+    build = os.environ.get("C2F_BUILD_DIR")
+    if not build:
+        pytest.skip("C2F_BUILD_DIR is not set (ctest sets it): no c2f-stereo to compare with")
+    out = tmp_path / "out"
+    subprocess.run([os.path.join(build, "examples/stereo/c2f-stereo"), str(TEDDY / "left.png"),
+                    str(TEDDY / "right.png"), "--downscale", "3", "--labels", "20", "-o",
+                    str(out), "-q"], check=True)
+    np.testing.assert_array_equal(read_pfm(out / "disparity.pfm"), result.labeling)
+    summary = (out / "summary.txt").read_text()
+    assert f"final energy {result.energy:.6f}" in summary
+    assert f"near moves of radius {defaults['near_radius']} and shift moves" in summary
+
+
 def test_stereo_presets_slic_and_evaluation(teddy):
     energy = c2f.stereo_energy(teddy["left"], teddy["right"], labels=20)
     assert energy.shape == (125, 150)

@@ -69,7 +69,7 @@ TEST_CASE("c2f-stereo with near moves descends and stops after three quiet sweep
   const int labels = 8;
   const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
                      (dir / "out").string() + " --labels " + std::to_string(labels) +
-                     " --schedule flat --near-radius 2 -q");
+                     " --schedule flat --near-radius 2 --shift-moves=off -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const std::vector<double> energies = last_level_energies(dir / "out" / "trace.csv");
@@ -90,10 +90,10 @@ TEST_CASE("c2f-stereo makes near moves on the levels --near-levels names, and sa
   // summary.txt's second line and trace.csv without its times.
   auto solve = [&](const std::string& levels) {
     const auto out = dir / levels;
-    const auto r =
-        run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
-            out.string() + " --labels 8 --schedule \"local:1,1/cc flat\" --near-radius 2" +
-            " --near-levels " + levels + " -q");
+    const auto r = run(
+        (dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " + out.string() +
+        " --labels 8 --schedule \"local:1,1/cc flat\" --near-radius 2 --shift-moves=off" +
+        " --near-levels " + levels + " -q");
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     std::ifstream summary(out / "summary.txt");
@@ -124,7 +124,7 @@ TEST_CASE(
   const int labels = 8;
   const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
                      (dir / "out").string() + " --labels " + std::to_string(labels) +
-                     " --schedule \"local:1,1/cc flat\" --shift-moves -q");
+                     " --schedule \"local:1,1/cc flat\" --near-radius 0 --shift-moves -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::ifstream summary(dir / "out" / "summary.txt");
@@ -325,8 +325,10 @@ TEST_CASE("c2f-stereo stays within its memory budget: recycled move graphs get w
   const std::string pair = (dir / "left.png").string() + " " + (dir / "right.png").string();
   const auto solve = [&](const std::string& name, const std::string& memory) {
     const auto r = c2f::test::run_tool_measured(
-        C2F_STEREO_BINARY, pair + " -o " + (dir / name).string() +
-                               " --labels 48 --schedule flat --max-steps 150 -q" + memory);
+        C2F_STEREO_BINARY,
+        pair + " -o " + (dir / name).string() +
+            " --labels 48 --schedule flat --near-radius 0 --shift-moves=off --max-steps 150 -q" +
+            memory);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     std::ifstream in(dir / name / "summary.txt");

@@ -16,6 +16,15 @@ std::optional<std::size_t> stereo_memory_need(GridShape shape, const TsgoOptions
       tsgo_memory_estimate(shape.width, shape.height, tsgo.labels, tsgo.threads));
 }
 
+RunDefaults stereo_defaults() {
+  RunDefaults defaults;
+  defaults.grid_schedule = defaults.general_schedule = "aggregated";
+  defaults.near_radius = 5;
+  defaults.shift_moves = true;
+  defaults.plateau_tolerance = 3e-5;
+  return defaults;
+}
+
 PreparedStereo prepare_stereo(const StereoScene& scene, const TsgoOptions& tsgo) {
   const auto start = std::chrono::steady_clock::now();
   TsgoProblem problem = tsgo_problem(scene.left, scene.right, tsgo);

@@ -50,6 +50,7 @@
 #include "c2f/lift/threshold_partition.hpp"
 #include "c2f/lift/transfer.hpp"
 #include "c2f/run/coop_run.hpp"
+#include "c2f/run/defaults.hpp"
 #include "c2f/run/memory_plan.hpp"
 #include "c2f/run/run.hpp"
 #include "c2f/run/run_config.hpp"

@@ -24,6 +24,10 @@
 
 namespace c2f {
 
+/// A PartitionProvider whose partitions E reduces by: what coarse_to_fine takes as its levels.
+template <class P, class E>
+concept LevelsFor = PartitionProvider<P, E> && ReducibleEnergy<E, provided_partition_t<P, E>>;
+
 /// The start labeling of a level's energy: each variable's cheapest unary label, or all 0.
 template <Energy E>
 Labeling initial_labeling(const E& energy, InitialLabeling kind) {
@@ -271,10 +275,9 @@ Options with_solver_convergence(Options options, const S& original_solver, const
 /// Levels may come as any Partition type, read through partition_traits without conversion.
 /// Throws std::invalid_argument when a provided partition does not cover the energy's variables
 /// or, with LevelTransfer::exact, does not refine the previous level.
-template <Energy E, PartitionProvider<E> P, SolversFor<E> Solvers>
-requires ReducibleEnergy<E, provided_partition_t<P, E>> Summary
-coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Options& options,
-               const Observer& observer = {}) {
+template <Energy E, LevelsFor<E> P, SolversFor<E> Solvers>
+Summary coarse_to_fine(const E& energy, P& levels, Solvers&& solvers, const Options& options,
+                       const Observer& observer = {}) {
   auto& coarse = detail::coarse_of(solvers);
   auto& original = detail::original_of(solvers);
   return detail::run_levels(energy, levels, coarse, original,

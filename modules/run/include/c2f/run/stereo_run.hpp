@@ -13,6 +13,7 @@
 #include "c2f/driver/observer.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/defaults.hpp"
 #include "c2f/run/run_config.hpp"
 #include "c2f/vision/stereo/stereo_scene.hpp"
 #include "c2f/vision/stereo/tsgo_energy.hpp"
@@ -26,6 +27,12 @@ namespace c2f::vision {
 [[nodiscard]] std::optional<std::size_t> stereo_memory_need(GridShape shape,
                                                             const TsgoOptions& tsgo,
                                                             const SolverSpec& solver);
+
+/// The stereo application's defaults (c2f-stereo, c2f.stereo): the `aggregated` schedule
+/// (connected regions of equal best label of 3x3-summed unaries, then the original problem), a
+/// coarse level left when 4 moves gain at most 3e-5 of the energy, near moves of radius 5 and
+/// shift moves on the original problem.
+[[nodiscard]] RunDefaults stereo_defaults();
 
 /// A scene's TSGO problem and what preparing it took.
 struct PreparedStereo {

@@ -1,0 +1,35 @@
+#pragma once
+// What c2f runs when the caller names nothing: one definition for the tools (their flags'
+// defaults), the C++ API and Python. Each is the configuration measured best on a tuning set and
+// confirmed on instances set aside before tuning (docs/results.md, "Defaults"). Every value can
+// be overridden; `flat` with the same moves is the fair baseline of each.
+
+#include <string>
+
+#include "c2f/run/run_config.hpp"
+
+namespace c2f {
+
+struct RunDefaults {
+  std::string grid_schedule;       ///< schedule text on a pixel grid (application presets apply)
+  std::string general_schedule;    ///< schedule text on any other graph
+  int near_radius = 0;             ///< expansion's near moves, original problem only (0: none)
+  bool shift_moves = false;        ///< expansion's shift moves, original problem only
+  int plateau_steps = 4;           ///< steps without decrease that end a coarse level
+  double plateau_tolerance = 0.0;  ///< on coarse levels (ExpansionOptions-independent)
+
+  /// grid_schedule on a pixel grid, else general_schedule.
+  [[nodiscard]] const std::string& schedule(bool on_grid) const {
+    return on_grid ? grid_schedule : general_schedule;
+  }
+  /// A RunConfig with these moves and rules: expansion on our max-flow with near and shift moves
+  /// on the original problem only, no time or step limit, no budget set (the run's default).
+  [[nodiscard]] RunConfig config() const;
+};
+
+/// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels of 5x5-summed
+/// unaries split into connected regions on a grid (agg:2/cc), colour passing CP(1,1) elsewhere;
+/// whole expansion moves; a coarse level ends after 4 moves without decrease.
+[[nodiscard]] RunDefaults pairwise_defaults();
+
+}  // namespace c2f

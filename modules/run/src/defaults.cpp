@@ -1,0 +1,25 @@
+#include "c2f/run/defaults.hpp"
+
+#include "c2f/run/solver_spec.hpp"
+
+namespace c2f {
+
+RunConfig RunDefaults::config() const {
+  RunConfig config;
+  ExpansionOptions expansion;
+  expansion.near_radius = near_radius;
+  expansion.shift_moves = shift_moves;
+  config.solver = expansion_spec(expansion, NearLevels::original, MaxFlowKind::dynamic);
+  config.limits.plateau_steps = {plateau_steps};
+  config.limits.plateau_tolerance = plateau_tolerance;
+  return config;
+}
+
+RunDefaults pairwise_defaults() {
+  RunDefaults defaults;
+  defaults.grid_schedule = "agg:2/cc";
+  defaults.general_schedule = "cp:1,1";
+  return defaults;
+}
+
+}  // namespace c2f
