@@ -44,7 +44,6 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
     CHECK(flags.limits.time_limit_seconds == expected.limits.time_limit_seconds);
     CHECK(flags.limits.max_total_steps == expected.limits.max_total_steps);
   }
-  // The stereo defaults differ from a generic energy's: the test above compares two configs.
-  CHECK(vision::stereo_defaults().config().limits.plateau_tolerance !=
-        pairwise_defaults().config().limits.plateau_tolerance);
+  // The stereo defaults differ from a generic energy's: the loop above compares two configs.
+  CHECK(vision::stereo_defaults().near_radius != pairwise_defaults().near_radius);
 }

@@ -21,7 +21,6 @@ RunDefaults stereo_defaults() {
   defaults.grid_schedule = defaults.general_schedule = "aggregated";
   defaults.near_radius = 5;
   defaults.shift_moves = true;
-  defaults.plateau_tolerance = 3e-5;
   return defaults;
 }
 

@@ -29,9 +29,10 @@ namespace c2f::vision {
                                                             const SolverSpec& solver);
 
 /// The stereo application's defaults (c2f-stereo, c2f.stereo): the `aggregated` schedule
-/// (connected regions of equal best label of 3x3-summed unaries, then the original problem), a
-/// coarse level left when 4 moves gain at most 3e-5 of the energy, near moves of radius 5 and
-/// shift moves on the original problem.
+/// (connected regions of equal best label of 3x3-summed unaries, solved to convergence, then
+/// the original problem) with near moves of radius 5 and shift moves on the original problem:
+/// measured fastest to flat's final energy from third size to full-size Aloe
+/// (docs/results.md).
 [[nodiscard]] RunDefaults stereo_defaults();
 
 /// A scene's TSGO problem and what preparing it took.
