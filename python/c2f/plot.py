@@ -1,7 +1,7 @@
 """Energy and error against time, from c2f.Result traces or the tools' trace.csv files.
 
     import c2f, c2f.plot
-    flat, fine = c2f.solve(energy, "flat"), c2f.solve(energy, "paper")
+    flat, fine = c2f.solve(energy, "flat"), c2f.solve(energy)   # flat, and the defaults
     figure = c2f.plot.energy_against_time({"flat": flat, "c2f": fine}, gap_to=min(flat.energy, fine.energy))
     figure.savefig("energy.png")
 
