@@ -126,6 +126,11 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
             "--schedule: level cp:3,1 has N_L 3 above the 2 labels"},
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
+           // c2f-solve's defaults make whole moves, so these flags are asked for, not defaults.
+           {grid + out + " --solver icm --shift-moves",
+            "--shift-moves or --label-order with --solver icm: shift moves are made by expansion"},
+           {grid + out + " --near-levels all",
+            "--near-levels: has no effect without --near-radius or --shift-moves"},
            {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
            {(dir / "huge.uai").string() + out + " --memory 0.5",
             "huge.uai (512 variables x 1048576 labels, 0 factors) needs 4.0 GiB, more than the "

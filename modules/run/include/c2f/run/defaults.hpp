@@ -16,7 +16,7 @@ struct RunDefaults {
   int near_radius = 0;             ///< expansion's near moves, original problem only (0: none)
   bool shift_moves = false;        ///< expansion's shift moves, original problem only
   int plateau_steps = 4;           ///< steps without decrease that end a coarse level
-  double plateau_tolerance = 0.0;  ///< on coarse levels (ExpansionOptions-independent)
+  double plateau_tolerance = 0.0;  ///< the plateau rule's tolerance on coarse levels
 
   /// grid_schedule on a pixel grid, else general_schedule.
   [[nodiscard]] const std::string& schedule(bool on_grid) const {
