@@ -166,14 +166,15 @@ TEST_CASE("c2f-stereo stopped by SIGINT writes the best labeling so far and exit
           "[stereo][cli][interrupt]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-cli-interrupt";
   std::filesystem::remove_all(dir);
-  // Large enough that the run is still going when the signal arrives (seconds of moves).
+  // Large enough that the run is still going when the signal arrives (seconds of whole moves;
+  // with the stereo defaults' near and shift moves it can converge first).
   c2f::test::write_synthetic_pair(dir, 480, 360, 8, 40, 11);
   const std::string out = (dir / "out").string();
-  const auto r = c2f::test::run_tool_interrupted(C2F_STEREO_BINARY,
-                                                 (dir / "left.png").string() + " " +
-                                                     (dir / "right.png").string() + " -o " + out +
-                                                     " --labels 128 --schedule flat",
-                                                 2.5, SIGINT);
+  const auto r = c2f::test::run_tool_interrupted(
+      C2F_STEREO_BINARY,
+      (dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " + out +
+          " --labels 128 --schedule flat --near-radius 0 --shift-moves=off",
+      2.5, SIGINT);
   INFO(r.output);
   CHECK(r.exit_code == 130);
   CHECK_THAT(r.output, Catch::Contains("interrupted by SIGINT"));
