@@ -25,6 +25,15 @@ void RunFlags::declare(ToolOptions& options) {
       .text("graph-memory", &graph_memory_text_,
             "at most this many GiB of the budget for recycled move graphs (0: no recycling; "
             "default: all the budget leaves)")
+      .integer("threads", &threads_, {0, 1024},
+               "threads of the run, data preparation and solve (0: the machine's cores); the "
+               "result is the same for every count")
+      .integer("regions", &regions_, {1, 65535},
+               "expansion with --near-radius: cut the variables into at most this many bands (at "
+               "least 4096 variables each) and make near and shift moves on the even bands at "
+               "once, then on the odd ones, on --threads threads; when a sweep gains at most 1e-4 "
+               "of the energy, a sweep of band moves over every variable, then one of whole moves "
+               "(convergence: four sweeps without decrease). 1: every move on one thread")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "
@@ -84,6 +93,10 @@ SolverSpec RunFlags::solver_spec() const {
     refuse("near moves are expansion moves; solver '" + solver_ + "' has none");
   if (kind != SolverKind::expansion && shift_moves_ && shift_moves_given)
     refuse("shift moves are made by expansion; solver '" + solver_ + "' has none");
+  if (kind != SolverKind::expansion && regions_ != ExpansionOptions{}.regions)
+    throw std::invalid_argument("--regions with --solver " + solver_ +
+                                ": region moves are expansion moves; solver '" + solver_ +
+                                "' has none");
 
   SolverSpec spec;
   spec.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
@@ -98,6 +111,8 @@ SolverSpec RunFlags::solver_spec() const {
       options.order = order;
       options.near_radius = near_radius_;
       options.shift_moves = shift_moves_;
+      options.regions = regions_;
+      options.threads = threads_;
       spec = expansion_spec(options, levels, spec.maxflow);
       break;
     }

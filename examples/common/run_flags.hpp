@@ -1,8 +1,8 @@
 #pragma once
 // The options that configure a run, shared by the tools that offer every pairwise solver
-// (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --near-radius,
-// --shift-moves, --near-levels, --label-order, --time-limit, --max-steps, --plateau,
-// --plateau-tolerance, --final-plateau. They become one RunConfig of the run layer.
+// (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --threads, --regions,
+// --near-radius, --shift-moves, --near-levels, --label-order, --time-limit, --max-steps,
+// --plateau, --plateau-tolerance, --final-plateau. They become one RunConfig of the run layer.
 
 #include <string>
 
@@ -23,7 +23,7 @@ class RunFlags {
         plateau_(defaults.plateau_steps),
         plateau_tolerance_(defaults.plateau_tolerance) {}
 
-  /// Declares the thirteen options in `options` (this object receives their values, so it
+  /// Declares the fifteen options in `options` (this object receives their values, so it
   /// must outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -31,6 +31,9 @@ class RunFlags {
   /// machine's default). Throws std::invalid_argument naming the option for an unknown name,
   /// an option the solver does not take, or a backend not in this build.
   [[nodiscard]] RunConfig config() const;
+  /// --threads: the threads of the whole run, the tool's data preparation included (0: the
+  /// machine's cores).
+  [[nodiscard]] int threads() const noexcept { return threads_; }
 
  private:
   [[nodiscard]] SolverSpec solver_spec() const;
@@ -41,6 +44,8 @@ class RunFlags {
               near_levels_;        // empty: not given (NearLevels::original)
   std::string graph_memory_text_;  // empty: what the budget leaves
   double memory_gib_ = 0.0;        // 0: default_memory_budget()
+  int threads_ = 0;
+  int regions_ = ExpansionOptions{}.regions;
   int near_radius_;
   bool shift_moves_;
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none

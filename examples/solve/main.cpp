@@ -52,7 +52,8 @@ void write_summary(const std::filesystem::path& folder, const examples::SolveCom
          << "schedule " << schedule.to_string() << ", solver "
          << to_string(command.run.solver.kind()) << "\n"
          << "reading the model: " << model.seconds << " s (not on the run clock)\n"
-         << run.memory_line() << "\n";
+         << run.memory_line() << "\n"
+         << run.threads_line() << "\n";
   examples::write_run_report(report, levels.reports(), run.summary, interrupts);
   report << "energy = sum of -ln(potential) over the factors; log10 of the unnormalised "
          << "probability: " << -run.summary.energy / std::log(10.0) << "\n";

@@ -125,7 +125,8 @@ void write_summary(const std::filesystem::path& out, const examples::StereoComma
          << examples::near_and_shift_moves_text(command.run.solver) << "\n"
          << "TSGO step 1: " << problem.seconds << " s on " << problem.threads
          << " threads (not on the run clock, same for every schedule)\n"
-         << stereo_run.run.memory_line() << "\n";
+         << stereo_run.run.memory_line() << "\n"
+         << stereo_run.run.threads_line() << "\n";
   examples::write_run_report(report, stereo_run.levels, stereo_run.run.summary, interrupts);
   if (!scene.gt_convention.empty()) report << "GT read as " << scene.gt_convention << "\n";
   if (!dataset_error.empty()) report << dataset_error << "\n";

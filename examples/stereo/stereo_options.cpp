@@ -60,9 +60,6 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
       .file("gt-right", &command.pair.gt_right,
             "right-view GT PNG, for a left-right occlusion mask")
       .file("mask", &command.pair.mask, "non-occluded mask PNG (255 = evaluate)")
-      .integer("threads", &command.tsgo.threads, {0, 1024},
-               "threads preparing the data (0: the machine's cores); the result is the same for "
-               "every count")
       .integer("downscale", &command.downscale, {1, 1024},
                "shrink images by this integer factor (GT divided by it)")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
@@ -94,6 +91,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   command.run = run.config();
+  command.tsgo.threads = run.threads();
   if (command.allow_non_refining) command.run.limits.level_transfer = LevelTransfer::majority;
   command.tsgo.smoothness =
       with_flag("--smoothness", [&] { return vision::stereo_smoothness_from_string(smoothness); });

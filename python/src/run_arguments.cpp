@@ -109,7 +109,7 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       for (const auto& [key, value] :
            option_items(options, owner,
                         {"order", "seed", "tolerance", "near_radius", "near_sweep_gain",
-                         "shift_moves", "near_levels", "maxflow"})) {
+                         "shift_moves", "near_levels", "maxflow", "regions", "threads"})) {
         const std::string name = option_name(key);
         if (set_move_option(expansion, key, value, name)) continue;
         if (key == "near_radius") {
@@ -118,6 +118,10 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
           expansion.near_sweep_gain = real_argument(value, name);
         } else if (key == "shift_moves") {
           expansion.shift_moves = flag_option(value, name);
+        } else if (key == "regions") {
+          expansion.regions = static_cast<int>(integer_argument(value, name, 1, 65535));
+        } else if (key == "threads") {
+          expansion.threads = static_cast<int>(integer_argument(value, name, 0, 1024));
         } else if (key == "near_levels") {
           levels = named_value(value, name, near_levels_from_string);
         } else {

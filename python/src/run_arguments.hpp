@@ -21,8 +21,8 @@ namespace c2f::python {
 
 /// The solver `method` names ('expansion', 'swap', 'lbp', 'icm') with `options` (None or a dict
 /// of that solver's option names: order, seed, tolerance, near_radius, near_sweep_gain,
-/// shift_moves, near_levels and maxflow for expansion; order, seed, tolerance and maxflow for
-/// swap; schedule and damping for lbp; order, seed and tolerance for icm); expansion's
+/// shift_moves, near_levels, maxflow, regions and threads for expansion; order, seed, tolerance and
+/// maxflow for swap; schedule and damping for lbp; order, seed and tolerance for icm); expansion's
 /// near_radius and shift_moves not named are `defaults`'. ValueError naming
 /// `method` or `options['name']` for an unknown name or value, TypeError for a value of the
 /// wrong type.

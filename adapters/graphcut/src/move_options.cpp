@@ -17,6 +17,8 @@ std::string ExpansionOptions::validate() const {
   if (near_radius < 0) return "near_radius must be >= 0";
   if (!std::isfinite(near_sweep_gain) || near_sweep_gain < 0.0)
     return "near_sweep_gain must be finite and >= 0";
+  if (regions < 1 || regions > 65535) return "regions must be in [1, 65535]";
+  if (threads < 0) return "threads must be >= 0";
   return {};
 }
 
@@ -30,6 +32,8 @@ std::optional<std::size_t> move_solver_bytes(const ProblemSize& size, GraphStora
 
 std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
                                                 const ProblemSize& size, GraphStorage storage) {
+  // With regions, the regions' solvers are as large together as one over every variable, and
+  // a sweep of whole moves over every variable frees them first (and they its graphs).
   const auto one = move_solver_bytes(size, storage);
   const bool second = options.near_radius > 0 || options.shift_moves;
   return one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;

@@ -1,6 +1,21 @@
 #include "c2f/run/run.hpp"
 
+#include <algorithm>
+
+#include "c2f/support/parallel_for.hpp"
+
 namespace c2f {
+
+namespace detail {
+
+unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
+  const auto* expansion = std::get_if<ExpansionOptions>(&options);
+  if (expansion == nullptr || regions < 2) return 1;
+  return static_cast<unsigned>(
+      std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
+}
+
+}  // namespace detail
 
 MemoryPlan plan_run(const PairwiseEnergy& energy, const RunConfig& config) {
   RunConfigError::throw_if(config.validate());

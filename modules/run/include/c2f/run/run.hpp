@@ -34,6 +34,21 @@ std::size_t kept_bytes_of(const Solver& solver) {
   }
 }
 
+/// The regions a solver's last binding made its moves on (region_count), 1 for one that has
+/// none.
+template <class Solver>
+std::size_t regions_of(const Solver& solver) {
+  if constexpr (requires { solver.region_count(); }) {
+    return solver.region_count();
+  } else {
+    return 1;
+  }
+}
+
+/// The threads a run of `options` solves `regions` regions on: half of them at once, at most
+/// ExpansionOptions::threads (resolved); 1 without regions.
+[[nodiscard]] unsigned solve_threads(const SolverOptions& options, std::size_t regions);
+
 }  // namespace detail
 
 /// The plan of a run of `config` on `energy` (MemoryPlan): the floor, the graph memory and the
@@ -65,6 +80,8 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   const auto solve = [&](auto&& solvers) {
     Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);
     report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
+    report.regions = detail::regions_of(detail::original_of(solvers));
+    report.solve_threads = detail::solve_threads(spec.original, report.regions);
     return summary;
   };
   report.summary = std::visit(

@@ -57,6 +57,10 @@ struct RunReport {
   /// The optional memory (kept move problems and recycled move graphs) the original problem's
   /// solver held at the end (within plan.problem_memory + plan.graph_memory).
   std::size_t optional_memory_used = 0;
+  /// The regions of the original problem's moves (ExpansionOptions::regions; 1: none, every
+  /// move over every variable) and the threads that solved them at once (1 without regions).
+  std::size_t regions = 1;
+  unsigned solve_threads = 1;
 
   /// "memory budget 5.9 GiB (a quarter of ...), recycled move graphs up to 2.1 GiB, kept move
   /// problems 12.0 MiB" (the second part for solvers that recycle, the third when problems are
@@ -66,6 +70,9 @@ struct RunReport {
   /// 380 MiB, recycled move graphs up to 2.1 GiB, kept move problems 12.0 MiB, 1.2 GiB used at
   /// the end".
   [[nodiscard]] std::string memory_report() const;
+  /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable, on
+  /// one thread" (the original problem's binding), as the tools' summaries write it.
+  [[nodiscard]] std::string threads_line() const;
 };
 
 }  // namespace c2f

@@ -86,6 +86,10 @@ class BinaryMoveSolver {
     graphs_.recycle(num_keys, memory_limit);
   }
 
+  /// Frees every graph (they are built again on the next solve); recycling goes on as
+  /// recycle() set it.
+  void drop_graphs() { graphs_.drop(); }
+
   /// Bytes of the graphs the keys own so far.
   [[nodiscard]] std::size_t recycled_bytes() const noexcept { return graphs_.owned_bytes(); }
   /// Graphs evicted to make room for others since recycle() (detail::MoveGraphs).

@@ -7,6 +7,9 @@
 // whole sweeps: see there and detail/near_moves.hpp). A sweep is one move per label; with
 // ExpansionOptions::shift_moves it begins with two shift moves, in which every variable may step
 // one label up (then down) at once (detail/shift_moves.hpp).
+// With ExpansionOptions::regions, moves are made region by region, the regions of one colour at
+// once on several threads (detail/region_moves.hpp), and a sweep of whole moves over every
+// variable follows whenever a sweep of region moves gains little.
 // Labels are cycled in the configured order, restarting at the first label on every bind()
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
 // level handed a labeling, or on the original problem after coarse levels, the moves that
@@ -34,6 +37,8 @@
 #include "c2f/adapters/graphcut/detail/expansion_problems.hpp"
 #include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
+#include "c2f/adapters/graphcut/detail/region_layout.hpp"
+#include "c2f/adapters/graphcut/detail/region_moves.hpp"
 #include "c2f/adapters/graphcut/detail/shift_moves.hpp"
 #include "c2f/adapters/graphcut/move_cycle.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
@@ -54,12 +59,15 @@ class ExpansionSolver {
   }
 
   /// Steps without a decrease that mean convergence on `energy` with these options: one sweep
-  /// (L moves, L + 2 with shift moves); with near moves (ExpansionOptions::near_radius) three
-  /// sweeps. Near and whole moves come in sweeps aligned with the label cycle's passes, and a
-  /// near sweep without decrease is always followed by a whole one; so three sweeps' steps
-  /// without decrease hold two complete sweeps, one of them a whole sweep that found nothing.
-  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const noexcept {
-    return (options_.near_radius > 0 ? 3 : 1) * steps_per_sweep(energy.num_labels());
+  /// (L moves, L + 2 with shift moves) when every sweep is a whole one; else K + 1 sweeps, K
+  /// being the kinds of sweep in use (near, region, whole). Sweeps are aligned with the label
+  /// cycle's passes, and a near or region sweep without decrease is always followed by the
+  /// next kind up, ending in a whole sweep; so K + 1 sweeps' steps without decrease hold K
+  /// complete sweeps, the last a whole sweep that found nothing.
+  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const {
+    const bool near = options_.near_radius > 0;
+    const std::size_t kinds = 1 + (near ? 1 : 0) + (near && regions_on(energy) ? 1 : 0);
+    return (kinds == 1 ? 1 : kinds + 1) * steps_per_sweep(energy.num_labels());
   }
 
   /// Starts from `start` (validated); fixes the move graphs' topology. Every label's move
@@ -67,9 +75,15 @@ class ExpansionSolver {
   /// graphs (keys: the labels, then shifts up and down) within options.graph_memory_limit.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     problems_.bind(energy, options_.problem_memory_limit);
-    state_.bind(energy, start, "ExpansionSolver::bind: start",
-                static_cast<std::size_t>(energy.num_labels()) + shift_steps(),
-                options_.graph_memory_limit);
+    const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
+    regions_ = {};
+    if (options_.regions > 1 && options_.near_radius > 0) {
+      regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys,
+                    options_.graph_memory_limit, options_.threads);
+    }
+    // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
+    // within the whole limit.
+    state_.bind(energy, start, "ExpansionSolver::bind: start", keys, options_.graph_memory_limit);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -80,7 +94,7 @@ class ExpansionSolver {
     last_ = {};
     if (options_.near_radius > 0) near_.bind(energy, options_.near_radius);
     sweep_steps_done_ = 0;
-    whole_sweep_ = options_.near_radius == 0;
+    sweep_ = first_sweep();
   }
 
   /// Frees what bind() built (move problems, recycled graphs, near-move graphs); the options
@@ -94,9 +108,18 @@ class ExpansionSolver {
       throw std::logic_error("ExpansionSolver::step: call bind() first");
     if (sweep_steps_done_ == 0) sweep_start_ = state_.value;
     if (sweep_steps_done_ < shift_steps()) {
-      shift_move(sweep_steps_done_ == 0 ? 1 : -1);
-    } else if (whole_sweep_) {
+      const int shift = sweep_steps_done_ == 0 ? 1 : -1;
+      if (sweep_ == Sweep::whole || !regions_.active()) {
+        shift_move(shift);
+      } else {
+        region_move(Move::shift, 0, shift);
+      }
+    } else if (sweep_ == Sweep::whole) {
       whole_move(cycle_.next());
+    } else if (sweep_ == Sweep::regions) {
+      region_move(Move::whole, cycle_.next(), 0);
+    } else if (regions_.active()) {
+      region_move(Move::near, cycle_.next(), 0);
     } else {
       near_move(cycle_.next());
     }
@@ -104,7 +127,6 @@ class ExpansionSolver {
       sweep_steps_done_ = 0;
       end_sweep();
     }
-    if (last_.improved) problems_.log_changes(moved_);
     return state_.value;
   }
 
@@ -115,7 +137,11 @@ class ExpansionSolver {
   /// The optional memory in use: the kept move problems (within options.problem_memory_limit)
   /// and the recycled move graphs (within options.graph_memory_limit).
   [[nodiscard]] std::size_t kept_bytes() const noexcept {
-    return problems_.memory_bytes() + state_.moves.recycled_bytes();
+    return problems_.memory_bytes() + state_.moves.recycled_bytes() + regions_.recycled_bytes();
+  }
+  /// The regions of this binding's moves (1: none, every move is over every variable).
+  [[nodiscard]] std::size_t region_count() const noexcept {
+    return regions_.active() ? regions_.count() : 1;
   }
 
  private:
@@ -126,16 +152,49 @@ class ExpansionSolver {
     return shift_steps() + static_cast<std::size_t>(num_labels);
   }
 
-  /// Chooses the next sweep's moves. With near moves: a near sweep that lowered the energy by
-  /// at most near_sweep_gain of it hands over to one sweep of whole moves, then near again.
+  /// The kinds of sweep: near moves (ExpansionOptions::near_radius; by regions when there are
+  /// regions), moves over every variable by regions, and whole moves over every variable.
+  enum class Sweep { near, regions, whole };
+  /// The kinds of move a region move makes.
+  enum class Move { whole, near, shift };
+
+  /// Whether moves on `energy` are made by regions (at least two in its layout).
+  [[nodiscard]] bool regions_on(const PairwiseEnergy& energy) const {
+    return options_.regions > 1 &&
+           detail::region_layout(energy, static_cast<std::size_t>(options_.regions)).count() >= 2;
+  }
+
+  /// The sweep a binding starts with, and returns to after each whole sweep. Without near
+  /// moves every sweep is a whole one: sweeps of region moves then cost more steps to
+  /// convergence than their threads save (docs/performance.md).
+  [[nodiscard]] Sweep first_sweep() const noexcept {
+    return options_.near_radius > 0 ? Sweep::near : Sweep::whole;
+  }
+
+  /// Chooses the next sweep's moves: a near or region sweep that lowered the energy by at most
+  /// near_sweep_gain of it hands over to the next kind up (near, regions, whole); a whole sweep
+  /// hands back to the first kind. Region and whole moves never hold their graphs at once.
   void end_sweep() {
-    if (options_.near_radius == 0) return;
-    if (whole_sweep_) {
-      whole_sweep_ = false;
-      return;
-    }
     const double gain = sweep_start_ - state_.value;
-    whole_sweep_ = gain <= options_.near_sweep_gain * std::max(1.0, std::abs(sweep_start_));
+    const bool stalled = gain <= options_.near_sweep_gain * std::max(1.0, std::abs(sweep_start_));
+    const Sweep before = sweep_;
+    switch (sweep_) {
+      case Sweep::near:
+        if (stalled) sweep_ = regions_.active() ? Sweep::regions : Sweep::whole;
+        break;
+      case Sweep::regions:
+        if (stalled) sweep_ = Sweep::whole;
+        break;
+      case Sweep::whole:
+        sweep_ = first_sweep();
+        break;
+    }
+    if (!regions_.active() || sweep_ == before) return;
+    if (sweep_ == Sweep::whole) {
+      regions_.drop_graphs();
+    } else if (before == Sweep::whole) {
+      state_.moves.drop_graphs();
+    }
   }
 
   /// The shift move by `shift` labels over every variable (detail/shift_moves.hpp).
@@ -152,7 +211,7 @@ class ExpansionSolver {
       state_.candidate[i] = moves ? shifted_[i] : labeling[i];
       if (moves) moved_.push_back(static_cast<VariableIndex>(i));
     }
-    state_.finish_move(last_, moved_.size(), options_.tolerance);
+    finish_move();
   }
 
   /// The move to alpha over every variable.
@@ -167,7 +226,7 @@ class ExpansionSolver {
       state_.candidate[i] = to_alpha ? alpha : labeling[i];
       if (to_alpha) moved_.push_back(static_cast<VariableIndex>(i));
     }
-    state_.finish_move(last_, moved_.size(), options_.tolerance);
+    finish_move();
   }
 
   /// The move to alpha over the variables near alpha (detail/near_moves.hpp), on a graph of
@@ -192,7 +251,57 @@ class ExpansionSolver {
       state_.candidate[free[k]] = alpha;
       moved_.push_back(free[k]);
     }
+    finish_move();
+  }
+
+  /// Ends a move over every variable or over the near ones: takes its candidate when it lowers
+  /// the energy, and logs what changed for the kept problems.
+  void finish_move() {
     state_.finish_move(last_, moved_.size(), options_.tolerance);
+    if (last_.improved) problems_.log_changes(moved_);
+  }
+
+  /// A move made by regions (detail/region_moves.hpp): to `alpha` over every variable
+  /// (Move::whole) or the near ones (Move::near), or by `shift` labels (Move::shift). Each
+  /// phase's problem is built from the labeling the phase before left; a near move's variables
+  /// are chosen once, from the labeling it begins with (each phase's variables keep their labels
+  /// until that phase).
+  void region_move(Move move, Label alpha, int shift) {
+    const PairwiseEnergy& energy = *state_.energy;
+    last_ = {};
+    last_.alpha = last_.beta = alpha;
+    last_.shift = shift;
+    last_.near = move == Move::near;
+    moved_.clear();
+    state_.candidate = state_.labeling;
+    if (move == Move::near) near_.select(alpha, state_.labeling);
+    const auto key = move == Move::shift
+                         ? static_cast<std::size_t>(energy.num_labels()) + (shift > 0 ? 0 : 1)
+                         : static_cast<std::size_t>(alpha);
+    for (int colour = 0; colour < 2; ++colour) {
+      const std::size_t before = moved_.size();
+      if (move == Move::near) {
+        regions_.near_phase(colour, alpha, near_, options_.tolerance, state_.labeling,
+                            state_.candidate, state_.value, moved_, last_);
+      } else {
+        detail::MoveProblem problem;
+        if (move == Move::whole) {
+          problems_.update(alpha, state_.labeling, problem.d, problem.p);
+          problem.proposal = [alpha](VariableIndex) { return alpha; };
+        } else {
+          shifted_.resize(state_.labeling.size());
+          detail::shift_problem(energy, state_.labeling, shift, shifted_, state_.d, state_.p);
+          problem.d = state_.d;
+          problem.p = state_.p;
+          problem.proposal = [this](VariableIndex v) { return shifted_[v]; };
+        }
+        regions_.phase(colour, problem, key, options_.tolerance, state_.labeling, state_.candidate,
+                       state_.value, moved_, last_);
+      }
+      problems_.log_changes(std::span<const VariableIndex>(moved_).subspan(before));
+    }
+    last_.changed = moved_.size();
+    last_.improved = !moved_.empty();
   }
 
   ExpansionOptions options_;
@@ -203,7 +312,9 @@ class ExpansionSolver {
   MoveStep last_;
   std::size_t sweep_steps_done_ = 0;  // steps of the current sweep so far
   double sweep_start_ = 0.0;          // the energy when it began
-  bool whole_sweep_ = true;           // it makes whole moves (else near moves)
+  Sweep sweep_ = Sweep::whole;        // the kind of the current sweep
+  // Region moves (options_.regions).
+  detail::RegionMoves<Backend> regions_;
   // Near moves (options_.near_radius > 0).
   detail::NearMoves near_;
   BinaryMoveSolver<Backend> near_solver_;

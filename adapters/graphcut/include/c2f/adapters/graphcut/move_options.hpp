@@ -61,6 +61,20 @@ struct ExpansionOptions : MoveOptions {
   /// solver then converges where neither kind of move helps. A sweep then has L + 2 steps
   /// (ExpansionSolver::sweep_steps).
   bool shift_moves = false;
+  /// Parallel near moves: with near_radius > 0, the variables are cut into at most this many
+  /// regions (about equal ranges of indices, at least 4096 variables each, every edge inside
+  /// one range or between adjacent ones: bands of rows on a grid; detail/region_layout.hpp),
+  /// and near and shift moves are made on the even regions at once, then on the odd ones, the
+  /// others held at their labels: an exact move per region, taken when it lowers the energy.
+  /// A near sweep that gains at most near_sweep_gain hands over to a sweep of moves over every
+  /// variable made by regions, and that one, when it gains as little, to a sweep of whole moves,
+  /// so convergence means what it means without regions (quiet_steps_to_converge). The layout
+  /// depends on the energy and this number only, so results do not depend on `threads`.
+  /// 1: no regions (every move on one thread). Without near moves it has no effect.
+  int regions = 16;
+  /// Threads solving a move's regions at once (0: the machine's cores). Results are the same
+  /// for every count.
+  int threads = 0;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;

@@ -43,7 +43,7 @@ class LevelBudgetSolver {
   double step() { return solver_.step(); }
   [[nodiscard]] double energy() const noexcept { return solver_.energy(); }
   [[nodiscard]] std::span<const Label> labeling() const noexcept { return solver_.labeling(); }
-  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const noexcept {
+  [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const {
     return solver_.quiet_steps_to_converge(energy);
   }
   [[nodiscard]] const auto& last_step() const noexcept { return solver_.last_step(); }

@@ -52,6 +52,13 @@ class MoveGraphs {
     evictions_ = 0;
   }
 
+  /// Frees every graph; keys may own graphs again as recycle() allowed.
+  void drop() {
+    const std::size_t keys = own_.size();
+    clear();
+    own_.resize(keys);
+  }
+
   /// Keys 0..num_keys-1 may own graphs while all owned graphs take at most memory_limit bytes.
   void recycle(std::size_t num_keys, std::size_t memory_limit) {
     own_.clear();

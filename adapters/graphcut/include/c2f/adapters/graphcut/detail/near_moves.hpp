@@ -1,7 +1,7 @@
 #pragma once
 // Internal to ExpansionSolver: the binary problem of an expansion move restricted to the
-// variables near its label (ExpansionOptions::near_radius). Every other variable keeps its label, so
-// its edges to free variables become unary terms of those variables, and the restricted
+// variables near its label (ExpansionOptions::near_radius). Every other variable keeps its label,
+// so its edges to free variables become unary terms of those variables, and the restricted
 // problem's minimum is the minimum of the whole move's problem over the labelings that keep the
 // held variables: an exact move on a smaller graph.
 
@@ -18,6 +18,49 @@
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f::detail {
+
+/// Marks a variable that is no node of a restricted problem (restricted_problem's `local`).
+inline constexpr std::uint32_t kHeld = 0xffffffffu;
+
+/// The binary problem of the move to alpha from x restricted to `nodes` (ascending): every
+/// other variable keeps its label, so its edges to nodes become unary terms of those nodes.
+/// local[v] is v's index in `nodes` for a node, kHeld for every other variable. Writes the
+/// problem in binary_move.hpp's form, nodes numbered as in `nodes`.
+inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence& incidence,
+                               Label alpha, std::span<const Label> x,
+                               std::span<const VariableIndex> nodes,
+                               std::span<const std::uint32_t> local, std::vector<double>& d,
+                               std::vector<double>& p, std::vector<FlowEdge>& pairs) {
+  const auto edges = energy.edges();
+  d.assign(nodes.size(), 0.0);
+  p.clear();
+  pairs.clear();
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const VariableIndex v = nodes[k];
+    d[k] += energy.unary(v, alpha) - energy.unary(v, x[v]);
+    for (const Incidence& inc : incidence.of(v)) {
+      const Edge& edge = edges[inc.edge];
+      const VariableIndex other = inc.other;
+      if (local[other] == kHeld) {
+        d[k] += inc.is_first ? energy.pairwise_cost(edge, alpha, x[other]) -
+                                   energy.pairwise_cost(edge, x[v], x[other])
+                             : energy.pairwise_cost(edge, x[other], alpha) -
+                                   energy.pairwise_cost(edge, x[other], x[v]);
+        continue;
+      }
+      if (!inc.is_first) continue;  // a pair between nodes, added from its u side
+      const Label xu = x[edge.u];
+      const Label xv = x[edge.v];
+      const auto u = static_cast<FlowNode>(local[edge.u]);
+      const auto w = static_cast<FlowNode>(local[edge.v]);
+      p.push_back(0.0);
+      pairs.push_back({u, w});
+      add_binary_term(d, p, p.size() - 1, u, w, energy.pairwise_cost(edge, xu, xv),
+                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
+                      energy.pairwise_cost(edge, alpha, alpha));
+    }
+  }
+}
 
 /// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
 /// lies within `radius` edges of a variable labelled alpha or of a variable whose cheapest
@@ -42,8 +85,16 @@ class NearMoves {
 
   /// Builds the restricted problem of the move to alpha from x.
   void build(Label alpha, std::span<const Label> x) {
-    const PairwiseEnergy& energy = *energy_;
-    const auto edges = energy.edges();
+    select(alpha, x);
+    // In index order, the unary table is read nearly sequentially.
+    std::sort(free_.begin(), free_.end());
+    for (std::size_t k = 0; k < free_.size(); ++k) local_[free_[k]] = static_cast<std::uint32_t>(k);
+    restricted_problem(*energy_, incidence_, alpha, x, free_, local_, d_, p_, pairs_);
+  }
+
+  /// Finds the free variables of the move to alpha from x (in no order in free()), without
+  /// building the problem: is_free() answers for each variable.
+  void select(Label alpha, std::span<const Label> x) {
     for (const VariableIndex v : free_) local_[v] = kHeld;
     for (const VariableIndex v : reached_) depth_[v] = kUnreached;
     free_.clear();
@@ -63,41 +114,14 @@ class NearMoves {
       if (depth_[v] >= radius_) continue;
       for (const Incidence& inc : incidence_.of(v)) reach(inc.other, depth_[v] + 1);
     }
-    // In index order, the unary table is read nearly sequentially.
-    std::sort(free_.begin(), free_.end());
-    for (std::size_t k = 0; k < free_.size(); ++k) local_[free_[k]] = static_cast<std::uint32_t>(k);
-    // The problem: unaries, edges between free variables as pairs, edges to held variables
-    // folded into the free end's unary.
-    d_.assign(free_.size(), 0.0);
-    p_.clear();
-    pairs_.clear();
-    for (std::size_t k = 0; k < free_.size(); ++k) {
-      const VariableIndex v = free_[k];
-      d_[k] += energy.unary(v, alpha) - energy.unary(v, x[v]);
-      for (const Incidence& inc : incidence_.of(v)) {
-        const Edge& edge = edges[inc.edge];
-        const VariableIndex other = inc.other;
-        if (local_[other] == kHeld) {
-          d_[k] += inc.is_first ? energy.pairwise_cost(edge, alpha, x[other]) -
-                                      energy.pairwise_cost(edge, x[v], x[other])
-                                : energy.pairwise_cost(edge, x[other], alpha) -
-                                      energy.pairwise_cost(edge, x[other], x[v]);
-          continue;
-        }
-        if (!inc.is_first) continue;  // a pair between free variables, added from its u side
-        const Label xu = x[edge.u];
-        const Label xv = x[edge.v];
-        const auto u = static_cast<FlowNode>(local_[edge.u]);
-        const auto w = static_cast<FlowNode>(local_[edge.v]);
-        p_.push_back(0.0);
-        pairs_.push_back({u, w});
-        add_binary_term(d_, p_, p_.size() - 1, u, w, energy.pairwise_cost(edge, xu, xv),
-                        energy.pairwise_cost(edge, xu, alpha),
-                        energy.pairwise_cost(edge, alpha, xv),
-                        energy.pairwise_cost(edge, alpha, alpha));
-      }
-    }
   }
+
+  /// Whether the last select() or build() freed v (reached, and not labelled alpha in the x
+  /// it was given).
+  [[nodiscard]] bool is_free(VariableIndex v, Label alpha, std::span<const Label> x) const {
+    return depth_[v] != kUnreached && x[v] != alpha;
+  }
+  [[nodiscard]] const EdgeIncidence& incidence() const noexcept { return incidence_; }
 
   [[nodiscard]] std::span<const VariableIndex> free() const noexcept { return free_; }
   [[nodiscard]] std::span<const FlowEdge> pairs() const noexcept { return pairs_; }
@@ -105,7 +129,6 @@ class NearMoves {
   [[nodiscard]] std::span<const double> p() const noexcept { return p_; }
 
  private:
-  static constexpr std::uint32_t kHeld = 0xffffffffu;
   static constexpr int kUnreached = -1;
 
   const PairwiseEnergy* energy_ = nullptr;
