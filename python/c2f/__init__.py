@@ -118,6 +118,8 @@ def solve(
 
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
           ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``,
+          ``regions`` (near moves by at most this many bands of rows at once, 16; 1: none),
+          ``threads`` (that solve them, 0: all cores; the result is the same for every count),
           ``near_levels`` ('original': near and shift moves on the original problem only, the
           default; 'all'), ``maxflow`` ('dynamic', ours with recycled graphs, the default;
           'boost'; 'kolmogorov' in builds with it);
@@ -197,13 +199,18 @@ def stereo(left: np.ndarray, right: np.ndarray, labels: int = 85,
     smoothness, truncation : str, float
         The TSGO pairwise term ('tsgo_step' or 'truncated_linear') and its truncation.
     threads : int, default 0
-        The data preparation's cores (0: all); the energy is the same for every count.
+        The cores of the data preparation and, with method 'expansion', of the solve
+        (``options['threads']`` unless given); 0: all. The result is the same for every count.
     **run_options
         ``solve``'s keywords (method, options, time_limit, callback, memory, ...); ``memory``
         (GiB, None: the default) holds the data preparation as well as the run.
     """
     energy = stereo_energy(left, right, labels, smoothness, truncation, threads,
                            run_options.get("memory"))
+    if run_options.get("method", "expansion") == "expansion":
+        options = dict(run_options.get("options") or {})
+        options.setdefault("threads", threads)
+        run_options = {**run_options, "options": options}
     return solve(energy, schedule, **{"defaults": "stereo", **run_options})
 
 

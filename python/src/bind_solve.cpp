@@ -102,22 +102,22 @@ py::dict solve(const ModelEnergy& model, const py::object& given_schedule,
   }
   auto run_levels = [&](auto& levels) {
     const ReleasedGil free;
-    return run(model.energy, levels, config, std::ref(record)).summary;
+    return run(model.energy, levels, config, std::ref(record));
   };
-  Summary summary;
+  RunReport report;
   if (py::isinstance<py::list>(schedule_object) || py::isinstance<py::tuple>(schedule_object)) {
     PartitionList levels = partition_list(py::list(schedule_object), model.energy.num_variables());
-    summary = run_levels(levels);
+    report = run_levels(levels);
   } else if (py::isinstance<py::str>(schedule_object)) {
     const Schedule schedule = parse_schedule(schedule_object.cast<std::string>(), model);
     ScheduleProvider levels = schedule_provider(schedule, model);
-    summary = run_levels(levels);
+    report = run_levels(levels);
   } else {
     throw py::type_error(
         "schedule: expected a schedule text ('flat', 'paper', 'cp:1,1 cp:2,1') or "
         "a list of partitions (integer arrays of group ids, coarsest first)");
   }
-  return record.result(summary, summary.report());
+  return record.result(report.summary, report.summary.report() + report.threads_line() + "\n");
 }
 
 /// A RunDefaults as a dict (c2f.defaults).

@@ -166,3 +166,28 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
         np.testing.assert_array_equal(result.labeling.reshape(-1), cli)
         schedule = defaults["grid_schedule" if grid else "general_schedule"]
         assert f"schedule {schedule}" in (out / "summary.txt").read_text()
+
+
+def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
+    # 160 x 110 pixels: near moves by 4 bands of rows (ExpansionOptions::regions), two of a
+    # colour at once.
+    energy = c2f.Energy.grid(rng.random((160, 110, 6)), c2f.Term.truncated_linear(2.0),
+                             weight=0.4)
+    runs = [c2f.solve(energy, "flat", options={"near_radius": 2, "shift_moves": True,
+                                                "threads": threads})
+            for threads in (1, 2, 3)]
+    assert "solve: moves by 4 regions on 1 thread" in runs[0].summary
+    assert "solve: moves by 4 regions on 2 threads" in runs[2].summary
+    for run in runs[1:]:
+        assert np.array_equal(run.labeling, runs[0].labeling)
+        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
+    assert runs[0].reason == "converged"
+    assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
+    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+    # One band: every move on one thread.
+    one = c2f.solve(energy, "flat", options={"near_radius": 2, "regions": 1})
+    assert "solve: every move over every variable on one thread" in one.summary
+    with pytest.raises(ValueError, match="regions"):
+        c2f.solve(energy, options={"regions": 0})
+    with pytest.raises(ValueError, match="threads"):
+        c2f.solve(energy, options={"threads": -1})

@@ -49,7 +49,7 @@ std::string RunReport::memory_report() const {
 }
 
 std::string RunReport::threads_line() const {
-  if (regions < 2) return "solve: every move over every variable, on one thread";
+  if (regions < 2) return "solve: every move over every variable on one thread";
   return "solve: moves by " + std::to_string(regions) + " regions on " +
          std::to_string(solve_threads) + (solve_threads == 1 ? " thread" : " threads");
 }

@@ -70,7 +70,7 @@ struct RunReport {
   /// 380 MiB, recycled move graphs up to 2.1 GiB, kept move problems 12.0 MiB, 1.2 GiB used at
   /// the end".
   [[nodiscard]] std::string memory_report() const;
-  /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable, on
+  /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable on
   /// one thread" (the original problem's binding), as the tools' summaries write it.
   [[nodiscard]] std::string threads_line() const;
 };

@@ -265,7 +265,9 @@ class ExpansionSolver {
   /// (Move::whole) or the near ones (Move::near), or by `shift` labels (Move::shift). Each
   /// phase's problem is built from the labeling the phase before left; a near move's variables
   /// are chosen once, from the labeling it begins with (each phase's variables keep their labels
-  /// until that phase).
+  /// until that phase). The move as a whole is then checked as every move is: its labeling's
+  /// exact energy must be lower (MoveState::accept_candidate_if_lower), else it is undone, so
+  /// energy() is always the energy of labeling().
   void region_move(Move move, Label alpha, int shift) {
     const PairwiseEnergy& energy = *state_.energy;
     last_ = {};
@@ -274,6 +276,8 @@ class ExpansionSolver {
     last_.near = move == Move::near;
     moved_.clear();
     state_.candidate = state_.labeling;
+    move_start_ = state_.labeling;
+    const double start_value = state_.value;
     if (move == Move::near) near_.select(alpha, state_.labeling);
     const auto key = move == Move::shift
                          ? static_cast<std::size_t>(energy.num_labels()) + (shift > 0 ? 0 : 1)
@@ -300,8 +304,18 @@ class ExpansionSolver {
       }
       problems_.log_changes(std::span<const VariableIndex>(moved_).subspan(before));
     }
-    last_.changed = moved_.size();
-    last_.improved = !moved_.empty();
+    // The regions' changes summed; the exact energy decides, as for a move on one graph.
+    state_.value = start_value;
+    state_.candidate.swap(state_.labeling);
+    state_.labeling = move_start_;
+    if (!moved_.empty() && state_.accept_candidate_if_lower(options_.tolerance)) {
+      last_.changed = moved_.size();
+      last_.improved = true;
+    } else {
+      state_.candidate = state_.labeling;
+      problems_.log_changes(moved_);  // back to where the move began
+      moved_.clear();
+    }
   }
 
   ExpansionOptions options_;
@@ -315,6 +329,7 @@ class ExpansionSolver {
   Sweep sweep_ = Sweep::whole;        // the kind of the current sweep
   // Region moves (options_.regions).
   detail::RegionMoves<Backend> regions_;
+  Labeling move_start_;  // the labeling a region move began with
   // Near moves (options_.near_radius > 0).
   detail::NearMoves near_;
   BinaryMoveSolver<Backend> near_solver_;

@@ -31,14 +31,15 @@ struct RegionLayout {
 /// than starting it costs.
 inline constexpr std::size_t kMinRegionVariables = 4096;
 
-/// The layout of at most `wanted` ranges of about equal size (and at least kMinRegionVariables
-/// variables each, the last range included) in which every edge joins the same or adjacent
-/// ranges. A range extends at least as far as the edges of the range before it reach, so an
-/// energy whose edges join far-apart indices gets fewer ranges than wanted, down to one.
-[[nodiscard]] inline RegionLayout region_layout(const PairwiseEnergy& energy, std::size_t wanted) {
+/// The layout of at most `wanted` ranges of about equal size, at least min_variables each (the
+/// last one at least half the others), in which every edge joins the same or adjacent ranges.
+/// A range extends at least as far as the edges of the range before it reach, so an energy
+/// whose edges join far-apart indices gets fewer ranges than wanted, down to one.
+[[nodiscard]] inline RegionLayout region_layout(const PairwiseEnergy& energy, std::size_t wanted,
+                                                std::size_t min_variables = kMinRegionVariables) {
   const std::size_t n = energy.num_variables();
   RegionLayout layout;
-  wanted = std::min<std::size_t>({wanted, n / kMinRegionVariables, 0xffff});
+  wanted = std::min<std::size_t>({wanted, n / std::max<std::size_t>(min_variables, 1), 0xffff});
   if (wanted >= 2) {
     // reach[i]: the largest index that a variable at or before i is joined to.
     std::vector<std::size_t> reach(n);

@@ -47,14 +47,16 @@ struct MoveProblem {
 template <MaxFlow Backend>
 class RegionMoves {
  public:
-  /// Lays out at most `wanted` regions of `energy` (region_layout); the moves over every
+  /// Lays out at most `wanted` regions of `energy` of at least min_variables each
+  /// (region_layout); the moves over every
   /// variable (whole and shift moves, keys 0..num_keys-1) recycle the regions' graphs within
   /// graph_memory_limit split evenly between the regions. `threads` as for_each_region.
   void bind(const PairwiseEnergy& energy, std::size_t wanted, std::size_t num_keys,
-            std::size_t graph_memory_limit, int threads) {
+            std::size_t graph_memory_limit, int threads,
+            std::size_t min_variables = kMinRegionVariables) {
     energy_ = &energy;
     threads_ = threads;
-    layout_ = region_layout(energy, wanted);
+    layout_ = region_layout(energy, wanted, min_variables);
     regions_ = std::vector<Region>(layout_.count());
     if (!active()) return;
     incidence_ = EdgeIncidence(energy);
@@ -69,6 +71,7 @@ class RegionMoves {
   /// Whether there are at least two regions (else region moves are not made).
   [[nodiscard]] bool active() const noexcept { return layout_.count() >= 2; }
   [[nodiscard]] std::size_t count() const noexcept { return layout_.count(); }
+  [[nodiscard]] const RegionLayout& layout() const noexcept { return layout_; }
   /// Bytes of the regions' recycled graphs.
   [[nodiscard]] std::size_t recycled_bytes() const noexcept {
     std::size_t bytes = 0;
