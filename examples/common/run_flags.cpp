@@ -33,7 +33,7 @@ void RunFlags::declare(ToolOptions& options) {
                "least 4096 variables each) and make near and shift moves on the even bands at "
                "once, then on the odd ones, on --threads threads; when a sweep gains at most 1e-4 "
                "of the energy, a sweep of band moves over every variable, then one of whole moves "
-               "(convergence: four sweeps without decrease). 1: every move on one thread")
+               "(convergence: four sweeps without decrease; e.g. 16). 1: every move on one thread")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "

@@ -118,7 +118,8 @@ def solve(
 
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
           ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``,
-          ``regions`` (near moves by at most this many bands of rows at once, 16; 1: none),
+          ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
+          16; 1, the default: none),
           ``threads`` (that solve them, 0: all cores; the result is the same for every count),
           ``near_levels`` ('original': near and shift moves on the original problem only, the
           default; 'all'), ``maxflow`` ('dynamic', ours with recycled graphs, the default;

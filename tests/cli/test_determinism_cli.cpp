@@ -152,7 +152,7 @@ TEST_CASE("c2f-stereo writes the same bytes on one thread and on several",
   c2f::test::write_synthetic_pair(big, 160, 120, 2, 12, 7);
   const std::string big_inputs = (big / "left.png").string() + " " + (big / "right.png").string() +
                                  " --gt " + (big / "gt.png").string() +
-                                 " --gt-divisor 4 --labels 16";
+                                 " --gt-divisor 4 --labels 16 --regions 16";
   for (const std::string schedule : {"flat", "aggregated"}) {
     check_two_runs_agree(C2F_STEREO_BINARY, big_inputs + " --schedule " + schedule, big / schedule,
                          {"--threads 1", "--threads 3"});

@@ -180,6 +180,7 @@ TEST_CASE("expansion with regions gives the same bits on 1, 2 and 3 threads and 
     ExpansionOptions options;
     options.near_radius = 2;
     options.shift_moves = true;
+    options.regions = 16;
     options.threads = threads;
     ExpansionSolver<> solver(options);
     solver.bind(energy, start);
@@ -214,7 +215,8 @@ TEST_CASE("regions and threads are validated", "[expansion][regions][validation]
   options.regions = 16;
   options.threads = -1;
   CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("threads"));
-  // Without near moves, or with one region, every move is over every variable.
+  // Without near moves, with one region (the default) or with a layout of one, every move is
+  // over every variable.
   Rng rng(5);
   const PairwiseEnergy energy = random_grid_energy(rng, 130, 100, 3);
   ExpansionSolver<> whole;
@@ -224,6 +226,7 @@ TEST_CASE("regions and threads are validated", "[expansion][regions][validation]
   options.threads = 0;
   options.near_radius = 1;
   options.regions = 1;
+  CHECK(ExpansionOptions{}.regions == 1);
   ExpansionSolver<> one(options);
   one.bind(energy, random_labeling(rng, energy.num_variables(), 3));
   CHECK(one.region_count() == 1);

@@ -7,9 +7,10 @@
 // whole sweeps: see there and detail/near_moves.hpp). A sweep is one move per label; with
 // ExpansionOptions::shift_moves it begins with two shift moves, in which every variable may step
 // one label up (then down) at once (detail/shift_moves.hpp).
-// With ExpansionOptions::regions, moves are made region by region, the regions of one colour at
-// once on several threads (detail/region_moves.hpp), and a sweep of whole moves over every
-// variable follows whenever a sweep of region moves gains little.
+// With ExpansionOptions::regions and near moves, near and shift moves are made region by region,
+// the regions of one colour at once on several threads (detail/region_moves.hpp); a near sweep
+// that gains little hands over to a sweep of region moves over every variable, and that one to
+// a sweep of whole moves.
 // Labels are cycled in the configured order, restarting at the first label on every bind()
 // (VisitOrder::frequency: the labels the start labeling uses most first, so that on a coarse
 // level handed a labeling, or on the original problem after coarse levels, the moves that

@@ -70,8 +70,11 @@ struct ExpansionOptions : MoveOptions {
   /// variable made by regions, and that one, when it gains as little, to a sweep of whole moves,
   /// so convergence means what it means without regions (quiet_steps_to_converge). The layout
   /// depends on the energy and this number only, so results do not depend on `threads`.
-  /// 1: no regions (every move on one thread). Without near moves it has no effect.
-  int regions = 16;
+  /// 1 (the default): no regions, every move on one thread. Without near moves it has no
+  /// effect. 16 regions on 2 threads measured 1.20x faster to converge on Teddy but 0.77-1.05x
+  /// on the aside 2014 Q and KITTI scenes (more sweeps to converge), so it is not the default
+  /// (docs/performance.md, "The solve").
+  int regions = 1;
   /// Threads solving a move's regions at once (0: the machine's cores). Results are the same
   /// for every count.
   int threads = 0;
