@@ -121,3 +121,31 @@ TEST_CASE("near moves are validated and belong to expansion", "[expansion][near]
   Rng rng(3);
   CHECK(ExpansionSolver<>().quiet_steps_to_converge(random_grid_energy(rng, 3, 2, 7)) == 7);
 }
+
+TEST_CASE("expansion with near moves recycles no move graphs", "[expansion][near][memory]") {
+  Rng rng(8);
+  const PairwiseEnergy energy = random_grid_energy(rng, 12, 10, 4);
+  const Labeling start = random_labeling(rng, energy.num_variables(), 4);
+  ExpansionOptions near;
+  near.near_radius = 2;
+  near.near_sweep_gain = 1.0;  // every near sweep hands over to a whole sweep
+  ExpansionOptions whole;
+  CHECK(recycled_graph_limit(near) == 0);
+  CHECK(recycled_graph_limit(whole) == whole.graph_memory_limit);
+  const ProblemSize size = problem_size(energy);
+  CHECK(wanted_graph_bytes(near, size, GraphStorage::arrays) == 0);
+  CHECK(wanted_graph_bytes(whole, size, GraphStorage::arrays) > 0);
+  // Whole moves recycle each label's graph from its second move on; near runs recycle none.
+  const auto recycled_steps = [&](const ExpansionOptions& options) {
+    ExpansionSolver<> solver(options);
+    solver.bind(energy, start);
+    int recycled = 0;
+    for (int step = 0; step < 6 * 4; ++step) {
+      solver.step();
+      recycled += solver.last_step().recycled;
+    }
+    return recycled;
+  };
+  CHECK(recycled_steps(whole) > 0);
+  CHECK(recycled_steps(near) == 0);
+}

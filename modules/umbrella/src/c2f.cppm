@@ -154,6 +154,7 @@ using c2f::provided_partition_t;
 using c2f::read_uai;
 using c2f::read_uai_file;
 using c2f::read_uai_mpe;
+using c2f::recycled_graph_limit;
 using c2f::recycles_move_graphs;
 using c2f::reduce;
 using c2f::ReducibleEnergy;

@@ -77,14 +77,15 @@ class ExpansionSolver {
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     problems_.bind(energy, options_.problem_memory_limit);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
+    const std::size_t graph_limit = recycled_graph_limit(options_);
     regions_ = {};
     if (options_.regions > 1 && options_.near_radius > 0) {
-      regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys,
-                    options_.graph_memory_limit, options_.threads);
+      regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys, graph_limit,
+                    options_.threads);
     }
     // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
     // within the whole limit.
-    state_.bind(energy, start, "ExpansionSolver::bind: start", keys, options_.graph_memory_limit);
+    state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {

@@ -25,8 +25,9 @@ struct MoveOptions {
   /// default DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move
   /// graphs from its second move on while they fit (binary_move.hpp), so a repeated move costs
   /// in proportion to what changed since; moves beyond the limit share one graph. 0 turns
-  /// recycling off. With exact arithmetic results do not depend on it; with rounding, ties
-  /// between minimum cuts may break differently.
+  /// recycling off; expansion with near moves recycles none (recycled_graph_limit). With exact
+  /// arithmetic results do not depend on it; with rounding, ties between minimum cuts may break
+  /// differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
 
   /// Empty when usable, else a message naming the field.
@@ -84,6 +85,15 @@ struct ExpansionOptions : MoveOptions {
   bool operator==(const ExpansionOptions&) const = default;
 };
 
+/// The bytes alpha-expansion with `options` may give recycled move graphs: graph_memory_limit,
+/// or 0 with near moves. Near moves run on graphs of their own, and the moves over every
+/// variable that would recycle come only in the rare whole sweeps (and the two shift moves of
+/// a sweep), so a label's copied graph is reused once or twice and the copies cost more than
+/// they save: on Teddy (flat, near radius 5, shift moves) 15.8-16.1 s with no recycled graphs,
+/// 17.0-17.2 s with 0.3 GiB of them, 18.4 s with all; with whole moves only, recycling all
+/// graphs was the faster (15.2 s against 18.0-19.8 s).
+[[nodiscard]] std::size_t recycled_graph_limit(const ExpansionOptions& options) noexcept;
+
 /// How a max-flow backend stores its graphs, for the memory estimates below: in flat arrays
 /// (ours, Kolmogorov's) or in adjacency lists, counted at twice the bytes (Boost Graph's).
 enum class GraphStorage { arrays, adjacency_lists };
@@ -113,8 +123,8 @@ enum class GraphStorage { arrays, adjacency_lists };
                                                             const ProblemSize& size);
 
 /// The recycled move graphs alpha-expansion would keep on a problem of `size` if it had no
-/// limit: one per label, each a binary-move solver's size. std::nullopt when the count
-/// overflows.
+/// limit: one per label, each a binary-move solver's size; none with near moves
+/// (recycled_graph_limit). std::nullopt when the count overflows.
 [[nodiscard]] std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& options,
                                                             const ProblemSize& size,
                                                             GraphStorage storage);
