@@ -121,7 +121,6 @@ class NearMoves {
   [[nodiscard]] bool is_free(VariableIndex v, Label alpha, std::span<const Label> x) const {
     return depth_[v] != kUnreached && x[v] != alpha;
   }
-  [[nodiscard]] const EdgeIncidence& incidence() const noexcept { return incidence_; }
 
   [[nodiscard]] std::span<const VariableIndex> free() const noexcept { return free_; }
   [[nodiscard]] std::span<const FlowEdge> pairs() const noexcept { return pairs_; }

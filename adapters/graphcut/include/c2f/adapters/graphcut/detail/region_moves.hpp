@@ -48,9 +48,9 @@ template <MaxFlow Backend>
 class RegionMoves {
  public:
   /// Lays out at most `wanted` regions of `energy` of at least min_variables each
-  /// (region_layout); the moves over every
-  /// variable (whole and shift moves, keys 0..num_keys-1) recycle the regions' graphs within
-  /// graph_memory_limit split evenly between the regions. `threads` as for_each_region.
+  /// (region_layout); the moves over every variable (whole and shift moves, keys
+  /// 0..num_keys-1) recycle the regions' graphs within graph_memory_limit split evenly
+  /// between the regions. `threads` as for_each_region.
   void bind(const PairwiseEnergy& energy, std::size_t wanted, std::size_t num_keys,
             std::size_t graph_memory_limit, int threads,
             std::size_t min_variables = kMinRegionVariables) {
