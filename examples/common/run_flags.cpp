@@ -97,6 +97,8 @@ SolverSpec RunFlags::solver_spec() const {
     throw std::invalid_argument("--regions with --solver " + solver_ +
                                 ": region moves are expansion moves; solver '" + solver_ +
                                 "' has none");
+  if (regions_ > 1 && near_radius_ == 0)
+    throw std::invalid_argument("--regions: has no effect without --near-radius");
 
   SolverSpec spec;
   spec.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });

@@ -128,6 +128,8 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
           spec.maxflow = named_value(value, name, maxflow_kind_from_string);
         }
       }
+      if (expansion.regions > 1 && expansion.near_radius == 0)
+        throw py::value_error("options['regions']: has no effect without near_radius");
       return expansion_spec(expansion, levels, spec.maxflow);
     }
     case SolverKind::swap: {

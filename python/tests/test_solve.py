@@ -189,5 +189,7 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     assert "solve: every move over every variable on one thread" in one.summary
     with pytest.raises(ValueError, match="regions"):
         c2f.solve(energy, options={"regions": 0})
+    with pytest.raises(ValueError, match="no effect without near_radius"):
+        c2f.solve(energy, options={"regions": 16})
     with pytest.raises(ValueError, match="threads"):
         c2f.solve(energy, options={"threads": -1})

@@ -131,6 +131,9 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
             "--shift-moves or --label-order with --solver icm: shift moves are made by expansion"},
            {grid + out + " --near-levels all",
             "--near-levels: has no effect without --near-radius or --shift-moves"},
+           {grid + out + " --regions 16", "--regions: has no effect without --near-radius"},
+           {grid + out + " --solver swap --regions 4",
+            "--regions with --solver swap: region moves are expansion moves"},
            {grid + out + " --time-limit nan", "--time-limit: expected a finite number"},
            {(dir / "huge.uai").string() + out + " --memory 0.5",
             "huge.uai (512 variables x 1048576 labels, 0 factors) needs 4.0 GiB, more than the "
