@@ -307,9 +307,9 @@ class ExpansionSolver {
       problems_.log_changes(std::span<const VariableIndex>(moved_).subspan(before));
     }
     // The regions' changes summed; the exact energy decides, as for a move on one graph.
+    // The candidate already holds the moved labeling; the labeling goes back to the start.
     state_.value = start_value;
-    state_.candidate.swap(state_.labeling);
-    state_.labeling = move_start_;
+    state_.labeling.swap(move_start_);
     if (!moved_.empty() && state_.accept_candidate_if_lower(options_.tolerance)) {
       last_.changed = moved_.size();
       last_.improved = true;
