@@ -180,37 +180,28 @@ def term_of(kind: str, labels: int):
 
 def solve_pair(energy, truth: Optional[np.ndarray], time_limit: float) -> Outcome:
     """Flat with the defaults' moves, then the defaults, on one clock. With a truth, the error
-    of every step (pixels more than one label from it) is taken in the run's callback, whose
-    time is then taken off the run's clock: a coarse-to-fine run has more steps, and its
-    callbacks would otherwise weigh on it more."""
+    of every step (pixels more than one label from it) is taken in the run's callback, which
+    the run clock does not count."""
     def run(schedule):
         errors: List[float] = []
-        spent: List[float] = []
 
         def record(event):
-            started = time.perf_counter()
             labeling = event["labeling"]
             errors.append(float(np.mean(np.abs(labeling.reshape(truth.shape) - truth) > 1)))
-            spent.append(time.perf_counter() - started)
 
         result = c2f.solve(energy, schedule, time_limit=time_limit,
                            callback=record if truth is not None else None)
-        times = np.asarray(result.trace["time"], dtype=float)
-        seconds = result.seconds
-        if truth is not None:
-            if len(spent) != len(times):
-                raise SystemExit(f"suite: {len(spent)} callbacks for {len(times)} steps")
-            before = np.concatenate([[0.0], np.cumsum(spent)[:-1]])  # callbacks of earlier steps
-            times = times - before
-            seconds -= float(np.sum(spent))
-        trace = Trace(times, np.asarray(result.trace["energy"], dtype=float),
+        trace = Trace(np.asarray(result.trace["time"], dtype=float),
+                      np.asarray(result.trace["energy"], dtype=float),
                       np.asarray(errors) if truth is not None else None)
-        return result, seconds, trace
+        if trace.errors is not None and len(trace.errors) != len(trace.times):
+            raise SystemExit(f"suite: {len(trace.errors)} callbacks for {len(trace.times)} steps")
+        return result, trace
 
-    flat, flat_seconds, flat_trace = run("flat")
-    c2f_result, c2f_seconds, c2f_trace = run(None)
+    flat, flat_trace = run("flat")
+    c2f_result, c2f_trace = run(None)
     return Outcome(energy.num_variables, energy.num_labels, flat_trace, c2f_trace,
-                   flat_seconds, flat.energy, flat.reason, c2f_seconds, c2f_result.energy,
+                   flat.seconds, flat.energy, flat.reason, c2f_result.seconds, c2f_result.energy,
                    c2f_result.reason)
 
 
