@@ -39,11 +39,13 @@ void RunFlags::declare(ToolOptions& options) {
                "only the variables within r edges of that label or of a pixel whose cheapest "
                "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
                "most 1e-4 of the energy (convergence: three sweeps without decrease)")
-      .on_off("shift-moves", &shift_moves_,
-              "expansion: every sweep begins with two moves in which every variable may step one "
-              "label up, then down, at once (moves regions that are off by one label, e.g. one "
-              "disparity; convergence: no expansion or shift move helps); --shift-moves=off "
-              "makes none")
+      .on_off_auto("shift-moves", &shift_moves_,
+                   "expansion: every sweep begins with two moves in which every variable may step "
+                   "one label up, then down, at once (moves regions that are off by one label, "
+                   "e.g. one disparity; convergence: no expansion or shift move helps); "
+                   "--shift-moves=off makes none; auto makes them only on an energy where some "
+                   "expansion move is not submodular (a term that is no metric, e.g. truncated "
+                   "quadratic or TSGO's step)")
       .text("near-levels", &near_levels_,
             "where --near-radius and --shift-moves apply: original (the default: the original "
             "problem only; coarse levels make whole moves, the faster coarse-to-fine run, "
@@ -54,8 +56,11 @@ void RunFlags::declare(ToolOptions& options) {
             "starts)")
       .real("time-limit", &time_limit_, kTimeLimitRange, "seconds on the run clock (0: none)")
       .integer("max-steps", &max_steps_, {0, kMaxSteps}, "solver steps in the whole run (0: none)")
-      .integer("plateau", &plateau_, {1, kMaxSteps},
-               "refine after this many steps without decrease")
+      .text("plateau", &plateau_,
+            "refine a coarse level after this many steps without decrease; rate: after the "
+            "defaults' number of such steps, or once its energy decrease per second over a sweep "
+            "falls below what the original problem is expected to give (its first sweep's rate "
+            "times its size over the original problem's)")
       .real("plateau-tolerance", &plateau_tolerance_, {0.0, 1.0, false, true},
             "on coarse levels, a decrease over the --plateau steps counts only when larger than "
             "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
@@ -74,7 +79,7 @@ SolverSpec RunFlags::solver_spec() const {
       near_levels_.empty()
           ? NearLevels::original
           : with_flag("--near-levels", [&] { return near_levels_from_string(near_levels_); });
-  if (!near_levels_.empty() && near_radius_ == 0 && !shift_moves_)
+  if (!near_levels_.empty() && near_radius_ == 0 && shift_moves_ == "off")
     throw std::invalid_argument(
         "--near-levels: has no effect without --near-radius or --shift-moves");
   // The flags that may have asked for what the solver lacks, e.g. "--near-radius or
@@ -82,7 +87,7 @@ SolverSpec RunFlags::solver_spec() const {
   // Near and shift moves are expansion's: other solvers leave the defaults aside, and refuse
   // values that differ from them.
   const bool near_radius_given = near_radius_ != defaults_.near_radius;
-  const bool shift_moves_given = shift_moves_ != defaults_.shift_moves;
+  const bool shift_moves_given = shift_moves_ != shift_moves_value(defaults_);
   const auto refuse = [&](const std::string& problem) {
     std::string flags = near_radius_given ? "--near-radius" : "";
     if (shift_moves_given) flags += flags.empty() ? "--shift-moves" : ", --shift-moves";
@@ -91,7 +96,7 @@ SolverSpec RunFlags::solver_spec() const {
   };
   if (kind != SolverKind::expansion && near_radius_ != 0 && near_radius_given)
     refuse("near moves are expansion moves; solver '" + solver_ + "' has none");
-  if (kind != SolverKind::expansion && shift_moves_ && shift_moves_given)
+  if (kind != SolverKind::expansion && shift_moves_ != "off" && shift_moves_given)
     refuse("shift moves are made by expansion; solver '" + solver_ + "' has none");
   if (kind != SolverKind::expansion && regions_ != ExpansionOptions{}.regions)
     throw std::invalid_argument("--regions with --solver " + solver_ +
@@ -112,7 +117,8 @@ SolverSpec RunFlags::solver_spec() const {
       ExpansionOptions options;
       options.order = order;
       options.near_radius = near_radius_;
-      options.shift_moves = shift_moves_;
+      options.shift_moves = shift_moves_ == "on";
+      options.shift_moves_unless_submodular = shift_moves_ == "auto";
       options.regions = regions_;
       options.threads = threads_;
       spec = expansion_spec(options, levels, spec.maxflow);
@@ -146,7 +152,18 @@ SolverSpec RunFlags::solver_spec() const {
 
 Options RunFlags::limits() const {
   Options options;
-  options.plateau_steps = {plateau_};
+  if (plateau_ == "rate") {
+    options.plateau_steps = {defaults_.plateau_steps};
+  } else {
+    const IntegerRange range{1, kMaxSteps};
+    try {
+      options.plateau_steps = {
+          static_cast<int>(parse_integer_option("--plateau", plateau_, range))};
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument("--plateau: expected " + describe(range) + " or rate, got '" +
+                                  plateau_ + "'");
+    }
+  }
   options.plateau_tolerance = plateau_tolerance_;
   options.plateau_steps_at_original = final_plateau_;
   options.time_limit_seconds = time_limit_;
@@ -158,6 +175,7 @@ RunConfig RunFlags::config() const {
   RunConfig config;
   config.solver = solver_spec();
   config.limits = limits();
+  config.progress_rate = plateau_ == "rate";
   config.memory = memory_gib_ == 0.0
                       ? default_memory_budget()
                       : memory_budget_of_gib(memory_gib_, "--memory " + format_real(memory_gib_));

@@ -19,8 +19,8 @@ class RunFlags {
   explicit RunFlags(const RunDefaults& defaults)
       : defaults_(defaults),
         near_radius_(defaults.near_radius),
-        shift_moves_(defaults.shift_moves),
-        plateau_(defaults.plateau_steps),
+        shift_moves_(shift_moves_value(defaults)),
+        plateau_(defaults.progress_rate ? "rate" : std::to_string(defaults.plateau_steps)),
         plateau_tolerance_(defaults.plateau_tolerance) {}
 
   /// Declares the fifteen options in `options` (this object receives their values, so it
@@ -36,6 +36,11 @@ class RunFlags {
   [[nodiscard]] int threads() const noexcept { return threads_; }
 
  private:
+  /// --shift-moves as `defaults` set it: on, auto (shift_moves_unless_submodular) or off.
+  [[nodiscard]] static std::string shift_moves_value(const RunDefaults& defaults) {
+    if (defaults.shift_moves) return "on";
+    return defaults.shift_moves_unless_submodular ? "auto" : "off";
+  }
   [[nodiscard]] SolverSpec solver_spec() const;
   [[nodiscard]] Options limits() const;
 
@@ -47,10 +52,10 @@ class RunFlags {
   int threads_ = 0;
   int regions_ = ExpansionOptions{}.regions;
   int near_radius_;
-  bool shift_moves_;
+  std::string shift_moves_;  // on, off or auto
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none
   long max_steps_ = 0;       // steps in the whole run, 0: none
-  int plateau_;              // steps without decrease that end a coarse level
+  std::string plateau_;      // steps without decrease that end a coarse level, or rate
   double plateau_tolerance_;
   int final_plateau_ = 0;  // on the original problem; 0: the solver's own convergence
 };

@@ -156,17 +156,15 @@ ToolOptions& ToolOptions::flag(const char* name, bool* target, const char* help)
   return *this;
 }
 
-ToolOptions& ToolOptions::on_off(const char* name, bool* target, const char* help) {
+ToolOptions& ToolOptions::on_off_auto(const char* name, std::string* target, const char* help) {
   const std::string option = option_text(name);
-  auto* value = po::value<std::string>()
-                    ->implicit_value("on")
-                    ->default_value(*target ? "on" : "off")
-                    ->notifier([option, target](const std::string& text) {
-                      if (text != "on" && text != "off")
-                        throw std::invalid_argument(option + ": expected on or off (as " + option +
-                                                    "=off), got '" + text + "'");
-                      *target = text == "on";
-                    });
+  auto* value = po::value<std::string>()->implicit_value("on")->default_value(*target)->notifier(
+      [option, target](const std::string& text) {
+        if (text != "on" && text != "off" && text != "auto")
+          throw std::invalid_argument(option + ": expected on, off or auto (as " + option +
+                                      "=off), got '" + text + "'");
+        *target = text;
+      });
   visible_.add_options()(name, value, help);
   return *this;
 }

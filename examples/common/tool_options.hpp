@@ -48,9 +48,9 @@ class ToolOptions {
 
   /// A switch without a value.
   ToolOptions& flag(const char* name, bool* target, const char* help);
-  /// A switch with a default of its own: `--name` or `--name=on` sets it, `--name=off` clears it
-  /// (--help shows the default as on or off).
-  ToolOptions& on_off(const char* name, bool* target, const char* help);
+  /// A three-way switch with a default of its own: `--name` or `--name=on`, `--name=off`,
+  /// `--name=auto` (--help shows the default).
+  ToolOptions& on_off_auto(const char* name, std::string* target, const char* help);
   /// Free text (a schedule, a name the tool checks itself).
   ToolOptions& text(const char* name, std::string* target, const char* help);
   /// A path that must name an existing regular file when given.

@@ -86,7 +86,7 @@ def solve(
     options: Optional[Dict[str, Any]] = None,
     time_limit: Optional[float] = None,
     max_steps: Optional[int] = None,
-    plateau: Optional[int] = None,
+    plateau: Union[None, int, str] = None,
     plateau_tolerance: Optional[float] = None,
     start: Union[str, np.ndarray] = "unary_argmin",
     callback: Optional[Callback] = None,
@@ -117,8 +117,9 @@ def solve(
         The method's own options (unknown names are refused):
 
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
-          ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``,
-          ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
+          ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``
+          (True, False, or 'auto': only on an energy where some expansion move is not
+          submodular, e.g. truncated quadratic; the pairwise defaults' choice), ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
           16; 1, the default: none),
           ``threads`` (that solve them, 0: all cores; the result is the same for every count),
           ``near_levels`` ('original': near and shift moves on the original problem only, the
@@ -131,10 +132,12 @@ def solve(
         Stop once the run clock passes this many seconds (None: no limit).
     max_steps : int, optional
         Stop after this many solver steps over all levels (None: no limit).
-    plateau : int, optional
+    plateau : int or 'rate', optional
         A coarse level is refined after this many steps without a decrease (the original
-        problem ends where the solver has converged: one sweep of its moves). None: the
-        defaults' (4).
+        problem ends where the solver has converged: one sweep of its moves). 'rate': also
+        once its energy decrease per second over a sweep falls below its first sweep's times
+        its size over the original problem's, what the original problem is expected to give
+        (the driver's ``progress_rate``). None: the defaults' (4 steps).
     plateau_tolerance : float, optional
         On coarse levels, decreases below this fraction of abs(E) do not count. None: the
         defaults'.

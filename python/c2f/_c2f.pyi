@@ -93,7 +93,7 @@ def _solve(
     options: Optional[Dict[str, Any]],
     time_limit: Optional[float],
     max_steps: Optional[int],
-    plateau: Optional[int],
+    plateau: Union[None, int, str],
     plateau_tolerance: Optional[float],
     start: Union[str, npt.ArrayLike],
     callback: Optional[Callable[[Dict[str, Any]], Optional[bool]]],

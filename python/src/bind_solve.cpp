@@ -49,6 +49,14 @@ RunDefaults named_defaults(const std::string& name) {
   throw py::value_error("defaults: expected 'pairwise' or 'stereo', got '" + name + "'");
 }
 
+/// Whether c2f.solve's `plateau` is 'rate' (any other text is refused by name).
+bool progress_rate_named(const py::handle& plateau) {
+  if (!py::isinstance<py::str>(plateau)) return false;
+  if (plateau.cast<std::string>() != "rate")
+    throw py::value_error("plateau: expected None, 'rate' or a number of steps >= 1");
+  return true;
+}
+
 /// The driver's rules from c2f.solve's keywords (None: no limit; plateau and plateau_tolerance
 /// None: the defaults').
 Options limits_from(const ModelEnergy& model, const RunDefaults& defaults,
@@ -59,8 +67,9 @@ Options limits_from(const ModelEnergy& model, const RunDefaults& defaults,
   limits.time_limit_seconds = optional_positive_real(time_limit, "time_limit");
   limits.max_total_steps = optional_positive_count(max_steps, "max_steps");
   limits.plateau_steps = {
-      plateau.is_none() ? defaults.plateau_steps
-                        : static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
+      plateau.is_none() || progress_rate_named(plateau)
+          ? defaults.plateau_steps
+          : static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
   limits.plateau_tolerance = plateau_tolerance.is_none()
                                  ? defaults.plateau_tolerance
                                  : real_argument(plateau_tolerance, "plateau_tolerance");
@@ -90,6 +99,7 @@ py::dict solve(const ModelEnergy& model, const py::object& given_schedule,
   config.solver = solver_spec_from(method, options, defaults);
   config.limits =
       limits_from(model, defaults, time_limit, max_steps, plateau, plateau_tolerance, start);
+  config.progress_rate = plateau.is_none() ? defaults.progress_rate : progress_rate_named(plateau);
   config.memory = memory_budget_from(memory);
   config.graph_memory = optional_gib_bytes(graph_memory, "graph_memory");
   StepRecord record(callback, model.shape);
@@ -127,8 +137,11 @@ py::dict defaults_dict(const std::string& name) {
   out["grid_schedule"] = defaults.grid_schedule;
   out["general_schedule"] = defaults.general_schedule;
   out["near_radius"] = defaults.near_radius;
-  out["shift_moves"] = defaults.shift_moves;
-  out["plateau"] = defaults.plateau_steps;
+  out["shift_moves"] = defaults.shift_moves                     ? py::object(py::bool_(true))
+                       : defaults.shift_moves_unless_submodular ? py::object(py::str("auto"))
+                                                                : py::object(py::bool_(false));
+  out["plateau"] = defaults.progress_rate ? py::object(py::str("rate"))
+                                          : py::object(py::int_(defaults.plateau_steps));
   out["plateau_tolerance"] = defaults.plateau_tolerance;
   return out;
 }

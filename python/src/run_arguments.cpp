@@ -50,11 +50,17 @@ std::string text_option(const py::handle& value, const std::string& name) {
   return value.cast<std::string>();
 }
 
-bool flag_option(const py::handle& value, const std::string& name) {
-  if (!py::isinstance<py::bool_>(value))
-    throw py::type_error(name + ": expected True or False, got " +
-                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
-  return value.cast<bool>();
+/// options['shift_moves']: True, False, or 'auto' (shift moves where some expansion move on the
+/// energy is not submodular, ExpansionOptions::shift_moves_unless_submodular).
+void set_shift_moves(ExpansionOptions& expansion, const py::handle& value,
+                     const std::string& name) {
+  const bool automatic = py::isinstance<py::str>(value) && value.cast<std::string>() == "auto";
+  if (!automatic && !py::isinstance<py::bool_>(value)) {
+    throw py::type_error(name + ": expected True, False or 'auto', got " +
+                         std::string(py::repr(value)));
+  }
+  expansion.shift_moves = !automatic && value.cast<bool>();
+  expansion.shift_moves_unless_submodular = automatic;
 }
 
 /// Parses a name with `parse`, a std::invalid_argument becoming a ValueError naming `name`.
@@ -105,6 +111,7 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       ExpansionOptions expansion;  // the defaults' moves unless options name others
       expansion.near_radius = defaults.near_radius;
       expansion.shift_moves = defaults.shift_moves;
+      expansion.shift_moves_unless_submodular = defaults.shift_moves_unless_submodular;
       NearLevels levels = NearLevels::original;
       for (const auto& [key, value] :
            option_items(options, owner,
@@ -117,7 +124,7 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
         } else if (key == "near_sweep_gain") {
           expansion.near_sweep_gain = real_argument(value, name);
         } else if (key == "shift_moves") {
-          expansion.shift_moves = flag_option(value, name);
+          set_shift_moves(expansion, value, name);
         } else if (key == "regions") {
           expansion.regions = static_cast<int>(integer_argument(value, name, 1, 65535));
         } else if (key == "threads") {

@@ -168,6 +168,43 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
         assert f"schedule {schedule}" in (out / "summary.txt").read_text()
 
 
+def test_the_defaults_make_shift_moves_where_an_expansion_move_is_not_submodular(rng):
+    """shift_moves 'auto': on a truncated-quadratic energy (not a metric) the defaults run as
+    shift_moves=True, on a truncated-linear one as shift_moves=False, flat and coarse to fine."""
+    assert c2f.defaults()["shift_moves"] == "auto"
+    unary = rng.random((14, 18, 6))
+    quadratic = c2f.Energy.grid(unary, c2f.Term.truncated_quadratic(4.0, 6), weight=0.3)
+    linear = c2f.Energy.grid(unary, c2f.Term.truncated_linear(2.0), weight=0.3)
+    for energy, shifts in ((quadratic, True), (linear, False)):
+        for schedule in (None, "flat"):
+            automatic = c2f.solve(energy, schedule)
+            named = c2f.solve(energy, schedule, options={"shift_moves": shifts})
+            np.testing.assert_array_equal(automatic.trace["energy"], named.trace["energy"])
+            np.testing.assert_array_equal(automatic.labeling, named.labeling)
+            assert automatic.summary.rstrip().endswith("with shift moves") == shifts
+    with pytest.raises(TypeError, match=r"options\['shift_moves'\]: expected True, False or 'auto'"):
+        c2f.solve(linear, options={"shift_moves": "on"})
+
+
+def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
+    """plateau='rate' adds the progress-rate rule to the plateau rule: the first level follows
+    the same steps until either rule fires, so it never takes more steps."""
+    energy = c2f.Energy.grid(rng.random((40, 50, 8)), c2f.Term.truncated_linear(2.0), weight=0.6)
+    plain = c2f.solve(energy, "paper")
+    rated = c2f.solve(energy, "paper", plateau="rate")
+    def first(result):  # steps on the first (coarsest) level
+        return int(np.sum(result.trace["level"] == 0))
+
+    assert first(rated) <= first(plain)
+    n = first(rated)
+    np.testing.assert_array_equal(rated.trace["energy"][:n], plain.trace["energy"][:n])
+    energies = rated.trace["energy"]  # the level switches: equal up to rounding
+    assert rated.reason == "converged"
+    assert np.all(np.diff(energies) <= 1e-9 * np.abs(energies[:-1]))
+    with pytest.raises(ValueError, match="plateau: expected None, 'rate' or a number of steps"):
+        c2f.solve(energy, plateau="sweep")
+
+
 def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     # 160 x 110 pixels: near moves by 4 bands of rows (ExpansionOptions::regions), two of a
     # colour at once.

@@ -126,10 +126,11 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
             "--schedule: level cp:3,1 has N_L 3 above the 2 labels"},
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
-           // c2f-solve's defaults make whole moves, so these flags are asked for, not defaults.
+           // c2f-solve's defaults make whole moves (shift moves only where an expansion move is
+           // not submodular: --shift-moves auto), so these flags are asked for, not defaults.
            {grid + out + " --solver icm --shift-moves",
             "--shift-moves or --label-order with --solver icm: shift moves are made by expansion"},
-           {grid + out + " --near-levels all",
+           {grid + out + " --shift-moves=off --near-levels all",
             "--near-levels: has no effect without --near-radius or --shift-moves"},
            {grid + out + " --regions 16", "--regions: has no effect without --near-radius"},
            {grid + out + " --solver swap --regions 4",

@@ -321,6 +321,59 @@ TEST_CASE("a plateau tolerance leaves creeping coarse levels but not the origina
                     Catch::Contains("tolerance_at_original must be finite and >= 0"));
 }
 
+TEST_CASE("the progress-rate rule leaves a coarse level slower than the next is expected to be",
+          "[driver][rules]") {
+  // A level of 25 variables of 100, one step a second, windows of 2 steps: the first window
+  // falls 10 per second, so the original problem is expected to give 10 * 25 / 100 = 2.5.
+  const std::vector<double> energies{100.0, 90.0, 80.0, 75.0, 72.0, 70.0, 69.0};
+  const std::vector<VariableIndex> group_of(100, 0);
+  const auto decisions = [&](Rule rule, bool at_original) {
+    std::vector<Decision> out;
+    for (std::size_t step = 0; step < energies.size(); ++step) {
+      StepEvent event =
+          rule_event(static_cast<double>(step), 0, at_original, static_cast<long>(step),
+                     static_cast<long>(step), std::span<const double>(energies.data(), step + 1));
+      event.num_variables = 25;
+      if (!at_original) event.group_of = group_of;
+      out.push_back(rule(event).decision);
+    }
+    return out;
+  };
+  using enum Decision;
+  // Steps 4 and 5 fall 4 and 2.5 per second over their windows (not below 2.5); step 6, 1.5.
+  CHECK(decisions(progress_rate({2}), false) ==
+        std::vector<Decision>{continue_level, continue_level, continue_level, continue_level,
+                              continue_level, continue_level, refine});
+  CHECK(decisions(progress_rate({2}), true) ==
+        std::vector<Decision>(energies.size(), continue_level));
+  // Windows of 3 steps are compared from step 6 on: the first falls 25 / 3 per second (2.08
+  // expected of the next level), steps 3 to 6 fall 2 per second.
+  CHECK(decisions(progress_rate({3}), false) ==
+        std::vector<Decision>{continue_level, continue_level, continue_level, continue_level,
+                              continue_level, continue_level, refine});
+  // A level that starts without a decrease has no rate to compare with.
+  const std::vector<double> level{5.0, 5.0, 5.0, 4.0, 3.0, 3.0, 3.0};
+  Rule fresh = progress_rate({2});
+  for (std::size_t step = 0; step < level.size(); ++step) {
+    StepEvent event =
+        rule_event(static_cast<double>(step), 0, false, static_cast<long>(step),
+                   static_cast<long>(step), std::span<const double>(level.data(), step + 1));
+    event.num_variables = 25;
+    event.group_of = group_of;
+    CHECK(fresh(event).decision == continue_level);
+  }
+  // Through Options, beside the plateau rule.
+  Options options;
+  options.progress_window_steps = 2;
+  Rule through_options = [rules = options.rules()](const StepEvent& event) {
+    return rules.decide(event);
+  };
+  CHECK(decisions(through_options, false).back() == refine);
+  options.progress_window_steps = -1;
+  CHECK_THAT(options.validate(), Catch::Contains("progress_window_steps must be >= 0"));
+  CHECK_THROWS_WITH(progress_rate({0}), Catch::Contains("every window must be >= 1 step"));
+}
+
 TEST_CASE("options and rules validate their fields", "[driver][options][validation]") {
   Options options;
   CHECK(options.validate().empty());

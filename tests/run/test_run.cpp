@@ -290,3 +290,29 @@ TEST_CASE("a coarse level whose fixed part fits runs with the recycled graphs it
   PartitionList same({coarse});
   CHECK(run(energy, same, config).summary.levels[0].skipped);
 }
+
+TEST_CASE("RunConfig::progress_rate leaves a coarse level the plateau rule would keep",
+          "[run][rules]") {
+  Rng rng(77);
+  const PairwiseEnergy energy = random_grid_energy(rng, 12, 10, 6);
+  // A coarse level of every variable on its own: as slow per step as the original problem, so
+  // the next level is expected to give what its first sweep gave.
+  const DensePartition singletons = DensePartition::identity(energy.num_variables());
+  RunConfig config;
+  config.limits.plateau_steps = {1000};
+  config.limits.max_steps_per_level = 1000;
+  PartitionList plain_levels({singletons});
+  const RunReport plain = run(energy, plain_levels, config);
+  REQUIRE(plain.summary.levels.size() == 2);
+  CHECK(plain.summary.levels[0].steps == 1000);  // nothing but the step limit ends it
+  config.progress_rate = true;
+  PartitionList rated_levels({singletons});
+  const RunReport rated = run(energy, rated_levels, config);
+  REQUIRE(rated.summary.levels.size() == 2);
+  // Windows of one sweep (6 moves), compared from the second on: once the sweeps stop
+  // decreasing the energy, the level is left.
+  CHECK(rated.summary.levels[0].steps >= 12);
+  CHECK(rated.summary.levels[0].steps < 1000);
+  CHECK(rated.summary.reason == TerminationReason::converged);
+  CHECK(rated.summary.energy == energy.evaluate(rated.summary.labeling));
+}

@@ -10,6 +10,7 @@
 
 #include "c2f/adapters/graphcut/detail/shift_moves.hpp"
 #include "c2f/adapters/graphcut/expansion.hpp"
+#include "c2f/core/grid.hpp"
 #include "support/backends.hpp"
 #include "support/descent.hpp"
 #include "support/random_models.hpp"
@@ -176,4 +177,101 @@ TEMPLATE_TEST_CASE("expansion with shift moves descends to labelings neither kin
     }
     CHECK(previous >= brute_force_minimum(energy).energy - 1e-9);
   }
+}
+
+namespace {
+
+/// Two variables joined by one edge of `term` (weight `weight`), zero unaries.
+PairwiseEnergy one_edge(const PairwiseTerm& term, int num_labels, double weight = 1.0) {
+  return PairwiseEnergy(2, num_labels,
+                        std::vector<double>(2 * static_cast<std::size_t>(num_labels)), {term},
+                        {{0, 1, weight, 0}});
+}
+
+/// `costs` (L x L, row-major) with labels 0 and `alpha` swapped.
+std::vector<double> swapped_labels(const std::vector<double>& costs, int num_labels, int alpha) {
+  const auto relabel = [&](int a) { return a == 0 ? alpha : a == alpha ? 0 : a; };
+  std::vector<double> out(costs.size());
+  for (int a = 0; a < num_labels; ++a)
+    for (int b = 0; b < num_labels; ++b)
+      out[static_cast<std::size_t>(a * num_labels + b)] =
+          costs[static_cast<std::size_t>(relabel(a) * num_labels + relabel(b))];
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("expansion moves are submodular exactly where no move needs QPBO", "[expansion][shift]") {
+  CHECK(expansion_moves_submodular(one_edge(PairwiseTerm::potts(), 5)));
+  CHECK(expansion_moves_submodular(one_edge(PairwiseTerm::truncated_linear(2.0), 5)));
+  CHECK_FALSE(expansion_moves_submodular(one_edge(PairwiseTerm::tsgo_step(), 5)));
+  CHECK_FALSE(expansion_moves_submodular(one_edge(PairwiseTerm::potts(), 5, -1.0)));
+  // Against the solver: from every labeling of one edge, the first move (to label 0, each
+  // label in turn made label 0) needs QPBO for some start exactly when the test says no.
+  Rng rng(808);
+  std::uniform_real_distribution<double> cost(0.0, 2.0);
+  const int num_labels = 3;
+  int submodular_tables = 0;
+  const int trials = 40;
+  for (int trial = 0; trial < trials; ++trial) {
+    std::vector<double> costs(static_cast<std::size_t>(num_labels * num_labels));
+    for (int a = 0; a < num_labels; ++a)
+      for (int b = 0; b < num_labels; ++b)
+        costs[static_cast<std::size_t>(a * num_labels + b)] = a == b ? 0.0 : cost(rng);
+    const bool submodular =
+        expansion_moves_submodular(one_edge(PairwiseTerm::table(num_labels, costs), num_labels));
+    bool needed_qpbo = false;
+    for (int alpha = 0; alpha < num_labels; ++alpha) {
+      const PairwiseEnergy energy = one_edge(
+          PairwiseTerm::table(num_labels, swapped_labels(costs, num_labels, alpha)), num_labels);
+      for (Label u = 0; u < num_labels; ++u) {
+        for (Label v = 0; v < num_labels; ++v) {
+          ExpansionSolver<DynamicMaxFlow> solver;
+          solver.bind(energy, Labeling{u, v});
+          solver.step();
+          needed_qpbo = needed_qpbo || solver.last_step().used_qpbo;
+        }
+      }
+    }
+    INFO("trial " << trial);
+    CHECK(submodular == !needed_qpbo);
+    submodular_tables += submodular ? 1 : 0;
+  }
+  CHECK(submodular_tables > 0);  // both kinds of table were drawn
+  CHECK(submodular_tables < trials);
+}
+
+TEST_CASE("shift moves unless submodular: made on energies whose expansion moves need QPBO",
+          "[expansion][shift]") {
+  Rng rng(909);
+  const int num_labels = 6;
+  const GridShape shape{5, 4};
+  std::uniform_real_distribution<double> cost(0.0, 3.0);
+  std::vector<double> unaries(shape.size() * static_cast<std::size_t>(num_labels));
+  for (double& u : unaries) u = cost(rng);
+  const auto grid = [&](const PairwiseTerm& term) {
+    return make_grid_energy(shape, Connectivity::four, num_labels, unaries, term,
+                            [](VariableIndex, VariableIndex) { return 1.0; });
+  };
+  const PairwiseEnergy metric = grid(PairwiseTerm::truncated_linear(2.0));
+  const PairwiseEnergy step = grid(PairwiseTerm::tsgo_step());
+  ExpansionOptions options;
+  options.shift_moves_unless_submodular = true;
+  CHECK_FALSE(makes_shift_moves(options, metric));
+  CHECK(makes_shift_moves(options, step));
+  ExpansionSolver<DynamicMaxFlow> solver(options);
+  CHECK(solver.quiet_steps_to_converge(metric) == static_cast<std::size_t>(num_labels));
+  CHECK(solver.quiet_steps_to_converge(step) == static_cast<std::size_t>(num_labels) + 2);
+  solver.bind(step, Labeling(step.num_variables(), 0));
+  CHECK(solver.shift_moves());
+  solver.step();
+  CHECK(solver.last_step().shift == 1);  // a sweep begins with the shift up
+  solver.bind(metric, Labeling(metric.num_variables(), 0));
+  CHECK_FALSE(solver.shift_moves());
+  solver.step();
+  CHECK(solver.last_step().shift == 0);
+  // shift_moves on its own makes them everywhere.
+  options.shift_moves_unless_submodular = false;
+  options.shift_moves = true;
+  CHECK(makes_shift_moves(options, metric));
 }

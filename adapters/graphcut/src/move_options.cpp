@@ -22,6 +22,30 @@ std::string ExpansionOptions::validate() const {
   return {};
 }
 
+bool expansion_moves_submodular(const PairwiseEnergy& energy) {
+  for (const Edge& edge : energy.edges()) {
+    if (edge.weight < 0.0) return false;
+  }
+  const auto labels = static_cast<Label>(energy.num_labels());
+  for (const PairwiseTerm& term : energy.terms()) {
+    for (Label a = 0; a < labels; ++a) {
+      const double stay = term.cost(a, a);
+      for (Label b = 0; b < labels; ++b) {
+        const double b_to_a = term.cost(b, a);
+        for (Label c = 0; c < labels; ++c) {
+          if (stay + term.cost(b, c) > b_to_a + term.cost(a, c)) return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+bool makes_shift_moves(const ExpansionOptions& options, const PairwiseEnergy& energy) {
+  return options.shift_moves ||
+         (options.shift_moves_unless_submodular && !expansion_moves_submodular(energy));
+}
+
 std::optional<std::size_t> move_solver_bytes(const ProblemSize& size, GraphStorage storage) {
   const std::size_t scale = storage == GraphStorage::adjacency_lists ? 2 : 1;
   const auto nodes = checked_product({size.variables, 300 * scale});
@@ -35,7 +59,8 @@ std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
   // With regions, the regions' solvers are as large together as one over every variable, and
   // a sweep of whole moves over every variable frees them first (and they its graphs).
   const auto one = move_solver_bytes(size, storage);
-  const bool second = options.near_radius > 0 || options.shift_moves;
+  const bool second =
+      options.near_radius > 0 || options.shift_moves || options.shift_moves_unless_submodular;
   return one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;
 }
 

@@ -64,6 +64,38 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
   };
 }
 
+Rule progress_rate(std::vector<int> window_per_level) {
+  if (window_per_level.empty()) throw std::invalid_argument("progress_rate: no window");
+  for (int k : window_per_level) {
+    if (k < 1) {
+      throw std::invalid_argument("progress_rate: every window must be >= 1 step, got " +
+                                  std::to_string(k));
+    }
+  }
+  // The run-clock time of each step of the level being solved (rules see every step, from 0).
+  std::vector<double> times;
+  return [ks = std::move(window_per_level), times](const StepEvent& p) mutable -> Verdict {
+    if (p.at_original || p.group_of.empty()) return {};
+    if (p.step == 0) times.clear();
+    times.push_back(p.time_s);
+    const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
+    const auto k = static_cast<std::size_t>(ks[index]);
+    const auto& energies = p.level_energies;
+    const std::size_t now = energies.size() - 1;
+    if (now < 2 * k || times.size() != energies.size()) return {};
+    const auto rate = [&](std::size_t from, std::size_t to) {
+      const double seconds = times[to] - times[from];
+      return seconds > 0.0 ? (energies[from] - energies[to]) / seconds : 0.0;
+    };
+    const double first = rate(0, k);
+    if (!(first > 0.0)) return {};
+    const double expected_next =
+        first * static_cast<double>(p.num_variables) / static_cast<double>(p.group_of.size());
+    if (rate(now - k, now) >= expected_next) return {};
+    return {Decision::refine, TerminationReason::converged};
+  };
+}
+
 Rule level_step_limit(long max_steps) {
   if (max_steps < 1) throw std::invalid_argument("level_step_limit: max_steps must be >= 1");
   return [max_steps](const StepEvent& p) -> Verdict {

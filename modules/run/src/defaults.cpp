@@ -9,9 +9,11 @@ RunConfig RunDefaults::config() const {
   ExpansionOptions expansion;
   expansion.near_radius = near_radius;
   expansion.shift_moves = shift_moves;
+  expansion.shift_moves_unless_submodular = shift_moves_unless_submodular;
   config.solver = expansion_spec(expansion, NearLevels::original, MaxFlowKind::dynamic);
   config.limits.plateau_steps = {plateau_steps};
   config.limits.plateau_tolerance = plateau_tolerance;
+  config.progress_rate = progress_rate;
   return config;
 }
 
@@ -19,6 +21,7 @@ RunDefaults pairwise_defaults() {
   RunDefaults defaults;
   defaults.grid_schedule = "agg:2/cc";
   defaults.general_schedule = "cp:1,1";
+  defaults.shift_moves_unless_submodular = true;
   return defaults;
 }
 

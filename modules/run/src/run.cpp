@@ -15,27 +15,54 @@ unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
       std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
 }
 
+SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
+  const auto decide = [&energy](SolverOptions& options) {
+    if (auto* expansion = std::get_if<ExpansionOptions>(&options)) {
+      expansion->shift_moves = makes_shift_moves(*expansion, energy);
+      expansion->shift_moves_unless_submodular = false;
+    }
+  };
+  decide(spec.original);
+  if (spec.coarse) decide(*spec.coarse);
+  return spec;
+}
+
 }  // namespace detail
 
 MemoryPlan plan_run(const PairwiseEnergy& energy, const RunConfig& config) {
   RunConfigError::throw_if(config.validate());
   try {
-    return plan_memory(config.solver, problem_size(energy), budget_or_default(config.memory),
-                       config.graph_memory, config.energy_name);
+    return plan_memory(detail::with_shift_moves_decided(config.solver, energy),
+                       problem_size(energy), budget_or_default(config.memory), config.graph_memory,
+                       config.energy_name);
   } catch (const std::invalid_argument& error) {
     throw RunConfigError("memory", error.what());
   }
 }
 
-std::size_t sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy) {
+namespace {
+
+/// quiet_steps_to_converge on `energy` of the solver `options` name (one sweep of its moves).
+std::size_t quiet_steps(const SolverSpec& spec, const SolverOptions& options,
+                        const PairwiseEnergy& energy) {
   if (const std::string problem = spec.validate(); !problem.empty())
     RunConfigError::throw_if("solver." + problem);
   return std::visit(
-      [&]<class Options>(const Options& options) -> std::size_t {
-        const typename detail::SolverFor<Options, DynamicMaxFlow>::type solver(options);
+      [&]<class Options>(const Options& o) -> std::size_t {
+        const typename detail::SolverFor<Options, DynamicMaxFlow>::type solver(o);
         return solver.quiet_steps_to_converge(energy);
       },
-      spec.original);
+      options);
+}
+
+}  // namespace
+
+std::size_t sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy) {
+  return quiet_steps(spec, spec.original, energy);
+}
+
+std::size_t coarse_sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy) {
+  return quiet_steps(spec, spec.coarse_options(), energy);
 }
 
 }  // namespace c2f

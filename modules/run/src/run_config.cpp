@@ -49,9 +49,10 @@ std::string RunReport::memory_report() const {
 }
 
 std::string RunReport::threads_line() const {
-  if (regions < 2) return "solve: every move over every variable on one thread";
+  const std::string shifts = shift_moves ? " with shift moves" : "";
+  if (regions < 2) return "solve: every move over every variable on one thread" + shifts;
   return "solve: moves by " + std::to_string(regions) + " regions on " +
-         std::to_string(solve_threads) + (solve_threads == 1 ? " thread" : " threads");
+         std::to_string(solve_threads) + (solve_threads == 1 ? " thread" : " threads") + shifts;
 }
 
 }  // namespace c2f

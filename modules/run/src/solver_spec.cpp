@@ -111,6 +111,7 @@ SolverSpec expansion_spec(const ExpansionOptions& options, NearLevels levels, Ma
     ExpansionOptions whole = options;
     whole.near_radius = 0;
     whole.shift_moves = false;
+    whole.shift_moves_unless_submodular = false;
     if (!(whole == options)) spec.coarse = whole;
   }
   return spec;

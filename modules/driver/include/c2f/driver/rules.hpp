@@ -46,6 +46,17 @@ using Rule = std::function<Verdict(const StepEvent&)>;
 /// (std::invalid_argument otherwise).
 Rule no_decrease(std::vector<int> steps_per_level, double tolerance = 0.0,
                  int steps_at_original = 0, double tolerance_at_original = 0.0);
+/// Refine a coarse level once its progress per second has fallen below what the next level is
+/// expected to give. Progress per second is the energy decrease over a window of k steps
+/// (k = window_per_level[level], the last entry serving deeper levels) over the run-clock
+/// seconds they took. The next level is expected to start as this one did, with steps that cost
+/// in proportion to its variables: this level's rate over its first window times its variables
+/// over the original problem's. (The original problem is the finest the next level can be, so
+/// before an intermediate level the expectation is low and the rule leaves late rather than
+/// early.) Compared from the end of the second window on (step >= 2k); never on the original
+/// problem, nor on a level whose first window did not decrease the energy. Every k must be >= 1
+/// (std::invalid_argument otherwise).
+Rule progress_rate(std::vector<int> window_per_level);
 /// Refine after `max_steps` steps on a level.
 Rule level_step_limit(long max_steps);
 /// Stop after `max_steps` steps in the whole run.

@@ -11,12 +11,16 @@
 namespace c2f {
 
 struct RunDefaults {
-  std::string grid_schedule;       ///< schedule text on a pixel grid (application presets apply)
-  std::string general_schedule;    ///< schedule text on any other graph
-  int near_radius = 0;             ///< expansion's near moves, original problem only (0: none)
-  bool shift_moves = false;        ///< expansion's shift moves, original problem only
+  std::string grid_schedule;     ///< schedule text on a pixel grid (application presets apply)
+  std::string general_schedule;  ///< schedule text on any other graph
+  int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
+  bool shift_moves = false;      ///< expansion's shift moves, original problem only
+  /// Shift moves also on an energy where some expansion move is not submodular
+  /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.
+  bool shift_moves_unless_submodular = false;
   int plateau_steps = 4;           ///< steps without decrease that end a coarse level
   double plateau_tolerance = 0.0;  ///< the plateau rule's tolerance on coarse levels
+  bool progress_rate = false;      ///< RunConfig::progress_rate
 
   /// grid_schedule on a pixel grid, else general_schedule.
   [[nodiscard]] const std::string& schedule(bool on_grid) const {
@@ -29,7 +33,8 @@ struct RunDefaults {
 
 /// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels of 5x5-summed
 /// unaries split into connected regions on a grid (agg:2/cc), colour passing CP(1,1) elsewhere;
-/// whole expansion moves; a coarse level ends after 4 moves without decrease.
+/// whole expansion moves, with shift moves on energies where some expansion move is not
+/// submodular (e.g. truncated quadratic); a coarse level ends after 4 moves without decrease.
 [[nodiscard]] RunDefaults pairwise_defaults();
 
 }  // namespace c2f

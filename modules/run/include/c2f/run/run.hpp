@@ -6,7 +6,9 @@
 // builds the solver(s) the spec names, runs coarse_to_fine and reports the Summary with the
 // memory given and used. The tools, the Python package and the benches call it.
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +47,11 @@ std::size_t regions_of(const Solver& solver) {
   }
 }
 
+/// `spec` with expansion's shift_moves_unless_submodular decided on `energy`
+/// (makes_shift_moves) on every level: shift_moves says, so that the memory plan counts the
+/// shift moves' solver only where they are made.
+[[nodiscard]] SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy);
+
 /// The threads a run of `options` solves `regions` regions on: half of them at once, at most
 /// ExpansionOptions::threads (resolved); 1 without regions.
 [[nodiscard]] unsigned solve_threads(const SolverOptions& options, std::size_t regions);
@@ -60,6 +67,9 @@ std::size_t regions_of(const Solver& solver) {
 /// `energy` (its quiet_steps_to_converge: one sweep of its moves), for rules that scale with it
 /// (e.g. segmentation's coarse plateau).
 [[nodiscard]] std::size_t sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy);
+/// The same for the coarse levels' solver (spec.coarse_options()): their labels are the
+/// original problem's, so one sweep of their moves on `energy` is one on any coarse level.
+[[nodiscard]] std::size_t coarse_sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy);
 
 /// Minimises `energy` over the partitions `levels` provides (none: flat) as `config` says. Throws
 /// RunConfigError naming the field of a configuration that is not usable or a budget the floor
@@ -72,10 +82,18 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   RunConfig planned = config;
   planned.memory = report.budget;
   report.plan = plan_run(energy, planned);
-  const SolverSpec spec = with_memory_plan(config.solver, report.plan);
+  const SolverSpec spec =
+      with_memory_plan(detail::with_shift_moves_decided(config.solver, energy), report.plan);
   report.recycles = recycles_move_graphs(spec.original);
+  if (const auto* expansion = std::get_if<ExpansionOptions>(&spec.original))
+    report.shift_moves = expansion->shift_moves;
   const ProblemSize size = problem_size(energy);
   Options options = config.limits;
+  if (config.progress_rate) {
+    options.progress_window_steps = static_cast<int>(
+        std::min<std::size_t>(coarse_sweep_steps(spec, energy),
+                              static_cast<std::size_t>(std::numeric_limits<int>::max())));
+  }
   options.coarse_level_fits = coarse_level_admission(spec, size, report.plan);
   const auto solve = [&](auto&& solvers) {
     Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);

@@ -34,6 +34,11 @@ struct RunConfig {
   Options limits;
   /// The bytes the whole run may take; unset: the machine's default (default_memory_budget).
   std::optional<MemoryBudget> memory = std::nullopt;
+  /// Whether a coarse level is also left once its progress per second over a sweep of its
+  /// solver's moves falls below what the next level is expected to give (the driver's
+  /// progress_rate rule, windows of coarse_sweep_steps); the plateau rule of `limits` still
+  /// applies.
+  bool progress_rate = false;
   /// At most this many bytes of the budget for the graph-cut solvers' recycled move graphs;
   /// unset: all that the budget leaves above the run's floor and expansion's kept move
   /// problems (which are planned first, apart from this limit).
@@ -61,6 +66,9 @@ struct RunReport {
   /// move over every variable) and the threads that solved them at once (1 without regions).
   std::size_t regions = 1;
   unsigned solve_threads = 1;
+  /// Whether the original problem's solver makes shift moves on this energy (expansion:
+  /// makes_shift_moves, which ExpansionOptions::shift_moves_unless_submodular may decide).
+  bool shift_moves = false;
 
   /// "memory budget 5.9 GiB (a quarter of ...), recycled move graphs up to 2.1 GiB, kept move
   /// problems 12.0 MiB" (the second part for solvers that recycle, the third when problems are
@@ -71,7 +79,8 @@ struct RunReport {
   /// the end".
   [[nodiscard]] std::string memory_report() const;
   /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable on
-  /// one thread" (the original problem's binding), as the tools' summaries write it.
+  /// one thread" (the original problem's binding), ending " with shift moves" when it makes
+  /// them, as the tools' summaries write it.
   [[nodiscard]] std::string threads_line() const;
 };
 

@@ -68,7 +68,8 @@ class ExpansionSolver {
   [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const {
     const bool near = options_.near_radius > 0;
     const std::size_t kinds = 1 + (near ? 1 : 0) + (near && regions_on(energy) ? 1 : 0);
-    return (kinds == 1 ? 1 : kinds + 1) * steps_per_sweep(energy.num_labels());
+    const std::size_t shifts = makes_shift_moves(options_, energy) ? 2 : 0;
+    return (kinds == 1 ? 1 : kinds + 1) * (shifts + static_cast<std::size_t>(energy.num_labels()));
   }
 
   /// Starts from `start` (validated); fixes the move graphs' topology. Every label's move
@@ -76,6 +77,7 @@ class ExpansionSolver {
   /// graphs (keys: the labels, then shifts up and down) within options.graph_memory_limit.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     problems_.bind(energy, options_.problem_memory_limit);
+    shift_moves_ = makes_shift_moves(options_, energy);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
     const std::size_t graph_limit = recycled_graph_limit(options_);
     regions_ = {};
@@ -141,6 +143,8 @@ class ExpansionSolver {
   [[nodiscard]] std::size_t kept_bytes() const noexcept {
     return problems_.memory_bytes() + state_.moves.recycled_bytes() + regions_.recycled_bytes();
   }
+  /// Whether this binding's sweeps begin with shift moves (makes_shift_moves).
+  [[nodiscard]] bool shift_moves() const noexcept { return shift_moves_; }
   /// The regions of this binding's moves (1: none, every move is over every variable).
   [[nodiscard]] std::size_t region_count() const noexcept {
     return regions_.active() ? regions_.count() : 1;
@@ -148,7 +152,7 @@ class ExpansionSolver {
 
  private:
   /// Steps of a sweep spent on shift moves: up, then down.
-  [[nodiscard]] std::size_t shift_steps() const noexcept { return options_.shift_moves ? 2 : 0; }
+  [[nodiscard]] std::size_t shift_steps() const noexcept { return shift_moves_ ? 2 : 0; }
   /// Steps in one sweep: the shift moves, then one expansion move per label.
   [[nodiscard]] std::size_t steps_per_sweep(int num_labels) const noexcept {
     return shift_steps() + static_cast<std::size_t>(num_labels);
@@ -321,6 +325,7 @@ class ExpansionSolver {
   }
 
   ExpansionOptions options_;
+  bool shift_moves_ = false;  // this binding makes shift moves (makes_shift_moves)
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change

@@ -62,6 +62,12 @@ struct ExpansionOptions : MoveOptions {
   /// solver then converges where neither kind of move helps. A sweep then has L + 2 steps
   /// (ExpansionSolver::sweep_steps).
   bool shift_moves = false;
+  /// With shift_moves false: make shift moves anyway on an energy where some expansion move is
+  /// not submodular (!expansion_moves_submodular; e.g. truncated quadratic and TSGO step
+  /// terms), decided when the solver is bound. There whole expansion moves alone stop in
+  /// staircases of labels that shift moves leave (synthetic truncated-quadratic grids: 5e-4 to
+  /// 2e-3 higher final energies; docs/results.md, "Defaults").
+  bool shift_moves_unless_submodular = false;
   /// Parallel near moves: with near_radius > 0, the variables are cut into at most this many
   /// regions (about equal ranges of indices, at least 4096 variables each, every edge inside
   /// one range or between adjacent ones: bands of rows on a grid; detail/region_layout.hpp),
@@ -84,6 +90,16 @@ struct ExpansionOptions : MoveOptions {
   [[nodiscard]] std::string validate() const;
   bool operator==(const ExpansionOptions&) const = default;
 };
+
+/// Whether every expansion move on `energy` is submodular, so that none needs QPBO: every edge
+/// weight is >= 0 and every pairwise term has cost(a, a) + cost(b, c) <= cost(b, a) + cost(a, c)
+/// for all labels a, b, c (metrics such as Potts and truncated linear do; truncated quadratic
+/// and TSGO's step term do not). O(T L^3) for T terms of L labels.
+[[nodiscard]] bool expansion_moves_submodular(const PairwiseEnergy& energy);
+
+/// Whether alpha-expansion with `options` makes shift moves on `energy`: shift_moves, or
+/// shift_moves_unless_submodular on an energy where some expansion move is not submodular.
+[[nodiscard]] bool makes_shift_moves(const ExpansionOptions& options, const PairwiseEnergy& energy);
 
 /// The bytes alpha-expansion with `options` may give recycled move graphs: graph_memory_limit,
 /// or 0 with near moves. Near moves run on graphs of their own, and the moves over every
