@@ -39,9 +39,6 @@ OUT_DIR/suite.md: per family and size, the medians of the tuning and the aside i
 import argparse
 import csv
 import math
-import os
-import shutil
-import statistics
 import subprocess
 import sys
 import time
@@ -53,6 +50,10 @@ from typing import Callable, Dict, List, Optional
 import numpy as np
 
 import c2f
+
+# The stereo scaling table's dataset names and its median and number formats ("-", "never").
+sys.path.insert(0, str(Path(__file__).resolve().parent / "stereo"))
+from scaling_table import dataset as stereo_dataset, median, text  # noqa: E402
 
 STEREO_ASIDE = {"middlebury2014/Recycle", "middlebury2014/PlaytableP", "kitti2015/000001_10"}
 GRID_SIZES = {"0.1mp": (320, 320), "0.3mp": (480, 640), "1mp": (1000, 1000), "4mp": (2000, 2000)}
@@ -324,16 +325,6 @@ def run_tool(command: List[str]) -> Dict[str, str]:
     return [dict(zip(header, fields)) for fields in lines[1:]]
 
 
-def stereo_dataset(scene: str) -> str:
-    if scene.startswith("middlebury2014/"):
-        return "Middlebury 2014 Q"
-    if scene.startswith("kitti2015/"):
-        return "KITTI 2015"
-    if scene == "opencv-doc/aloe":
-        return "Aloe full size"
-    return "Middlebury 2005/2006 third"
-
-
 def stereo_scenes(data: Path) -> List[str]:
     scenes = []
     with open(data / "scenes.csv", newline="") as file:
@@ -419,14 +410,6 @@ def number(text) -> float:
         return math.nan
 
 
-def median_text(values: List[float], digits: int = 2) -> str:
-    values = [v for v in values if not math.isnan(v)]
-    if not values:
-        return "-"
-    m = statistics.median(values)
-    return "never" if math.isinf(m) else f"{m:.{digits}f}"
-
-
 def summary(rows: List[Dict[str, str]]) -> str:
     """suite.md: per family and size, the medians of the tuning and of the aside instances."""
     lines = ["| family | size | set | n | ratio to 1e-4 | ratio to 1e-3 | worst to 1e-4 | "
@@ -438,14 +421,12 @@ def summary(rows: List[Dict[str, str]]) -> str:
         r4 = [number(r["ratio_1e4"]) for r in members]
         r3 = [number(r["ratio_1e3"]) for r in members]
         gaps = [number(r["energy_gap"]) for r in members]
-        errors = (median_text([100 * number(r["error_flat"]) for r in members], 1) + " / " +
-                  median_text([100 * number(r["error_c2f"]) for r in members], 1))
-        worst = max(r4) if r4 else math.nan
+        errors = (text(median([100 * number(r["error_flat"]) for r in members]), 1) + " / " +
+                  text(median([100 * number(r["error_c2f"]) for r in members]), 1))
         lines.append(
             f"| {family} | {size} | {'aside' if aside == '1' else 'tuning'} | {len(members)} | "
-            f"{median_text(r4)} | {median_text(r3)} | "
-            f"{'never' if math.isinf(worst) else f'{worst:.2f}'} | "
-            f"{sum(math.isinf(v) for v in r4)} | {median_text(gaps, 6)} | {errors} |")
+            f"{text(median(r4))} | {text(median(r3))} | {text(max(r4))} | "
+            f"{sum(math.isinf(v) for v in r4)} | {text(median(gaps), 6)} | {errors} |")
     return "\n".join(lines) + "\n"
 
 
