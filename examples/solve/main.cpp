@@ -95,8 +95,8 @@ int main(int argc, char** argv) {
     const TimedModel model = read_model(command);
     const Schedule schedule =
         examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
-    const GridShape shape = command.grid.value_or(GridShape{model.energy.num_variables(), 1});
-    ScheduleProvider levels(schedule, shape);
+    ScheduleProvider levels =
+        command.grid ? ScheduleProvider(schedule, *command.grid) : ScheduleProvider(schedule);
     const RunConfig config = planned_config(command, model);
     // Outputs are staged and moved into place together at the end.
     examples::RunRecord record(command.out_dir, kOutputs, command.trace, "c2f-solve",

@@ -36,8 +36,8 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
       "default: " + defaults.grid_schedule + " with --grid, else " + defaults.general_schedule +
       " (the measured best, docs/results.md); flat (the original problem only, the fair "
       "baseline), paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
-      "such as \"cp:2,1 cp:2,2 flat\"; with --grid also agg, local, threshold, blocks and /cc "
-      "levels (see docs/solve.md)";
+      "such as \"cp:2,1 cp:2,2 flat\", agg:R levels and /cc; with --grid also local, threshold "
+      "and blocks levels (see docs/solve.md)";
   ToolOptions options(
       "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
       "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
@@ -89,7 +89,7 @@ Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, 
   }
   if (const std::string problem = schedule.validate_without_grid(); !problem.empty()) {
     throw std::invalid_argument("--schedule: " + problem +
-                                "; give --grid WIDTHxHEIGHT or use cp and auto levels");
+                                "; give --grid WIDTHxHEIGHT or use cp, agg and auto levels");
   }
   return schedule;
 }

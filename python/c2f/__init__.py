@@ -100,11 +100,11 @@ def solve(
     energy : Energy
         The pairwise energy (``Energy.grid``, ``Energy.general``, ``stereo_energy``, ...).
     schedule : str or sequence of ndarray, optional
-        The coarse levels, coarsest first. None: the defaults' (coarse to fine: 'agg:2/cc' on a
-        grid energy, 'cp:1,1' on any other, see ``defaults``). 'flat' (the original problem
+        The coarse levels, coarsest first. None: the defaults' (coarse to fine: 'agg:2/cc',
+        see ``defaults``). 'flat' (the original problem
         only, with the same moves: the fair baseline), 'paper' (colour
         passing CP(1,1) CP(2,1) CP(3,1)), any schedule text of the library ('cp:1,1 cp:2,1',
-        'auto:0.01,0.1', and on a grid energy also 'agg:2/cc', 'blocks:4', 'threshold:0.5',
+        'auto:0.01,0.1', 'agg:2/cc', and on a grid energy also 'blocks:4', 'threshold:0.5',
         ...), or a list of your own partitions, each an integer array of group ids of every
         variable (equal ids: one group), each refining the one before.
     defaults : {'pairwise', 'stereo'}, default 'pairwise'

@@ -28,15 +28,15 @@ Schedule parse_schedule(const std::string& text, const ModelEnergy& model) {
   if (const std::string problem = model.shape.empty() ? schedule.validate_without_grid() : "";
       !problem.empty()) {
     throw py::value_error("schedule: " + problem +
-                          "; build the energy with Energy.grid, or use cp and auto levels");
+                          "; build the energy with Energy.grid, or use cp, agg and auto levels");
   }
   return schedule;
 }
 
 ScheduleProvider schedule_provider(const Schedule& schedule, const ModelEnergy& model) {
-  const GridShape shape = model.shape.empty() ? GridShape{model.energy.num_variables(), 1}
-                                              : GridShape{static_cast<std::size_t>(model.shape[1]),
-                                                          static_cast<std::size_t>(model.shape[0])};
+  if (model.shape.empty()) return ScheduleProvider(schedule);  // parse_schedule checked its levels
+  const GridShape shape{static_cast<std::size_t>(model.shape[1]),
+                        static_cast<std::size_t>(model.shape[0])};
   if (const std::string problem = schedule.validate_image(shape); !problem.empty())
     throw py::value_error("schedule: " + problem);
   bool slic = false;

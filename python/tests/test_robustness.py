@@ -111,8 +111,8 @@ def test_solve_arguments_are_checked(rng):
     with pytest.raises(TypeError, match="schedule: expected a schedule text"):
         c2f.solve(energy, schedule=3)
     general = c2f.Energy(rng.random((5, 2)), np.array([[0, 1]]))
-    with pytest.raises(ValueError, match="schedule: level agg:1 needs a pixel grid"):
-        c2f.solve(general, schedule="agg:1")
+    with pytest.raises(ValueError, match="schedule: level blocks:2 needs a pixel grid"):
+        c2f.solve(general, schedule="agg:1 blocks:2")
 
 
 def slow_energy():

@@ -118,7 +118,7 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {(dir / "text.uai").string() + out + " --solver swap", "network type 'hello'"},
            {grid + out + " --solver swap", "is not a semi-metric"},
            {grid + out + " --schedule local:1,1", "--schedule: level local:1,1 needs a pixel grid"},
-           {grid + out + " --schedule cp:1,1/cc", "level cp:1,1/cc needs a pixel grid"},
+           {grid + out + " --schedule blocks:2/cc", "level blocks:2/cc needs a pixel grid"},
            {grid + out + " --schedule local:1,1 --grid 3x3",
             "--grid: 3x3 is 9 pixels, the model has 12 variables"},
            {grid + out + " --grid 4by3", "--grid: expected WIDTHxHEIGHT"},

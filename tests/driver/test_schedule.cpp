@@ -71,10 +71,11 @@ TEST_CASE("malformed schedules are rejected with the offending level named",
 TEST_CASE("schedules say which levels need a pixel grid", "[lift][schedule]") {
   CHECK(Schedule::parse("cp:1,1 cp:2,1 flat").validate_without_grid().empty());
   CHECK(Schedule::parse("auto:0.1,0.5").validate_without_grid().empty());
-  CHECK(Schedule::parse("cp:1,1 cp:2,1/cc").validate_without_grid() ==
-        "level cp:2,1/cc needs a pixel grid");
-  CHECK(Schedule::parse("agg:1 cp:1,1").validate_without_grid() ==
-        "level agg:1 needs a pixel grid");
+  CHECK(Schedule::parse("cp:1,1 cp:2,1/cc agg:2/cc").validate_without_grid().empty());
+  CHECK(Schedule::parse("agg:1 local:1,1").validate_without_grid() ==
+        "level local:1,1 needs a pixel grid");
+  CHECK(Schedule::parse("cp:1,1 threshold:1/cc").validate_without_grid() ==
+        "level threshold:1/cc needs a pixel grid");
   CHECK(Schedule::parse("flat").validate_without_grid().empty());
 }
 

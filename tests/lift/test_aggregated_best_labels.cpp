@@ -36,6 +36,31 @@ DensePartition window_minimum_by_hand(const PairwiseEnergy& energy, GridShape sh
   return DensePartition::from_ids(best);
 }
 
+/// The graph version by the definition: the sums of each round as a whole table, taken edge by
+/// edge (each edge adds to both ends).
+DensePartition graph_minimum_by_hand(const PairwiseEnergy& energy, int radius) {
+  const std::size_t n = energy.num_variables();
+  const auto L = static_cast<std::size_t>(energy.num_labels());
+  std::vector<double> sums(n * L);
+  for (std::size_t v = 0; v < n; ++v)
+    for (std::size_t l = 0; l < L; ++l) sums[v * L + l] = energy.unary(v, static_cast<Label>(l));
+  for (int round = 0; round < radius; ++round) {
+    std::vector<double> next = sums;
+    for (const Edge& e : energy.edges()) {
+      for (std::size_t l = 0; l < L; ++l) {
+        next[e.u * L + l] += sums[e.v * L + l];
+        next[e.v * L + l] += sums[e.u * L + l];
+      }
+    }
+    sums.swap(next);
+  }
+  std::vector<std::int64_t> best(n);
+  for (std::size_t v = 0; v < n; ++v)
+    best[v] =
+        std::min_element(sums.begin() + v * L, sums.begin() + (v + 1) * L) - (sums.begin() + v * L);
+  return DensePartition::from_ids(best);
+}
+
 }  // namespace
 
 TEST_CASE("aggregated best labels group pixels by their window's cheapest label",
@@ -94,4 +119,53 @@ TEST_CASE("agg levels parse, print and build through the schedule",
   REQUIRE(level);
   CHECK(*level ==
         connected_components(aggregated_best_labels(lifting_view(energy), shape, 1), shape));
+}
+
+TEST_CASE("aggregated best labels on a graph sum over neighbourhoods",
+          "[lift][aggregated][graph]") {
+  // A path 0-1-2-3-4 given as a graph (edges out of order), the unaries of the row above:
+  // radius 1 sums a variable and its path neighbours, as the 3-wide window does on the row.
+  const std::vector<double> unaries{0, 1, 0, 1, 4, 0, 0, 1, 0, 1};
+  const PairwiseEnergy path(5, 2, unaries, {PairwiseTerm::potts()},
+                            {{2, 3, 1.0, 0}, {0, 1, 1.0, 0}, {3, 4, 1.0, 0}, {1, 2, 1.0, 0}});
+  auto groups = [&](int radius) {
+    const DensePartition p = aggregated_best_labels(lifting_view(path), radius);
+    return std::vector<VariableIndex>(p.group_ids().begin(), p.group_ids().end());
+  };
+  CHECK(groups(0) == std::vector<VariableIndex>{0, 0, 1, 0, 0});
+  CHECK(groups(1) == std::vector<VariableIndex>{0, 1, 1, 1, 0});
+  CHECK(aggregated_best_labels(lifting_view(path), 1) ==
+        aggregated_best_labels(lifting_view(path), {5, 1}, 1));
+  CHECK_THROWS_WITH(aggregated_best_labels(lifting_view(path), -1),
+                    Catch::Contains("radius must be >= 0"));
+
+  Rng rng(32);
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::size_t n = 2 + static_cast<std::size_t>(trial % 10);
+    const int radius = trial % 4;
+    const PairwiseEnergy energy = random_energy(rng, n, 2 + trial % 4, 2 * n);
+    INFO("trial " << trial << ": " << n << " variables, radius " << radius);
+    CHECK(aggregated_best_labels(lifting_view(energy), radius) ==
+          graph_minimum_by_hand(energy, radius));
+  }
+}
+
+TEST_CASE("agg and /cc levels build on an energy that is no pixel grid",
+          "[lift][aggregated][graph][schedule]") {
+  CHECK(Schedule::parse("agg:2/cc cp:1,1/cc").validate_without_grid().empty());
+  CHECK_THROWS_WITH(ScheduleProvider(Schedule::parse("agg:1 blocks:4")),
+                    Catch::Contains("level blocks:4 needs a pixel grid"));
+
+  Rng rng(9);
+  const PairwiseEnergy energy = random_energy(rng, 60, 3, 70);
+  const LiftingView view = lifting_view(energy);
+  ScheduleProvider provider(Schedule::parse("agg:2/cc agg:1 cp:1,1/cc"));
+  const auto first = provider.next(energy);
+  REQUIRE(first);
+  CHECK(*first == connected_components_along_edges(aggregated_best_labels(view, 2), view));
+  CHECK(provider.next(energy) == aggregated_best_labels(view, 1));
+  const auto third = provider.next(energy);
+  REQUIRE(third);
+  CHECK(*third == connected_components_along_edges(*third, view));  // components along the edges
+  CHECK_FALSE(provider.next(energy));
 }

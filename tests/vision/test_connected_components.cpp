@@ -24,6 +24,28 @@ TEST_CASE("groups split into their 4-connected components", "[lift][connected]")
   CHECK_THROWS_WITH(connected_components(p, {2, 2}), Catch::Contains("the 2x2 grid has 4 pixels"));
 }
 
+TEST_CASE("groups split into their components along an energy's edges", "[lift][connected]") {
+  // Edges 0-1, 1-2, 3-4 (5 alone); group 0 = {0, 2, 3, 4}, group 1 = {1, 5}.
+  const PairwiseEnergy energy(6, 2, std::vector<double>(12, 0.0), {PairwiseTerm::potts()},
+                              {{0, 1, 1.0, 0}, {2, 1, 1.0, 0}, {4, 3, 1.0, 0}});
+  const LiftingView view = lifting_view(energy);
+  const DensePartition p({0, 1, 0, 0, 0, 1}, 2);
+  const DensePartition cc = connected_components_along_edges(p, view);
+  CHECK(cc.num_groups() == 5);  // 0s: {0}, {2}, {3, 4}; 1s: {1}, {5}
+  CHECK(cc.group_of(3) == cc.group_of(4));
+  CHECK(cc.group_of(0) != cc.group_of(2));
+  CHECK(cc.group_of(1) != cc.group_of(5));
+  CHECK(cc.is_refinement_of(p));
+  CHECK_THROWS_WITH(connected_components_along_edges(DensePartition::identity(4), view),
+                    Catch::Contains("the partition has 4 variables, the energy 6"));
+  // On a grid energy the edges are the 4-neighbours: both versions agree.
+  Rng rng(45);
+  const PairwiseEnergy grid = random_grid_energy(rng, 9, 7, 3);
+  const DensePartition groups = random_partition(rng, 63, 3);
+  CHECK(connected_components_along_edges(groups, lifting_view(grid)) ==
+        connected_components(groups, {9, 7}));
+}
+
 TEST_CASE("connected components keep refining sequences nested", "[lift][connected][property]") {
   Rng rng(44);
   for (int trial = 0; trial < 40; ++trial) {

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
+
+#include "c2f/core/edge_incidence.hpp"
 
 namespace c2f {
 
@@ -62,6 +66,50 @@ DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, 
       best[y * w + x] = std::min_element(costs, costs + L) - costs;  // ties: the smallest label
     }
   }
+  return DensePartition::from_ids(best);
+}
+
+DensePartition aggregated_best_labels(const LiftingView& view, int radius) {
+  if (radius < 0) throw std::invalid_argument("aggregated_best_labels: radius must be >= 0");
+  const std::size_t n = view.num_variables;
+  const auto L = static_cast<std::size_t>(view.num_labels);
+  const EdgeIncidence neighbours(n, std::span<const ColourFactor>(view.factors));
+  std::vector<std::int64_t> best(n);
+  view.unaries.visit([&](auto unary) {
+    // Rounds 1 .. radius - 1 are kept whole (the next round reads every neighbour's); the last
+    // round is summed per variable and only its least label kept.
+    using Cost = std::remove_const_t<typename decltype(unary)::element_type>;
+    std::vector<Cost> current, next;
+    const auto sum_round = [&](auto previous, std::size_t v, double* out) {
+      for (std::size_t l = 0; l < L; ++l) out[l] = static_cast<double>(previous[v * L + l]);
+      for (const Incidence& incidence : neighbours.of(v)) {
+        const std::size_t u = incidence.other;
+        for (std::size_t l = 0; l < L; ++l) out[l] += static_cast<double>(previous[u * L + l]);
+      }
+    };
+    std::vector<double> sums(L);
+    for (int round = 1; round < radius; ++round) {
+      next.resize(n * L);
+      for (std::size_t v = 0; v < n; ++v) {
+        if (round == 1)
+          sum_round(unary, v, sums.data());
+        else
+          sum_round(std::span<const Cost>(current), v, sums.data());
+        for (std::size_t l = 0; l < L; ++l) next[v * L + l] = static_cast<Cost>(sums[l]);
+      }
+      current.swap(next);
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      if (radius == 0) {
+        for (std::size_t l = 0; l < L; ++l) sums[l] = static_cast<double>(unary[v * L + l]);
+      } else if (radius == 1) {
+        sum_round(unary, v, sums.data());
+      } else {
+        sum_round(std::span<const Cost>(current), v, sums.data());
+      }
+      best[v] = std::min_element(sums.begin(), sums.end()) - sums.begin();  // ties: smallest
+    }
+  });
   return DensePartition::from_ids(best);
 }
 

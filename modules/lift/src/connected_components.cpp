@@ -1,5 +1,8 @@
 #include "c2f/lift/connected_components.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "disjoint_sets.hpp"
 
 namespace c2f {
@@ -13,6 +16,20 @@ DensePartition connected_components(const DensePartition& partition, GridShape s
     if (v + w < shape.size() && partition.group_of(v) == partition.group_of(v + w))
       sets.unite(v, v + w);
   }
+  return sets.partition();
+}
+
+DensePartition connected_components_along_edges(const DensePartition& partition,
+                                                const LiftingView& view) {
+  if (partition.num_variables() != view.num_variables) {
+    throw std::invalid_argument("connected_components_along_edges: the partition has " +
+                                std::to_string(partition.num_variables()) +
+                                " variables, the energy " + std::to_string(view.num_variables));
+  }
+  detail::DisjointSets sets(view.num_variables);
+  for (const ColourFactor& factor : view.factors)
+    if (partition.group_of(factor.u) == partition.group_of(factor.v))
+      sets.unite(factor.u, factor.v);
   return sets.partition();
 }
 

@@ -7,16 +7,33 @@
 
 #include "c2f/lift/aggregated_best_labels.hpp"
 #include "c2f/lift/block_hierarchy.hpp"
+#include "c2f/lift/connected_components.hpp"
 #include "c2f/lift/local_grouping.hpp"
 #include "c2f/lift/threshold_partition.hpp"
 
 namespace c2f::detail {
 
-LevelBuilder::LevelBuilder(GridShape shape, SuperpixelSource superpixels)
+LevelBuilder::LevelBuilder(std::optional<GridShape> shape, SuperpixelSource superpixels)
     : shape_(shape), superpixels_(std::move(superpixels)) {}
+
+GridShape LevelBuilder::grid_of(const LevelSpec& spec) const {
+  if (!shape_) {
+    throw std::invalid_argument("schedule: level " + spec.to_string() +
+                                " needs a pixel grid, and this energy is none");
+  }
+  return *shape_;
+}
 
 DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& view,
                                    const DensePartition* previous) {
+  DensePartition partition = build_groups(spec, view, previous);
+  if (!spec.connected) return partition;
+  return shape_ ? connected_components(partition, *shape_)
+                : connected_components_along_edges(partition, view);
+}
+
+DensePartition LevelBuilder::build_groups(const LevelSpec& spec, const LiftingView& view,
+                                          const DensePartition* previous) {
   if (const auto* cp = std::get_if<ColourPassingLevel>(&spec.partition))
     return colour_passing(*cp, view);
   if (const auto* local = std::get_if<LocalGroupingLevel>(&spec.partition)) {
@@ -25,15 +42,17 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
                                   ": local grouping reads a pairwise energy's grid edges, and "
                                   "this energy is of another kind (use cp levels)");
     }
-    return local_grouping(*view.pairwise, shape_, local->labels, local->iterations);
+    return local_grouping(*view.pairwise, grid_of(spec), local->labels, local->iterations);
   }
   if (const auto* threshold = std::get_if<ThresholdLevel>(&spec.partition))
-    return threshold_partition(view, shape_, threshold->tau, threshold->radius);
-  if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition))
-    return aggregated_best_labels(view, shape_, aggregated->radius);
+    return threshold_partition(view, grid_of(spec), threshold->tau, threshold->radius);
+  if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition)) {
+    return shape_ ? aggregated_best_labels(view, *shape_, aggregated->radius)
+                  : aggregated_best_labels(view, aggregated->radius);
+  }
   if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))
-    return block_partition(shape_, static_cast<std::size_t>(blocks->size));
-  return superpixels(std::get<SlicLevel>(spec.partition), previous);
+    return block_partition(grid_of(spec), static_cast<std::size_t>(blocks->size));
+  return superpixels(spec, previous);
 }
 
 DensePartition LevelBuilder::colour_passing(const ColourPassingLevel& level,
@@ -47,10 +66,12 @@ DensePartition LevelBuilder::colour_passing(const ColourPassingLevel& level,
   return colour_passing_->partition();
 }
 
-DensePartition LevelBuilder::superpixels(const SlicLevel& level, const DensePartition* previous) {
-  DensePartition superpixels = superpixels_(level.region_size);
-  require_grid_size(superpixels.num_variables(), shape_,
-                    "schedule: level " + LevelSpec{level}.to_string(), "superpixel partition");
+DensePartition LevelBuilder::superpixels(const LevelSpec& spec, const DensePartition* previous) {
+  const GridShape shape = grid_of(spec);
+  DensePartition superpixels = superpixels_(std::get<SlicLevel>(spec.partition).region_size);
+  require_grid_size(superpixels.num_variables(), shape,
+                    "schedule: level " + LevelSpec{spec.partition}.to_string(),
+                    "superpixel partition");
   if (previous == nullptr) return superpixels;
   return intersect(*previous, superpixels);
 }

@@ -15,19 +15,28 @@ namespace c2f::detail {
 
 class LevelBuilder {
  public:
-  LevelBuilder(GridShape shape, SuperpixelSource superpixels);
+  /// No shape: the energy is no pixel grid, and only levels that read its factor graph (cp,
+  /// agg) can be built.
+  LevelBuilder(std::optional<GridShape> shape, SuperpixelSource superpixels);
 
-  /// The partition of `spec` for the energy seen through `view` (a grid energy of this shape),
-  /// before /cc. `previous` is the last level built (SLIC levels are intersected with it), or
-  /// null. Throws std::invalid_argument naming the level when it cannot be built.
+  /// The partition of `spec` for the energy seen through `view` (a grid energy of this shape,
+  /// or any energy without one), /cc applied. `previous` is the last level built (SLIC levels
+  /// are intersected with it), or null. Throws std::invalid_argument naming the level when it
+  /// cannot be built.
   DensePartition build(const LevelSpec& spec, const LiftingView& view,
                        const DensePartition* previous);
 
  private:
+  /// build() before /cc.
+  DensePartition build_groups(const LevelSpec& spec, const LiftingView& view,
+                              const DensePartition* previous);
   DensePartition colour_passing(const ColourPassingLevel& level, const LiftingView& view);
-  DensePartition superpixels(const SlicLevel& level, const DensePartition* previous);
+  DensePartition superpixels(const LevelSpec& spec, const DensePartition* previous);
 
-  GridShape shape_;
+  /// The grid shape for a level that needs one; throws naming the level without one.
+  GridShape grid_of(const LevelSpec& spec) const;
+
+  std::optional<GridShape> shape_;
   SuperpixelSource superpixels_;
   std::optional<ColourPassing> colour_passing_;
 };

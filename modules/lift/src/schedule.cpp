@@ -172,7 +172,8 @@ std::string Schedule::validate(int num_labels) const {
 
 std::string Schedule::validate_without_grid() const {
   for (const LevelSpec& level : levels) {
-    if (!std::holds_alternative<ColourPassingLevel>(level.partition) || level.connected)
+    if (!std::holds_alternative<ColourPassingLevel>(level.partition) &&
+        !std::holds_alternative<AggregatedLevel>(level.partition))
       return "level " + level.to_string() + " needs a pixel grid";
   }
   return {};

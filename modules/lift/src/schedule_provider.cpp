@@ -2,17 +2,18 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <variant>
 
 #include "c2f/lift/auto_levels.hpp"
-#include "c2f/lift/connected_components.hpp"
 #include "level_builder.hpp"
 
 namespace c2f {
 
 ScheduleProvider::ScheduleProvider(Schedule schedule, GridShape shape, SuperpixelSource superpixels)
     : schedule_(std::move(schedule)), shape_(shape) {
-  if (shape_.size() == 0) throw std::invalid_argument("ScheduleProvider: the grid is empty");
+  if (shape_->size() == 0) throw std::invalid_argument("ScheduleProvider: the grid is empty");
   for (const LevelSpec& level : schedule_.levels) {
     if (std::holds_alternative<SlicLevel>(level.partition) && !superpixels) {
       throw std::invalid_argument(
@@ -23,12 +24,18 @@ ScheduleProvider::ScheduleProvider(Schedule schedule, GridShape shape, Superpixe
   builder_ = std::make_unique<detail::LevelBuilder>(shape_, std::move(superpixels));
 }
 
+ScheduleProvider::ScheduleProvider(Schedule schedule) : schedule_(std::move(schedule)) {
+  if (const std::string problem = schedule_.validate_without_grid(); !problem.empty())
+    throw std::invalid_argument("ScheduleProvider: " + problem);
+  builder_ = std::make_unique<detail::LevelBuilder>(std::nullopt, SuperpixelSource{});
+}
+
 ScheduleProvider::~ScheduleProvider() = default;
 ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
 ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
 
 std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) {
-  require_grid_size(energy.num_variables, shape_, "ScheduleProvider");
+  if (shape_) require_grid_size(energy.num_variables, *shape_, "ScheduleProvider");
   const auto start = std::chrono::steady_clock::now();
   if (!started_) {
     started_ = true;
@@ -40,7 +47,6 @@ std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) 
   if (position_ >= levels_.size()) return std::nullopt;
   const LevelSpec& spec = levels_[position_];
   DensePartition partition = builder_->build(spec, energy, previous_ ? &*previous_ : nullptr);
-  if (spec.connected) partition = connected_components(partition, shape_);
   ++position_;
   reports_.push_back(
       {spec.to_string(), partition.num_groups(),

@@ -20,7 +20,7 @@ RunConfig RunDefaults::config() const {
 RunDefaults pairwise_defaults() {
   RunDefaults defaults;
   defaults.grid_schedule = "agg:2/cc";
-  defaults.general_schedule = "cp:1,1";
+  defaults.general_schedule = "agg:2/cc";
   defaults.shift_moves_unless_submodular = true;
   return defaults;
 }

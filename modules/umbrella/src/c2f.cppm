@@ -44,6 +44,7 @@ using c2f::ColourFactor;
 using c2f::ColourPassing;
 using c2f::ColourPassingLevel;
 using c2f::connected_components;
+using c2f::connected_components_along_edges;
 using c2f::Connectivity;
 using c2f::ConvergingSolver;
 using c2f::CoopAuxiliary;

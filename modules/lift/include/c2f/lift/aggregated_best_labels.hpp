@@ -2,7 +2,8 @@
 // Aggregated best labels: pixels whose unary costs, summed over a window around them, are
 // cheapest at the same label share a group. The sum smooths the per-pixel best labels (noisy
 // where the unaries are, as stereo matching costs are), so with /cc the groups are far fewer
-// and larger regions than those of equal per-pixel best labels (local:1,1/cc).
+// and larger regions than those of equal per-pixel best labels (local:1,1/cc). On an energy
+// that is no pixel grid the sum runs over graph neighbourhoods instead of windows.
 
 #include "c2f/core/grid.hpp"
 #include "c2f/lift/dense_partition.hpp"
@@ -19,5 +20,16 @@ namespace c2f {
 /// the grid, so they are exact up to rounding, and rounding may break near-ties. Throws
 /// std::invalid_argument when the view does not have width * height variables or radius < 0.
 DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius);
+
+/// The same on the graph of the view's factors, for an energy that is no pixel grid: the costs
+/// are summed `radius` times over graph neighbourhoods, s_0 = unary and s_{k+1}(v) = s_k(v) +
+/// sum of s_k(u) over the factors {u, v} (a factor listed twice counts twice), and v is in group
+/// l when l is the least of s_radius(v) (ties: the smallest label). Groups are numbered in the
+/// order of their smallest variable and need not be connected (connected_components_along_edges
+/// splits them). On a 4-connected grid, radius 1 sums the pixel and its four neighbours.
+/// O(radius * (N + F) * L) time, O(L) extra memory for radius <= 1 and N * L costs per round
+/// (in the unaries' precision) beyond the first otherwise. Throws std::invalid_argument when radius
+/// < 0.
+DensePartition aggregated_best_labels(const LiftingView& view, int radius);
 
 }  // namespace c2f

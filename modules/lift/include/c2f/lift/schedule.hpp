@@ -8,14 +8,16 @@
 //   threshold:TAU[,R]    threshold partition with L1 distance TAU, window radius R (default 1)
 //   slic:S               SLIC superpixels of region size S, nested into the previous level
 //   agg:R                pixels of equal best label after summing unaries over a (2R+1) x
-//                        (2R+1) window (aggregated_best_labels.hpp)
+//                        (2R+1) window, or without a grid R times over graph neighbours
+//                        (aggregated_best_labels.hpp)
 //   blocks:S             S x S pixel blocks
 //   auto:F1,F2,...       colour-passing levels whose group counts are closest to the fractions
 //                        F1 < F2 < ... of the number of pixels (alone, optionally + flat)
 //   flat                 no coarse level (alone: the flat run)
 //   NAME                 a preset the application offers (alone), e.g. stereo's `paper`
-// Any level may end in /cc: its groups are split into 4-connected components
-// (connected_components.hpp), e.g. cp:1,1/cc.
+// Any level may end in /cc: its groups are split into 4-connected components, or without a
+// grid into components along the energy's edges (connected_components.hpp), e.g. cp:1,1/cc.
+// Without a grid only cp, agg and auto levels can be built.
 
 #include <span>
 #include <string>
@@ -58,8 +60,8 @@ struct Schedule {
   /// first level that cannot (a SLIC region larger than the image's shorter side).
   [[nodiscard]] std::string validate_image(GridShape image) const;
   /// Empty when every level can be built for an energy that is no pixel grid (colour passing,
-  /// auto levels), else "level L needs a pixel grid" for the first that cannot (an image
-  /// partition, or /cc: connected components need grid neighbours).
+  /// aggregated best labels, auto levels; /cc along the energy's edges), else "level L needs a
+  /// pixel grid" for the first that cannot (local, threshold, slic, blocks).
   [[nodiscard]] std::string validate_without_grid() const;
 };
 

@@ -33,8 +33,10 @@ namespace detail {
 class LevelBuilder;
 }
 
-/// A PartitionProvider for PairwiseEnergy on a width x height grid that builds the schedule's
-/// levels on demand (on the caller's clock). Colour-passing levels advance one colour-passing
+/// A PartitionProvider that builds the schedule's levels on demand (on the caller's clock), for
+/// an energy on a width x height pixel grid or on any graph. Without a grid, agg levels sum over
+/// graph neighbourhoods and /cc follows the energy's factors; image levels (local, threshold,
+/// slic, blocks) need a grid. Colour-passing levels advance one colour-passing
 /// state (first raising N_L, then iterating), so consecutive cp levels with non-decreasing N_L
 /// and N_iter refine each other; a cp level that goes back starts a fresh state. SLIC levels
 /// are intersected with the previous level. Whether consecutive levels refine each other is the
@@ -44,6 +46,9 @@ class ScheduleProvider {
   /// Throws std::invalid_argument for an empty grid, or a slic level without a superpixel
   /// source.
   ScheduleProvider(Schedule schedule, GridShape shape, SuperpixelSource superpixels = {});
+  /// For an energy that is no pixel grid. Throws std::invalid_argument naming the first level
+  /// that needs a grid (Schedule::validate_without_grid).
+  explicit ScheduleProvider(Schedule schedule);
   ~ScheduleProvider();
   ScheduleProvider(ScheduleProvider&&) noexcept;
   ScheduleProvider& operator=(ScheduleProvider&&) noexcept;
@@ -84,7 +89,7 @@ class ScheduleProvider {
 
  private:
   Schedule schedule_;
-  GridShape shape_;
+  std::optional<GridShape> shape_;  ///< none: the energy is no pixel grid
   std::unique_ptr<detail::LevelBuilder> builder_;
   const void* viewed_ = nullptr;  ///< the energy view_ shows
   std::optional<LiftingView> view_;

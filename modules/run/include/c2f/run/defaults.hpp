@@ -31,8 +31,9 @@ struct RunDefaults {
   [[nodiscard]] RunConfig config() const;
 };
 
-/// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels of 5x5-summed
-/// unaries split into connected regions on a grid (agg:2/cc), colour passing CP(1,1) elsewhere;
+/// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels split into
+/// connected regions (agg:2/cc: unaries summed over 5x5 windows on a grid, over two rounds of
+/// graph neighbours on any other graph);
 /// whole expansion moves, with shift moves on energies where some expansion move is not
 /// submodular (e.g. truncated quadratic); a coarse level ends after 4 moves without decrease.
 [[nodiscard]] RunDefaults pairwise_defaults();
