@@ -27,9 +27,9 @@ DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, 
 /// l when l is the least of s_radius(v) (ties: the smallest label). Groups are numbered in the
 /// order of their smallest variable and need not be connected (connected_components_along_edges
 /// splits them). On a 4-connected grid, radius 1 sums the pixel and its four neighbours.
-/// O(radius * (N + F) * L) time, O(L) extra memory for radius <= 1 and N * L costs per round
-/// (in the unaries' precision) beyond the first otherwise. Throws std::invalid_argument when radius
-/// < 0.
+/// O(radius * (N + F) * L) time; extra memory: the neighbour lists, O(N + F), and for radius
+/// >= 2 one table of N * L sums in the unaries' precision (two from radius 3). Throws
+/// std::invalid_argument when radius < 0.
 DensePartition aggregated_best_labels(const LiftingView& view, int radius);
 
 }  // namespace c2f
