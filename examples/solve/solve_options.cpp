@@ -32,12 +32,17 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   std::string grid;
   const RunDefaults defaults = pairwise_defaults();
   RunFlags run(defaults);
+  const std::string default_schedule =
+      defaults.grid_schedule == defaults.general_schedule
+          ? defaults.grid_schedule
+          : defaults.grid_schedule + " with --grid, else " + defaults.general_schedule;
   const std::string schedule_help =
-      "default: " + defaults.grid_schedule + " with --grid, else " + defaults.general_schedule +
+      "default: " + default_schedule +
       " (the measured best, docs/results.md); flat (the original problem only, the fair "
-      "baseline), paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,... or colour-passing levels "
-      "such as \"cp:2,1 cp:2,2 flat\", agg:R levels and /cc; with --grid also local, threshold "
-      "and blocks levels (see docs/solve.md)";
+      "baseline), paper (cp:1,1 cp:2,1 cp:3,1 flat), auto:F1,F2,..., colour-passing levels "
+      "such as \"cp:2,1 cp:2,2 flat\", agg:R (unaries summed over (2R+1)^2 windows with --grid, "
+      "R times over graph neighbours without) and /cc; with --grid also local, threshold and "
+      "blocks levels (see docs/solve.md)";
   ToolOptions options(
       "c2f-solve: minimises any pairwise model in the UAI MARKOV format (as toulbar2, OpenGM's\n"
       "converters and the UAI competitions write it), flat or coarse to fine.\n\n"
