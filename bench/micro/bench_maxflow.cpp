@@ -93,6 +93,20 @@ void BM_Solve(benchmark::State& state) {
   state.counters["flow"] = value;
 }
 
+/// DynamicMaxFlow::solve_cut in state.range(1) bands of rows on state.range(2) threads (one
+/// band: the serial solve_cut).
+void BM_SolveInParts(benchmark::State& state) {
+  const GridFlow& flow = grid_flow(static_cast<std::size_t>(state.range(0)));
+  const auto parts = static_cast<std::size_t>(state.range(1));
+  std::vector<std::uint8_t> part(flow.nodes);
+  for (std::size_t i = 0; i < flow.nodes; ++i)
+    part[i] = static_cast<std::uint8_t>(i * parts / flow.nodes);
+  DynamicMaxFlow backend;
+  backend.build(flow.nodes, flow.edges);
+  for (auto _ : state) backend.solve_cut(flow.caps, part, static_cast<int>(state.range(2)));
+  state.counters["augmentations"] = static_cast<double>(backend.last_solve().augmentations);
+}
+
 /// One re-solve per iteration, alternating between the base capacities and a copy with
 /// state.range(1)% of the terminal pairs changed.
 template <class Backend>
@@ -174,6 +188,10 @@ void BM_ExpansionMove(benchmark::State& state) {
 
 #define C2F_RESOLVE_ARGS ->Args({512, 1})->Args({512, 10})->Args({1024, 1})->Args({1024, 10})
 
+BENCHMARK(BM_SolveInParts)
+    ->ArgsProduct({{512, 1024}, {1, 2, 4, 8}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_TEMPLATE(BM_Build, DynamicMaxFlow)
     ->Arg(64)
     ->Arg(512)

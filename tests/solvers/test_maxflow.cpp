@@ -248,3 +248,71 @@ TEST_CASE(
   unsolved.build(2, std::vector<FlowEdge>{{0, 1}});
   CHECK_THROWS_WITH(unsolved.resolve(), Catch::Contains("solve() first"));
 }
+
+namespace {
+
+/// Part ids of a problem's nodes: `parts` ranges of about equal size (a band layout), or random.
+std::vector<std::uint8_t> node_parts(Rng& rng, std::size_t num_nodes, std::size_t parts,
+                                     bool random) {
+  std::vector<std::uint8_t> part(num_nodes);
+  std::uniform_int_distribution<std::size_t> any(0, parts - 1);
+  for (std::size_t i = 0; i < num_nodes; ++i)
+    part[i] = static_cast<std::uint8_t>(random ? any(rng) : i * parts / num_nodes);
+  return part;
+}
+
+}  // namespace
+
+TEST_CASE("dynamic max-flow in parts: the brute-force minimum cut on tiny graphs",
+          "[maxflow][dynamic][parts][brute-force]") {
+  Rng rng(909);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 10)(rng);
+    auto problem =
+        random_flow_problem(rng, n, std::uniform_int_distribution<std::size_t>(1, 3 * n)(rng));
+    const auto part = node_parts(rng, n, 1 + trial % 4, trial % 2 == 1);
+    DynamicMaxFlow dynamic;
+    dynamic.build(problem.num_nodes, problem.edges);
+    dynamic.solve_cut(problem.caps, part, 1 + trial % 3);
+    INFO("trial " << trial);
+    CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
+                         brute_force_min_cut(problem), 1e-9));
+    // It resolves on from the flow the parts left, as after any solve.
+    const FlowCapacities before = problem.caps;
+    change_capacities(rng, problem.caps, 0.3, false);
+    resolve_with(dynamic, before, problem.caps);
+    CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
+                         brute_force_min_cut(problem), 1e-9));
+  }
+}
+
+TEST_CASE(
+    "dynamic max-flow in parts: with integral capacities exactly the source set of a serial "
+    "solve, and the same bits for every thread count",
+    "[maxflow][dynamic][parts]") {
+  Rng rng(4242);
+  for (int trial = 0; trial < 24; ++trial) {
+    auto problem = random_flow_problem(rng, 600, 2400);
+    change_capacities(rng, problem.caps, 1.0, true);
+    const auto part = node_parts(rng, problem.num_nodes, 2 + trial % 7, trial % 3 == 0);
+    BoostMaxFlow boost;
+    boost.build(problem.num_nodes, problem.edges);
+    const double flow = boost.solve(problem.caps);
+    std::vector<char> first;
+    for (const int threads : {1, 2, 3}) {
+      INFO("trial " << trial << ", " << threads << " threads");
+      DynamicMaxFlow dynamic;
+      dynamic.build(problem.num_nodes, problem.edges);
+      dynamic.solve_cut(problem.caps, part, threads);
+      CHECK(cut_capacity(problem.caps, problem.edges, source_set(dynamic)) == flow);
+      CHECK(source_set(dynamic) == source_set(boost));
+      if (threads == 1) first = source_set(dynamic);
+      CHECK(source_set(dynamic) == first);
+    }
+  }
+  DynamicMaxFlow dynamic;
+  auto problem = random_flow_problem(rng, 10, 20);
+  dynamic.build(problem.num_nodes, problem.edges);
+  CHECK_THROWS_WITH(dynamic.solve_cut(problem.caps, std::vector<std::uint8_t>(9, 0), 2),
+                    Catch::Contains("9 part ids for 10 nodes"));
+}

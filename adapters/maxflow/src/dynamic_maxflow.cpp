@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "c2f/support/parallel_for.hpp"
+
 namespace c2f {
 
 namespace {
@@ -67,37 +69,24 @@ void assign_huge(std::vector<T>& to, const std::vector<T>& from) {
 
 }  // namespace
 
-struct DynamicMaxFlow::Impl {
-  std::size_t num_nodes = 0;
-  std::size_t num_edges = 0;
-  std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
-  std::vector<Node> nodes;                   // num_nodes
-  std::vector<double> residual;              // per arc
-  bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
-  Index time = 0;
-  Index first_active = kNone, last_active = kNone;
-  std::vector<Index> orphans, touched;
-  DynamicSolveStats stats;
+/// One search over the graph's nodes, or over one part of them: the active queue, the orphan
+/// list and the clock of the distance stamps, held by reference. The serial solve searches with
+/// the graph's own. A parallel solve (solve_cut with parts) gives each part its own over
+/// disjoint nodes, with the arcs between parts closed (no residual either way, so no tree grows
+/// or augments across them) and `part` set, so that no step reads a node of another part.
+struct Search {
+  Node* nodes;
+  double* residual;
+  const Topology& t;
+  Index& time;
+  Index& first_active;
+  Index& last_active;
+  std::vector<Index>& orphans;
+  std::size_t& augmentations;
+  const std::uint8_t* part = nullptr;  ///< parallel: each node's part (null: one search)
+  std::uint8_t mine = 0;               ///< parallel: this search's part
 
-  Impl() = default;
-  /// A copy with the same flow and trees (the graph arrays on huge pages where possible).
-  Impl(const Impl& other)
-      : num_nodes(other.num_nodes),
-        num_edges(other.num_edges),
-        topology(other.topology),
-        has_flow(other.has_flow),
-        time(other.time),
-        first_active(other.first_active),
-        last_active(other.last_active),
-        orphans(other.orphans),
-        touched(other.touched),
-        stats(other.stats) {
-    assign_huge(nodes, other.nodes);
-    assign_huge(residual, other.residual);
-    orphans.reserve(num_nodes);
-    touched.reserve(num_nodes);
-  }
-  Impl& operator=(const Impl&) = delete;
+  [[nodiscard]] bool other_part(Index j) const { return part != nullptr && part[j] != mine; }
 
   void activate(Index i) {
     Node& node = nodes[i];
@@ -137,98 +126,17 @@ struct DynamicMaxFlow::Impl {
   [[nodiscard]] bool parent_arc_open(Index i) const {
     const Node& node = nodes[i];
     const Index up = node.parent;
-    return node.tree == kSourceTree ? residual[topology->sister[up]] > 0.0 : residual[up] > 0.0;
-  }
-
-  /// Whether every capacity is finite and >= 0: one branch-free pass; check_capacities, which
-  /// names the offending entry, runs only when this fails.
-  [[nodiscard]] static bool all_valid(std::span<const double> values) {
-    bool valid = true;
-    for (const double c : values) valid &= c >= 0.0 && c <= std::numeric_limits<double>::max();
-    return valid;
-  }
-
-  void start_from_zero_flow(const FlowCapacities& caps) {
-    for (std::size_t i = 0; i < num_nodes; ++i) {
-      Node& node = nodes[i];
-      node.excess = caps.source[i] - caps.sink[i];
-      node.next_active = kNone;
-      node.stamp = 0;
-      node.distance = 1;
-      node.touched = false;
-      if (node.excess != 0.0) {
-        node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
-        node.parent = kTerminal;
-      } else {
-        node.tree = kFree;
-        node.parent = kNone;
-      }
-    }
-    first_active = last_active = kNone;
-    for (std::size_t i = 0; i < num_nodes; ++i)
-      if (nodes[i].tree != kFree) activate(static_cast<Index>(i));
-    const Topology& t = *topology;
-    for (std::size_t e = 0; e < num_edges; ++e) {
-      const Index forward = t.forward_arc[e];
-      residual[forward] = caps.forward[e];
-      residual[t.sister[forward]] = caps.backward[e];
-    }
-    time = 0;
-  }
-
-  void touch(Index i) {
-    if (nodes[i].touched) return;
-    nodes[i].touched = true;
-    touched.push_back(i);
-  }
-
-  /// Moves node i's residual terminal capacity by delta (a change of source - sink).
-  void change_terminal(Index i, double delta) {
-    nodes[i].excess += delta;
-    touch(i);
-    ++stats.changed_nodes;
-  }
-
-  /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
-  /// cancelled and handed to the endpoints' terminal arcs.
-  void change_edge(std::size_t e, double delta_forward, double delta_backward) {
-    const Topology& t = *topology;
-    const Index forward = t.forward_arc[e];
-    const Index backward = t.sister[forward];
-    const Index from = t.head[backward];
-    const Index to = t.head[forward];
-    double forward_residual = residual[forward] + delta_forward;
-    double backward_residual = residual[backward] + delta_backward;
-    if (forward_residual < 0.0) {
-      // More flow from -> to than the new capacity: cancel the surplus; `from` keeps it
-      // (towards its sink arc), `to` misses it (from its source arc).
-      const double surplus = -forward_residual;
-      nodes[from].excess += surplus;
-      nodes[to].excess -= surplus;
-      backward_residual += forward_residual;
-      forward_residual = 0.0;
-    } else if (backward_residual < 0.0) {
-      const double surplus = -backward_residual;
-      nodes[to].excess += surplus;
-      nodes[from].excess -= surplus;
-      forward_residual += backward_residual;
-      backward_residual = 0.0;
-    }
-    residual[forward] = std::max(forward_residual, 0.0);  // max: rounding below zero
-    residual[backward] = std::max(backward_residual, 0.0);
-    touch(from);
-    touch(to);
-    ++stats.changed_edges;
+    return node.tree == kSourceTree ? residual[t.sister[up]] > 0.0 : residual[up] > 0.0;
   }
 
   /// Node o leaves its tree: its children there become orphans, and the neighbours there with
   /// residual towards o are searched again (a searched source-tree node must have every
   /// residual out-arc inside its tree, a searched sink-tree node every residual in-arc).
   void leave_tree(Index o) {
-    const Topology& t = *topology;
     const Tree tree = nodes[o].tree;
     for (Index a = t.first_arc[o]; a < t.first_arc[o + 1]; ++a) {
       const Index j = t.head[a];
+      if (other_part(j)) continue;
       Node& neighbour = nodes[j];
       if (neighbour.tree != tree) continue;
       const double towards_o = tree == kSourceTree ? residual[t.sister[a]] : residual[a];
@@ -237,30 +145,6 @@ struct DynamicMaxFlow::Impl {
           t.head[neighbour.parent] == o)
         make_orphan(j);
     }
-  }
-
-  /// Restores the search-tree invariants at the touched nodes: a node with terminal residual
-  /// hangs from that terminal (leaving its old tree if the sign changed), a tree arc without
-  /// residual makes an orphan, and every touched tree node is searched again.
-  void repair_touched_nodes() {
-    for (const Index i : touched) {
-      Node& node = nodes[i];
-      node.touched = false;
-      if (node.excess != 0.0) {
-        const Tree tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
-        if (node.tree != kFree && node.tree != tree) leave_tree(i);
-        node.tree = tree;
-        node.parent = kTerminal;
-        node.stamp = time;
-        node.distance = 1;
-        activate(i);
-      } else if (node.tree != kFree) {
-        if (node.parent == kTerminal || (node.parent != kNone && !parent_arc_open(i)))
-          make_orphan(i);
-        activate(i);
-      }
-    }
-    touched.clear();
   }
 
   /// Walks from node j to its terminal; the distance, or kNone when the walk meets an orphan.
@@ -283,10 +167,10 @@ struct DynamicMaxFlow::Impl {
         break;
       }
       if (node.parent == kNone) return kNone;
-      k = topology->head[node.parent];
+      k = t.head[node.parent];
     }
     Index d = total;
-    for (k = j; nodes[k].stamp != time; k = topology->head[nodes[k].parent]) {
+    for (k = j; nodes[k].stamp != time; k = t.head[nodes[k].parent]) {
       nodes[k].stamp = time;
       nodes[k].distance = d--;
     }
@@ -299,10 +183,9 @@ struct DynamicMaxFlow::Impl {
     const Tree tree = orphan.tree;
     Index best_arc = kNone;
     Index best_distance = kNone;
-    const Topology& t = *topology;
     for (Index a = t.first_arc[o]; a < t.first_arc[o + 1]; ++a) {
       const Index j = t.head[a];
-      if (nodes[j].tree != tree) continue;
+      if (other_part(j) || nodes[j].tree != tree) continue;
       const double towards_o = tree == kSourceTree ? residual[t.sister[a]] : residual[a];
       if (!(towards_o > 0.0)) continue;
       const Index d = distance_to_terminal(j);
@@ -329,7 +212,6 @@ struct DynamicMaxFlow::Impl {
   /// Pushes the bottleneck along source terminal -> ... -> u -> v -> ... -> sink terminal,
   /// where `middle` is the arc u -> v; saturated tree arcs and terminals make orphans.
   void augment(Index middle) {
-    const Topology& t = *topology;
     const Index u = t.head[t.sister[middle]];
     const Index v = t.head[middle];
     double bottleneck = residual[middle];
@@ -380,13 +262,12 @@ struct DynamicMaxFlow::Impl {
       if (residual[up] == 0.0) make_orphan(x);
       x = parent;
     }
-    ++stats.augmentations;
+    ++augmentations;
   }
 
   /// Grows the tree of node i by one scan of its arcs; the arc from the source side to the sink
   /// side when the trees meet there, else kNone.
   Index grow(Index i) {
-    const Topology& t = *topology;
     Node& node = nodes[i];
     const bool source_side = node.tree == kSourceTree;
     for (Index a = t.first_arc[i]; a < t.first_arc[i + 1]; ++a) {
@@ -426,6 +307,228 @@ struct DynamicMaxFlow::Impl {
       adopt_orphans();
     }
   }
+};
+
+struct DynamicMaxFlow::Impl {
+  std::size_t num_nodes = 0;
+  std::size_t num_edges = 0;
+  std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
+  std::vector<Node> nodes;                   // num_nodes
+  std::vector<double> residual;              // per arc
+  bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
+  Index time = 0;
+  Index first_active = kNone, last_active = kNone;
+  std::vector<Index> orphans, touched;
+  DynamicSolveStats stats;
+
+  Impl() = default;
+  /// A copy with the same flow and trees (the graph arrays on huge pages where possible).
+  Impl(const Impl& other)
+      : num_nodes(other.num_nodes),
+        num_edges(other.num_edges),
+        topology(other.topology),
+        has_flow(other.has_flow),
+        time(other.time),
+        first_active(other.first_active),
+        last_active(other.last_active),
+        orphans(other.orphans),
+        touched(other.touched),
+        stats(other.stats) {
+    assign_huge(nodes, other.nodes);
+    assign_huge(residual, other.residual);
+    orphans.reserve(num_nodes);
+    touched.reserve(num_nodes);
+  }
+  Impl& operator=(const Impl&) = delete;
+
+  /// Whether every capacity is finite and >= 0: one branch-free pass; check_capacities, which
+  /// names the offending entry, runs only when this fails.
+  [[nodiscard]] static bool all_valid(std::span<const double> values) {
+    bool valid = true;
+    for (const double c : values) valid &= c >= 0.0 && c <= std::numeric_limits<double>::max();
+    return valid;
+  }
+
+  /// Throws std::invalid_argument naming the first capacity that does not fit the graph.
+  void check_solvable(const FlowCapacities& caps) const {
+    const bool sizes_fit = caps.source.size() == num_nodes && caps.sink.size() == num_nodes &&
+                           caps.forward.size() == num_edges && caps.backward.size() == num_edges;
+    if (!sizes_fit || !all_valid(caps.source) || !all_valid(caps.sink) ||
+        !all_valid(caps.forward) || !all_valid(caps.backward)) {
+      throw std::invalid_argument("DynamicMaxFlow::solve: " +
+                                  check_capacities(caps, num_nodes, num_edges));
+    }
+  }
+
+  /// Zero flow on `caps`, every node with terminal residual hanging from its terminal, and
+  /// nothing queued yet.
+  void load_zero_flow(const FlowCapacities& caps) {
+    for (std::size_t i = 0; i < num_nodes; ++i) {
+      Node& node = nodes[i];
+      node.excess = caps.source[i] - caps.sink[i];
+      node.next_active = kNone;
+      node.stamp = 0;
+      node.distance = 1;
+      node.touched = false;
+      if (node.excess != 0.0) {
+        node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
+        node.parent = kTerminal;
+      } else {
+        node.tree = kFree;
+        node.parent = kNone;
+      }
+    }
+    first_active = last_active = kNone;
+    const Topology& t = *topology;
+    for (std::size_t e = 0; e < num_edges; ++e) {
+      const Index forward = t.forward_arc[e];
+      residual[forward] = caps.forward[e];
+      residual[t.sister[forward]] = caps.backward[e];
+    }
+    time = 0;
+  }
+
+  void start_from_zero_flow(const FlowCapacities& caps) {
+    load_zero_flow(caps);
+    Search s = search();
+    for (std::size_t i = 0; i < num_nodes; ++i)
+      if (nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
+  }
+
+  /// The flow of `caps` from zero in two stages: every part's nodes as a graph of their own, the
+  /// arcs between parts closed, the parts at once on up to `threads` threads; then the arcs
+  /// between parts opened and the whole graph searched on from the parts' flows and trees (a
+  /// valid state: closed arcs carried no flow), starting at the nodes those arcs join.
+  void solve_in_parts(const FlowCapacities& caps, std::span<const std::uint8_t> part,
+                      std::size_t parts, int threads) {
+    load_zero_flow(caps);
+    const Topology& t = *topology;
+    std::vector<std::size_t> between;  // edges joining two parts
+    for (std::size_t e = 0; e < num_edges; ++e) {
+      const Index forward = t.forward_arc[e];
+      if (part[t.head[forward]] == part[t.head[t.sister[forward]]]) continue;
+      between.push_back(e);
+      residual[forward] = residual[t.sister[forward]] = 0.0;
+    }
+    struct PartSearch {
+      Index time = 0, first_active = kNone, last_active = kNone;
+      std::vector<Index> orphans;
+      std::size_t augmentations = 0;
+    };
+    std::vector<PartSearch> searches(parts);
+    parallel_for(
+        parts,
+        [&](std::size_t k) {
+          PartSearch& own = searches[k];
+          Search s{nodes.data(),
+                   residual.data(),
+                   t,
+                   own.time,
+                   own.first_active,
+                   own.last_active,
+                   own.orphans,
+                   own.augmentations,
+                   part.data(),
+                   static_cast<std::uint8_t>(k)};
+          for (std::size_t i = 0; i < num_nodes; ++i)
+            if (part[i] == k && nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
+          s.run();
+        },
+        threads);
+    for (const PartSearch& own : searches) {
+      time = std::max(time, own.time);  // every stamp is at most this
+      stats.augmentations += own.augmentations;
+    }
+    for (const std::size_t e : between) {
+      const Index forward = t.forward_arc[e];
+      residual[forward] = caps.forward[e];
+      residual[t.sister[forward]] = caps.backward[e];
+      touch(t.head[forward]);
+      touch(t.head[t.sister[forward]]);
+    }
+    ++time;
+    repair_touched_nodes();
+    adopt_orphans();
+    run();
+  }
+
+  void touch(Index i) {
+    if (nodes[i].touched) return;
+    nodes[i].touched = true;
+    touched.push_back(i);
+  }
+
+  /// Moves node i's residual terminal capacity by delta (a change of source - sink).
+  void change_terminal(Index i, double delta) {
+    nodes[i].excess += delta;
+    touch(i);
+    ++stats.changed_nodes;
+  }
+
+  /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
+  /// cancelled and handed to the endpoints' terminal arcs.
+  void change_edge(std::size_t e, double delta_forward, double delta_backward) {
+    const Topology& t = *topology;
+    const Index forward = t.forward_arc[e];
+    const Index backward = t.sister[forward];
+    const Index from = t.head[backward];
+    const Index to = t.head[forward];
+    double forward_residual = residual[forward] + delta_forward;
+    double backward_residual = residual[backward] + delta_backward;
+    if (forward_residual < 0.0) {
+      // More flow from -> to than the new capacity: cancel the surplus; `from` keeps it
+      // (towards its sink arc), `to` misses it (from its source arc).
+      const double surplus = -forward_residual;
+      nodes[from].excess += surplus;
+      nodes[to].excess -= surplus;
+      backward_residual += forward_residual;
+      forward_residual = 0.0;
+    } else if (backward_residual < 0.0) {
+      const double surplus = -backward_residual;
+      nodes[to].excess += surplus;
+      nodes[from].excess -= surplus;
+      forward_residual += backward_residual;
+      backward_residual = 0.0;
+    }
+    residual[forward] = std::max(forward_residual, 0.0);  // max: rounding below zero
+    residual[backward] = std::max(backward_residual, 0.0);
+    touch(from);
+    touch(to);
+    ++stats.changed_edges;
+  }
+
+  /// Restores the search-tree invariants at the touched nodes: a node with terminal residual
+  /// hangs from that terminal (leaving its old tree if the sign changed), a tree arc without
+  /// residual makes an orphan, and every touched tree node is searched again.
+  void repair_touched_nodes() {
+    Search s = search();
+    for (const Index i : touched) {
+      Node& node = nodes[i];
+      node.touched = false;
+      if (node.excess != 0.0) {
+        const Tree tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
+        if (node.tree != kFree && node.tree != tree) s.leave_tree(i);
+        node.tree = tree;
+        node.parent = kTerminal;
+        node.stamp = time;
+        node.distance = 1;
+        s.activate(i);
+      } else if (node.tree != kFree) {
+        if (node.parent == kTerminal || (node.parent != kNone && !s.parent_arc_open(i)))
+          s.make_orphan(i);
+        s.activate(i);
+      }
+    }
+    touched.clear();
+  }
+
+  /// The search with the graph's own queue, orphans and clock.
+  Search search() {
+    return {nodes.data(), residual.data(), *topology, time,
+            first_active, last_active,     orphans,   stats.augmentations};
+  }
+  void adopt_orphans() { search().adopt_orphans(); }
+  void run() { search().run(); }
 
   [[nodiscard]] double cut_value(const FlowCapacities& caps) const {
     double total = 0.0;
@@ -510,17 +613,31 @@ double DynamicMaxFlow::solve(const FlowCapacities& caps) {
 void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
   Impl& m = *impl_;
   if (!m.topology) throw std::logic_error("DynamicMaxFlow::solve: call build() first");
-  const bool sizes_fit = caps.source.size() == m.num_nodes && caps.sink.size() == m.num_nodes &&
-                         caps.forward.size() == m.num_edges && caps.backward.size() == m.num_edges;
-  if (!sizes_fit || !Impl::all_valid(caps.source) || !Impl::all_valid(caps.sink) ||
-      !Impl::all_valid(caps.forward) || !Impl::all_valid(caps.backward)) {
-    throw std::invalid_argument("DynamicMaxFlow::solve: " +
-                                check_capacities(caps, m.num_nodes, m.num_edges));
-  }
+  m.check_solvable(caps);
   m.stats = {};
   m.start_from_zero_flow(caps);
   m.has_flow = true;
   m.run();
+}
+
+void DynamicMaxFlow::solve_cut(const FlowCapacities& caps, std::span<const std::uint8_t> part,
+                               int threads) {
+  Impl& m = *impl_;
+  if (!m.topology) throw std::logic_error("DynamicMaxFlow::solve_cut: call build() first");
+  if (part.size() != m.num_nodes) {
+    throw std::invalid_argument("DynamicMaxFlow::solve_cut: " + std::to_string(part.size()) +
+                                " part ids for " + std::to_string(m.num_nodes) + " nodes");
+  }
+  const std::size_t parts =
+      part.empty() ? 1 : std::size_t{*std::max_element(part.begin(), part.end())} + 1;
+  if (parts == 1) {
+    solve_cut(caps);
+    return;
+  }
+  m.check_solvable(caps);
+  m.stats = {};
+  m.solve_in_parts(caps, part, parts, threads);
+  m.has_flow = true;
 }
 
 void DynamicMaxFlow::change_terminal(FlowNode node, double delta) {

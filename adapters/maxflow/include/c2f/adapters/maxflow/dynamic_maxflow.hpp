@@ -56,6 +56,15 @@ class DynamicMaxFlow {
   /// solve() without computing the flow value (an O(nodes + edges) pass): for callers that
   /// need only the cut.
   void solve_cut(const FlowCapacities& caps);
+  /// solve_cut in two stages, the first on up to `threads` threads (0: every core): the nodes
+  /// are cut into parts (node i in part[i], parts 0, 1, ... up to 255), each part solved as a
+  /// graph of its own with the edges between parts closed, all at once; then those edges opened
+  /// and the whole graph solved on from the parts' flows and search trees, which stay valid (an
+  /// edge between parts carried no flow). The cut is solve_cut's: the minimum cut whose source
+  /// side is what the source reaches in the residual graph, to floating-point rounding. The
+  /// result depends on the parts, never on `threads`. One part: solve_cut(caps). Throws as
+  /// solve(), and std::invalid_argument when part does not have one entry per node.
+  void solve_cut(const FlowCapacities& caps, std::span<const std::uint8_t> part, int threads);
 
   /// After a solve: adds delta to the node's source capacity minus its sink capacity.
   void change_terminal(FlowNode node, double delta);
