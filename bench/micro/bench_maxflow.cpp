@@ -93,8 +93,8 @@ void BM_Solve(benchmark::State& state) {
   state.counters["flow"] = value;
 }
 
-/// DynamicMaxFlow::solve_cut in state.range(1) bands of rows on state.range(2) threads (one
-/// band: the serial solve_cut).
+/// DynamicMaxFlow::solve_cut_in_parts in state.range(1) bands of rows on state.range(2) threads
+/// (one band: the serial solve_cut).
 void BM_SolveInParts(benchmark::State& state) {
   const GridFlow& flow = grid_flow(static_cast<std::size_t>(state.range(0)));
   const auto parts = static_cast<std::size_t>(state.range(1));
@@ -103,8 +103,35 @@ void BM_SolveInParts(benchmark::State& state) {
     part[i] = static_cast<std::uint8_t>(i * parts / flow.nodes);
   DynamicMaxFlow backend;
   backend.build(flow.nodes, flow.edges);
-  for (auto _ : state) backend.solve_cut(flow.caps, part, static_cast<int>(state.range(2)));
+  backend.cut_into_parts(part);
+  for (auto _ : state) backend.solve_cut_in_parts(flow.caps, static_cast<int>(state.range(2)));
   state.counters["augmentations"] = static_cast<double>(backend.last_solve().augmentations);
+}
+
+/// BM_Resolve's re-solves (1024 x 1024, state.range(0)% of the terminal pairs changed) by
+/// DynamicMaxFlow::resolve_in_parts in state.range(1) bands of rows on state.range(2) threads.
+void BM_ResolveInParts(benchmark::State& state) {
+  const GridFlow& flow = grid_flow(1024);
+  const FlowCapacities& changed = state.range(0) == 1 ? flow.changed_1 : flow.changed_10;
+  const auto parts = static_cast<std::size_t>(state.range(1));
+  std::vector<std::uint8_t> part(flow.nodes);
+  for (std::size_t i = 0; i < flow.nodes; ++i)
+    part[i] = static_cast<std::uint8_t>(i * parts / flow.nodes);
+  DynamicMaxFlow backend;
+  backend.build(flow.nodes, flow.edges);
+  backend.cut_into_parts(part);
+  backend.solve(flow.caps);
+  bool use_changed = true;
+  for (auto _ : state) {
+    const FlowCapacities& before = use_changed ? flow.caps : changed;
+    const FlowCapacities& after = use_changed ? changed : flow.caps;
+    for (std::size_t i = 0; i < flow.nodes; ++i) {
+      const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
+      if (delta != 0.0) backend.change_terminal(static_cast<FlowNode>(i), delta);
+    }
+    backend.resolve_in_parts(static_cast<int>(state.range(2)));
+    use_changed = !use_changed;
+  }
 }
 
 /// One re-solve per iteration, alternating between the base capacities and a copy with
@@ -190,6 +217,10 @@ void BM_ExpansionMove(benchmark::State& state) {
 
 BENCHMARK(BM_SolveInParts)
     ->ArgsProduct({{512, 1024}, {1, 2, 4, 8}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ResolveInParts)
+    ->ArgsProduct({{1, 10}, {1, 4, 8}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK_TEMPLATE(BM_Build, DynamicMaxFlow)

@@ -251,6 +251,21 @@ TEST_CASE(
 
 namespace {
 
+/// resolve_with's changes without its resolve().
+void apply_changes(DynamicMaxFlow& graph, const FlowCapacities& before,
+                   const FlowCapacities& after) {
+  for (std::size_t i = 0; i < before.source.size(); ++i) {
+    const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
+    if (delta != 0.0) graph.change_terminal(static_cast<FlowNode>(i), delta);
+  }
+  for (std::size_t e = 0; e < before.forward.size(); ++e) {
+    if (after.forward[e] != before.forward[e] || after.backward[e] != before.backward[e]) {
+      graph.change_edge(e, after.forward[e] - before.forward[e],
+                        after.backward[e] - before.backward[e]);
+    }
+  }
+}
+
 /// Part ids of a problem's nodes: `parts` ranges of about equal size (a band layout), or random.
 std::vector<std::uint8_t> node_parts(Rng& rng, std::size_t num_nodes, std::size_t parts,
                                      bool random) {
@@ -273,16 +288,25 @@ TEST_CASE("dynamic max-flow in parts: the brute-force minimum cut on tiny graphs
     const auto part = node_parts(rng, n, 1 + trial % 4, trial % 2 == 1);
     DynamicMaxFlow dynamic;
     dynamic.build(problem.num_nodes, problem.edges);
-    dynamic.solve_cut(problem.caps, part, 1 + trial % 3);
+    dynamic.cut_into_parts(part);
+    dynamic.solve_cut_in_parts(problem.caps, 1 + trial % 3);
     INFO("trial " << trial);
     CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
                          brute_force_min_cut(problem), 1e-9));
-    // It resolves on from the flow the parts left, as after any solve.
-    const FlowCapacities before = problem.caps;
-    change_capacities(rng, problem.caps, 0.3, false);
-    resolve_with(dynamic, before, problem.caps);
-    CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
-                         brute_force_min_cut(problem), 1e-9));
+    // It resolves on from the flow the parts left, serially and in parts.
+    for (int round = 0; round < 4; ++round) {
+      INFO("round " << round);
+      const FlowCapacities before = problem.caps;
+      change_capacities(rng, problem.caps, 0.3, false);
+      if (round % 2 == 0) {
+        resolve_with(dynamic, before, problem.caps);
+      } else {
+        apply_changes(dynamic, before, problem.caps);
+        dynamic.resolve_in_parts(1 + round % 3);
+      }
+      CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
+                           brute_force_min_cut(problem), 1e-9));
+    }
   }
 }
 
@@ -298,21 +322,42 @@ TEST_CASE(
     BoostMaxFlow boost;
     boost.build(problem.num_nodes, problem.edges);
     const double flow = boost.solve(problem.caps);
+    const std::vector<char> expected = source_set(boost);
     std::vector<char> first;
     for (const int threads : {1, 2, 3}) {
       INFO("trial " << trial << ", " << threads << " threads");
       DynamicMaxFlow dynamic;
       dynamic.build(problem.num_nodes, problem.edges);
-      dynamic.solve_cut(problem.caps, part, threads);
+      dynamic.cut_into_parts(part);
+      dynamic.solve_cut_in_parts(problem.caps, threads);
       CHECK(cut_capacity(problem.caps, problem.edges, source_set(dynamic)) == flow);
-      CHECK(source_set(dynamic) == source_set(boost));
+      CHECK(source_set(dynamic) == expected);
       if (threads == 1) first = source_set(dynamic);
       CHECK(source_set(dynamic) == first);
+      // Re-solves in parts after changes of every size find the exact source set too.
+      FlowCapacities caps = problem.caps;
+      Rng changes(static_cast<std::uint64_t>(trial));  // the same changes for every thread count
+      for (int round = 0; round < 6; ++round) {
+        const FlowCapacities before = caps;
+        change_capacities(changes, caps, round % 2 == 0 ? 0.05 : 0.5, true);
+        apply_changes(dynamic, before, caps);
+        dynamic.resolve_in_parts(threads);
+        CHECK(dynamic.last_solve().reused);
+        CHECK(cut_capacity(caps, problem.edges, source_set(dynamic)) == boost.solve(caps));
+        CHECK(source_set(dynamic) == source_set(boost));
+      }
     }
   }
   DynamicMaxFlow dynamic;
   auto problem = random_flow_problem(rng, 10, 20);
   dynamic.build(problem.num_nodes, problem.edges);
-  CHECK_THROWS_WITH(dynamic.solve_cut(problem.caps, std::vector<std::uint8_t>(9, 0), 2),
+  CHECK_THROWS_WITH(dynamic.cut_into_parts(std::vector<std::uint8_t>(9, 0)),
                     Catch::Contains("9 part ids for 10 nodes"));
+  CHECK(dynamic.num_parts() == 1);
+  dynamic.cut_into_parts(std::vector<std::uint8_t>{0, 0, 1, 1, 2, 2, 2, 0, 1, 2});
+  CHECK(dynamic.num_parts() == 3);
+  DynamicMaxFlow copy(dynamic);
+  CHECK(copy.num_parts() == 3);
+  dynamic.build(problem.num_nodes, problem.edges);  // a new topology forgets the parts
+  CHECK(dynamic.num_parts() == 1);
 }

@@ -46,6 +46,14 @@ struct Topology {
   std::vector<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
 };
 
+/// A cut of a graph's nodes into parts (DynamicMaxFlow::cut_into_parts): each node's part and
+/// the edges joining two parts. Fixed with the topology, shared by copies.
+struct Parts {
+  std::vector<std::uint8_t> of_node;
+  std::vector<std::size_t> between;
+  std::size_t count = 1;
+};
+
 /// Fills `to` with `from`, asking the kernel for transparent huge pages first when the block is
 /// large: a graph of many megabytes otherwise costs one page fault per 4 KiB as it is first
 /// written, which dominates copying or building it.
@@ -144,6 +152,27 @@ struct Search {
       if (neighbour.parent != kNone && neighbour.parent != kTerminal &&
           t.head[neighbour.parent] == o)
         make_orphan(j);
+    }
+  }
+
+  /// Restores the search-tree invariants at node i after its terminal or edge capacities
+  /// changed: a node with terminal residual hangs from that terminal (leaving its old tree if
+  /// the sign changed), a tree arc without residual makes an orphan, and a tree node is searched
+  /// again.
+  void repair(Index i) {
+    Node& node = nodes[i];
+    node.touched = false;
+    if (node.excess != 0.0) {
+      const Tree tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
+      if (node.tree != kFree && node.tree != tree) leave_tree(i);
+      node.tree = tree;
+      node.parent = kTerminal;
+      node.stamp = time;
+      node.distance = 1;
+      activate(i);
+    } else if (node.tree != kFree) {
+      if (node.parent == kTerminal || (node.parent != kNone && !parent_arc_open(i))) make_orphan(i);
+      activate(i);
     }
   }
 
@@ -313,6 +342,7 @@ struct DynamicMaxFlow::Impl {
   std::size_t num_nodes = 0;
   std::size_t num_edges = 0;
   std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
+  std::shared_ptr<const Parts> parts;        // cut_into_parts; null: one part
   std::vector<Node> nodes;                   // num_nodes
   std::vector<double> residual;              // per arc
   bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
@@ -327,6 +357,7 @@ struct DynamicMaxFlow::Impl {
       : num_nodes(other.num_nodes),
         num_edges(other.num_edges),
         topology(other.topology),
+        parts(other.parts),
         has_flow(other.has_flow),
         time(other.time),
         first_active(other.first_active),
@@ -395,31 +426,58 @@ struct DynamicMaxFlow::Impl {
       if (nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
   }
 
-  /// The flow of `caps` from zero in two stages: every part's nodes as a graph of their own, the
-  /// arcs between parts closed, the parts at once on up to `threads` threads; then the arcs
-  /// between parts opened and the whole graph searched on from the parts' flows and trees (a
-  /// valid state: closed arcs carried no flow), starting at the nodes those arcs join.
-  void solve_in_parts(const FlowCapacities& caps, std::span<const std::uint8_t> part,
-                      std::size_t parts, int threads) {
+  /// The flow of `caps` from zero in parts (search_in_parts), every terminal node queued in
+  /// its part.
+  void solve_in_parts(const FlowCapacities& caps, int threads) {
     load_zero_flow(caps);
+    const std::vector<std::uint8_t>& part = parts->of_node;
+    search_in_parts(threads, [&](Search& s, std::size_t k) {
+      for (std::size_t i = 0; i < num_nodes; ++i)
+        if (part[i] == k && nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
+    });
+  }
+
+  /// resolve() in parts (search_in_parts): each part repairs its touched nodes.
+  void resolve_in_parts(int threads) {
+    const std::vector<std::uint8_t>& part = parts->of_node;
+    search_in_parts(threads, [&](Search& s, std::size_t k) {
+      for (const Index i : touched)
+        if (part[i] == k) s.repair(i);
+    });
+  }
+
+  /// Searches on from the current flow in two stages. First every part on its own nodes, all
+  /// at once on up to `threads` threads: the edges between parts are closed (their flow stays,
+  /// their residuals are set aside, and a node hanging from a neighbour across one becomes an
+  /// orphan of its part), and prepare(search, k) queues part k's nodes. Then those edges open
+  /// and the whole graph is searched on from the nodes they join. Both stages start from valid
+  /// flows and trees, so the result is a maximum flow of the graph.
+  template <class Prepare>
+  void search_in_parts(int threads, const Prepare& prepare) {
     const Topology& t = *topology;
-    std::vector<std::size_t> between;  // edges joining two parts
-    for (std::size_t e = 0; e < num_edges; ++e) {
+    const std::vector<std::uint8_t>& part = parts->of_node;
+    const std::vector<std::size_t>& between = parts->between;
+    std::vector<double> set_aside;  // their residuals, forward then backward
+    set_aside.reserve(2 * between.size());
+    for (const std::size_t e : between) {
       const Index forward = t.forward_arc[e];
-      if (part[t.head[forward]] == part[t.head[t.sister[forward]]]) continue;
-      between.push_back(e);
-      residual[forward] = residual[t.sister[forward]] = 0.0;
+      const Index backward = t.sister[forward];
+      set_aside.push_back(residual[forward]);
+      set_aside.push_back(residual[backward]);
+      residual[forward] = residual[backward] = 0.0;
     }
     struct PartSearch {
       Index time = 0, first_active = kNone, last_active = kNone;
       std::vector<Index> orphans;
       std::size_t augmentations = 0;
     };
-    std::vector<PartSearch> searches(parts);
+    std::vector<PartSearch> searches(parts->count);
+    const Index start = time + 1;  // later than every stamp
     parallel_for(
-        parts,
+        parts->count,
         [&](std::size_t k) {
           PartSearch& own = searches[k];
+          own.time = start;
           Search s{nodes.data(),
                    residual.data(),
                    t,
@@ -430,19 +488,30 @@ struct DynamicMaxFlow::Impl {
                    own.augmentations,
                    part.data(),
                    static_cast<std::uint8_t>(k)};
-          for (std::size_t i = 0; i < num_nodes; ++i)
-            if (part[i] == k && nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
+          for (const std::size_t e : between) {
+            // A node's parent arc leads from it to its parent.
+            const Index forward = t.forward_arc[e];
+            const Index backward = t.sister[forward];
+            const Index from = t.head[backward];
+            const Index to = t.head[forward];
+            if (part[from] == k && nodes[from].parent == forward) s.make_orphan(from);
+            if (part[to] == k && nodes[to].parent == backward) s.make_orphan(to);
+          }
+          prepare(s, k);
+          s.adopt_orphans();
           s.run();
         },
         threads);
+    time = start;
     for (const PartSearch& own : searches) {
-      time = std::max(time, own.time);  // every stamp is at most this
+      time = std::max(time, own.time);
       stats.augmentations += own.augmentations;
     }
-    for (const std::size_t e : between) {
-      const Index forward = t.forward_arc[e];
-      residual[forward] = caps.forward[e];
-      residual[t.sister[forward]] = caps.backward[e];
+    touched.clear();  // the parts repaired them
+    for (std::size_t k = 0; k < between.size(); ++k) {
+      const Index forward = t.forward_arc[between[k]];
+      residual[forward] = set_aside[2 * k];
+      residual[t.sister[forward]] = set_aside[2 * k + 1];
       touch(t.head[forward]);
       touch(t.head[t.sister[forward]]);
     }
@@ -497,28 +566,10 @@ struct DynamicMaxFlow::Impl {
     ++stats.changed_edges;
   }
 
-  /// Restores the search-tree invariants at the touched nodes: a node with terminal residual
-  /// hangs from that terminal (leaving its old tree if the sign changed), a tree arc without
-  /// residual makes an orphan, and every touched tree node is searched again.
+  /// Restores the search-tree invariants at the touched nodes (Search::repair).
   void repair_touched_nodes() {
     Search s = search();
-    for (const Index i : touched) {
-      Node& node = nodes[i];
-      node.touched = false;
-      if (node.excess != 0.0) {
-        const Tree tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
-        if (node.tree != kFree && node.tree != tree) s.leave_tree(i);
-        node.tree = tree;
-        node.parent = kTerminal;
-        node.stamp = time;
-        node.distance = 1;
-        s.activate(i);
-      } else if (node.tree != kFree) {
-        if (node.parent == kTerminal || (node.parent != kNone && !s.parent_arc_open(i)))
-          s.make_orphan(i);
-        s.activate(i);
-      }
-    }
+    for (const Index i : touched) s.repair(i);
     touched.clear();
   }
 
@@ -595,6 +646,7 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
   m.num_nodes = num_nodes;
   m.num_edges = edges.size();
   m.topology = std::move(topology);
+  m.parts.reset();
   m.nodes.assign(num_nodes, Node{});
   m.residual.assign(2 * edges.size(), 0.0);
   m.orphans.clear();
@@ -620,23 +672,37 @@ void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
   m.run();
 }
 
-void DynamicMaxFlow::solve_cut(const FlowCapacities& caps, std::span<const std::uint8_t> part,
-                               int threads) {
+void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part) {
   Impl& m = *impl_;
-  if (!m.topology) throw std::logic_error("DynamicMaxFlow::solve_cut: call build() first");
+  if (!m.topology) throw std::logic_error("DynamicMaxFlow::cut_into_parts: call build() first");
   if (part.size() != m.num_nodes) {
-    throw std::invalid_argument("DynamicMaxFlow::solve_cut: " + std::to_string(part.size()) +
+    throw std::invalid_argument("DynamicMaxFlow::cut_into_parts: " + std::to_string(part.size()) +
                                 " part ids for " + std::to_string(m.num_nodes) + " nodes");
   }
-  const std::size_t parts =
-      part.empty() ? 1 : std::size_t{*std::max_element(part.begin(), part.end())} + 1;
-  if (parts == 1) {
+  auto parts = std::make_shared<Parts>();
+  parts->of_node.assign(part.begin(), part.end());
+  parts->count = part.empty() ? 1 : std::size_t{*std::max_element(part.begin(), part.end())} + 1;
+  const Topology& t = *m.topology;
+  for (std::size_t e = 0; e < m.num_edges; ++e) {
+    const Index forward = t.forward_arc[e];
+    if (part[t.head[forward]] != part[t.head[t.sister[forward]]]) parts->between.push_back(e);
+  }
+  m.parts = std::move(parts);
+}
+
+std::size_t DynamicMaxFlow::num_parts() const noexcept {
+  return impl_->parts ? impl_->parts->count : 1;
+}
+
+void DynamicMaxFlow::solve_cut_in_parts(const FlowCapacities& caps, int threads) {
+  Impl& m = *impl_;
+  if (num_parts() == 1) {
     solve_cut(caps);
     return;
   }
   m.check_solvable(caps);
   m.stats = {};
-  m.solve_in_parts(caps, part, parts, threads);
+  m.solve_in_parts(caps, threads);
   m.has_flow = true;
 }
 
@@ -652,6 +718,18 @@ void DynamicMaxFlow::change_edge(std::size_t edge, double delta_forward, double 
   if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_edge: solve() first");
   if (m.touched.empty()) m.stats = {};
   m.change_edge(edge, delta_forward, delta_backward);
+}
+
+void DynamicMaxFlow::resolve_in_parts(int threads) {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::resolve: solve() first");
+  if (num_parts() == 1) {
+    resolve();
+    return;
+  }
+  if (m.touched.empty()) m.stats = {};
+  m.stats.reused = true;
+  m.resolve_in_parts(threads);
 }
 
 void DynamicMaxFlow::resolve() {

@@ -56,16 +56,21 @@ class DynamicMaxFlow {
   /// solve() without computing the flow value (an O(nodes + edges) pass): for callers that
   /// need only the cut.
   void solve_cut(const FlowCapacities& caps);
-  /// solve_cut in two stages, the first on up to `threads` threads (0: every core): the nodes
-  /// are cut into parts (node i in part[i], parts 0, 1, ... up to 255), each part solved as a
-  /// graph of its own with the edges between parts closed, all at once; then those edges opened
-  /// and the whole graph solved on from the parts' flows and search trees, which stay valid (an
-  /// edge between parts carried no flow). The cut is solve_cut's: the minimum cut whose source
-  /// side is what the source reaches in the residual graph, to floating-point rounding. The
-  /// result depends on the parts, never on `threads`. One part: solve_cut(caps). Throws as
-  /// solve(), and std::invalid_argument when part does not have one entry per node.
-  void solve_cut(const FlowCapacities& caps, std::span<const std::uint8_t> part, int threads);
-
+  /// Cuts the nodes into parts for the solves in parts: node i in part[i] (parts 0, 1, ... up
+  /// to 255). Kept, with the list of edges between parts, until the next build(); copies share
+  /// it. Throws std::invalid_argument when part does not have one entry per node,
+  /// std::logic_error before build().
+  void cut_into_parts(std::span<const std::uint8_t> part);
+  /// The parts cut_into_parts made (1 before it).
+  [[nodiscard]] std::size_t num_parts() const noexcept;
+  /// solve_cut in two stages, the first on up to `threads` threads (0: every core): each part
+  /// solved as a graph of its own with the edges between parts closed, all at once; then those
+  /// edges opened and the whole graph solved on from the parts' flows and search trees, which
+  /// stay valid (an edge between parts carried no flow). The cut is solve_cut's: the minimum cut
+  /// whose source side is what the source reaches in the residual graph, to floating-point
+  /// rounding. The result depends on the parts, never on `threads`. With one part: solve_cut.
+  /// Throws as solve().
+  void solve_cut_in_parts(const FlowCapacities& caps, int threads);
   /// After a solve: adds delta to the node's source capacity minus its sink capacity.
   void change_terminal(FlowNode node, double delta);
   /// After a solve: adds the deltas to the edge's forward and backward capacities (which must
@@ -73,6 +78,11 @@ class DynamicMaxFlow {
   void change_edge(std::size_t edge, double delta_forward, double delta_backward);
   /// The minimum cut after the changes since the last solve or resolve, from the current flow.
   void resolve();
+  /// resolve() in the two stages of solve_cut_in_parts: the touched nodes of every part searched
+  /// on at once (the edges between parts closed, the flow on them kept), then the whole graph
+  /// from the nodes those edges join. The cut is resolve()'s, to floating-point rounding; the
+  /// result depends on the parts, never on `threads`. With one part: resolve().
+  void resolve_in_parts(int threads);
 
   /// After a solve: whether node is reachable from the source in the residual graph.
   [[nodiscard]] bool in_source_set(FlowNode node) const;
