@@ -34,6 +34,12 @@ void RunFlags::declare(ToolOptions& options) {
                "once, then on the odd ones, on --threads threads; when a sweep gains at most 1e-4 "
                "of the energy, a sweep of band moves over every variable, then one of whole moves "
                "(convergence: four sweeps without decrease; e.g. 16). 1: every move on one thread")
+      .integer("flow-parts", &flow_parts_, {1, 255},
+               "expansion with --maxflow dynamic: solve the max-flow of every move over every "
+               "variable in this many bands of variables (at least 4096 each) at once on "
+               "--threads threads, then over the whole graph from their flows; exact moves, the "
+               "same output for every thread count (the bits may differ from 1 part's by "
+               "floating-point rounding); 1: one part (docs/performance.md, \"The solve\")")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "
@@ -104,9 +110,18 @@ SolverSpec RunFlags::solver_spec() const {
                                 "' has none");
   if (regions_ > 1 && near_radius_ == 0)
     throw std::invalid_argument("--regions: has no effect without --near-radius");
+  if (kind != SolverKind::expansion && flow_parts_ != ExpansionOptions{}.flow_parts)
+    throw std::invalid_argument("--flow-parts with --solver " + solver_ +
+                                ": it solves expansion's moves; solver '" + solver_ + "' has none");
 
   SolverSpec spec;
   spec.maxflow = with_flag("--maxflow", [&] { return maxflow_kind_from_string(maxflow_); });
+  if (flow_parts_ > 1 && spec.maxflow != MaxFlowKind::dynamic) {
+    throw std::invalid_argument(
+        "--flow-parts: only our max-flow (--maxflow dynamic) solves in "
+        "parts, and --maxflow is " +
+        maxflow_);
+  }
   if (!maxflow_available(spec.maxflow)) {
     throw std::invalid_argument("--maxflow " + maxflow_ +
                                 ": not in this build (configure with "
@@ -121,6 +136,7 @@ SolverSpec RunFlags::solver_spec() const {
       options.shift_moves_unless_submodular = shift_moves_ == "auto";
       options.regions = regions_;
       options.threads = threads_;
+      options.flow_parts = flow_parts_;
       spec = expansion_spec(options, levels, spec.maxflow);
       break;
     }

@@ -51,6 +51,7 @@ class RunFlags {
   double memory_gib_ = 0.0;        // 0: default_memory_budget()
   int threads_ = 0;
   int regions_ = ExpansionOptions{}.regions;
+  int flow_parts_ = ExpansionOptions{}.flow_parts;
   int near_radius_;
   std::string shift_moves_;  // on, off or auto
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none

@@ -113,10 +113,10 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       expansion.shift_moves = defaults.shift_moves;
       expansion.shift_moves_unless_submodular = defaults.shift_moves_unless_submodular;
       NearLevels levels = NearLevels::original;
-      for (const auto& [key, value] :
-           option_items(options, owner,
-                        {"order", "seed", "tolerance", "near_radius", "near_sweep_gain",
-                         "shift_moves", "near_levels", "maxflow", "regions", "threads"})) {
+      for (const auto& [key, value] : option_items(
+               options, owner,
+               {"order", "seed", "tolerance", "near_radius", "near_sweep_gain", "shift_moves",
+                "near_levels", "maxflow", "regions", "threads", "flow_parts"})) {
         const std::string name = option_name(key);
         if (set_move_option(expansion, key, value, name)) continue;
         if (key == "near_radius") {
@@ -129,6 +129,8 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
           expansion.regions = static_cast<int>(integer_argument(value, name, 1, 65535));
         } else if (key == "threads") {
           expansion.threads = static_cast<int>(integer_argument(value, name, 0, 1024));
+        } else if (key == "flow_parts") {
+          expansion.flow_parts = static_cast<int>(integer_argument(value, name, 1, 255));
         } else if (key == "near_levels") {
           levels = named_value(value, name, near_levels_from_string);
         } else {
@@ -137,6 +139,10 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       }
       if (expansion.regions > 1 && expansion.near_radius == 0)
         throw py::value_error("options['regions']: has no effect without near_radius");
+      if (expansion.flow_parts > 1 && spec.maxflow != MaxFlowKind::dynamic) {
+        throw py::value_error(
+            "options['flow_parts']: only our max-flow ('dynamic') solves in parts");
+      }
       return expansion_spec(expansion, levels, spec.maxflow);
     }
     case SolverKind::swap: {

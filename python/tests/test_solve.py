@@ -230,3 +230,26 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
         c2f.solve(energy, options={"regions": 16})
     with pytest.raises(ValueError, match="threads"):
         c2f.solve(energy, options={"threads": -1})
+
+
+def test_the_max_flow_in_parts_gives_the_same_bits_on_one_thread_and_on_several(rng):
+    # 160 x 110 pixels: whole moves' max-flow in 4 bands of rows (ExpansionOptions::flow_parts).
+    energy = c2f.Energy.grid(rng.random((160, 110, 6)), c2f.Term.truncated_quadratic(4.0, 6),
+                             weight=0.4)
+    runs = [c2f.solve(energy, options={"flow_parts": 4, "threads": threads})
+            for threads in (1, 2, 3)]
+    assert ("solve: every move over every variable, max-flow in 4 parts on 1 thread"
+            in runs[0].summary)
+    assert "max-flow in 4 parts on 2 threads with shift moves" in runs[1].summary
+    for run in runs[1:]:
+        assert np.array_equal(run.labeling, runs[0].labeling)
+        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
+    assert runs[0].reason == "converged"
+    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+    serial = c2f.solve(energy)
+    assert runs[0].energy == pytest.approx(serial.energy, rel=1e-4)
+    for bad in (0, 256):
+        with pytest.raises(ValueError, match="flow_parts"):
+            c2f.solve(energy, options={"flow_parts": bad})
+    with pytest.raises(ValueError, match="only our max-flow"):
+        c2f.solve(energy, options={"flow_parts": 4, "maxflow": "boost"})

@@ -126,6 +126,10 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
             "--schedule: level cp:3,1 has N_L 3 above the 2 labels"},
            {grid + out + " --schedule slic:4", "needs a pixel grid"},
            {grid + out + " --solver magic", "--solver: unknown solver 'magic'"},
+           {grid + out + " --flow-parts 4 --solver swap", "--flow-parts with --solver swap"},
+           {grid + out + " --flow-parts 4 --maxflow boost",
+            "--flow-parts: only our max-flow (--maxflow dynamic) solves in parts"},
+           {grid + out + " --flow-parts 0", "--flow-parts"},
            // c2f-solve's defaults make whole moves (shift moves only where an expansion move is
            // not submodular: --shift-moves auto), so these flags are asked for, not defaults.
            {grid + out + " --solver icm --shift-moves",

@@ -15,6 +15,12 @@ unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
       std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
 }
 
+unsigned flow_threads(const SolverOptions& options, std::size_t parts) {
+  const auto* expansion = std::get_if<ExpansionOptions>(&options);
+  if (expansion == nullptr || parts < 2) return 1;
+  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(expansion->threads), parts));
+}
+
 SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
   const auto decide = [&energy](SolverOptions& options) {
     if (auto* expansion = std::get_if<ExpansionOptions>(&options)) {

@@ -49,10 +49,19 @@ std::string RunReport::memory_report() const {
 }
 
 std::string RunReport::threads_line() const {
+  const auto on = [](unsigned threads) {
+    return " on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+  };
   const std::string shifts = shift_moves ? " with shift moves" : "";
-  if (regions < 2) return "solve: every move over every variable on one thread" + shifts;
-  return "solve: moves by " + std::to_string(regions) + " regions on " +
-         std::to_string(solve_threads) + (solve_threads == 1 ? " thread" : " threads") + shifts;
+  const std::string flow =
+      flow_parts < 2 ? ""
+                     : ", max-flow in " + std::to_string(flow_parts) + " parts" + on(flow_threads);
+  if (regions < 2) {
+    return "solve: every move over every variable" + (flow.empty() ? " on one thread" : flow) +
+           shifts;
+  }
+  return "solve: moves by " + std::to_string(regions) + " regions" + on(solve_threads) + flow +
+         shifts;
 }
 
 }  // namespace c2f

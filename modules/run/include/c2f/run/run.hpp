@@ -47,6 +47,21 @@ std::size_t regions_of(const Solver& solver) {
   }
 }
 
+/// The parts the max-flow of a solver's moves over every one of n variables is solved in
+/// (ExpansionSolver::flow_parts), 1 for a solver that has none.
+template <class Solver>
+std::size_t flow_parts_of(const Solver& solver, std::size_t n) {
+  if constexpr (requires { solver.flow_parts(n); }) {
+    return solver.flow_parts(n);
+  } else {
+    return 1;
+  }
+}
+
+/// The threads that solve `parts` max-flow parts at once under `options`: at most one per part
+/// and ExpansionOptions::threads (resolved); 1 with one part.
+[[nodiscard]] unsigned flow_threads(const SolverOptions& options, std::size_t parts);
+
 /// `spec` with expansion's shift_moves_unless_submodular decided on `energy`
 /// (makes_shift_moves) on every level: shift_moves says, so that the memory plan counts the
 /// shift moves' solver only where they are made.
@@ -100,6 +115,8 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
     report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
     report.regions = detail::regions_of(detail::original_of(solvers));
     report.solve_threads = detail::solve_threads(spec.original, report.regions);
+    report.flow_parts = detail::flow_parts_of(detail::original_of(solvers), energy.num_variables());
+    report.flow_threads = detail::flow_threads(spec.original, report.flow_parts);
     return summary;
   };
   report.summary = std::visit(

@@ -66,6 +66,10 @@ struct RunReport {
   /// move over every variable) and the threads that solved them at once (1 without regions).
   std::size_t regions = 1;
   unsigned solve_threads = 1;
+  /// The parts the max-flow of the original problem's moves over every variable was solved in
+  /// (ExpansionOptions::flow_parts; 1: one) and the threads that solved them at once.
+  std::size_t flow_parts = 1;
+  unsigned flow_threads = 1;
   /// Whether the original problem's solver makes shift moves on this energy (expansion:
   /// makes_shift_moves, which ExpansionOptions::shift_moves_unless_submodular may decide).
   bool shift_moves = false;
@@ -79,8 +83,9 @@ struct RunReport {
   /// the end".
   [[nodiscard]] std::string memory_report() const;
   /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable on
-  /// one thread" (the original problem's binding), ending " with shift moves" when it makes
-  /// them, as the tools' summaries write it.
+  /// one thread" (the original problem's binding), with ", max-flow in 4 parts on 2 threads"
+  /// after the moves when the max-flow of moves over every variable is solved in parts, and
+  /// ending " with shift moves" when it makes them, as the tools' summaries write it.
   [[nodiscard]] std::string threads_line() const;
 };
 

@@ -64,6 +64,7 @@ class BinaryMoveSolver {
   void bind(std::size_t num_nodes, std::span<const FlowEdge> pairs) {
     check_topology(num_nodes, pairs, "BinaryMoveSolver::bind");
     num_nodes_ = num_nodes;
+    parts_ = 1;
     pairs_.assign(pairs.begin(), pairs.end());
     doubled_pairs_.clear();
     doubled_ready_ = false;
@@ -84,6 +85,14 @@ class BinaryMoveSolver {
   /// (ReusingMaxFlow) recycle. Call after bind(); a later bind() ends recycling.
   void recycle(std::size_t num_keys, std::size_t memory_limit) {
     graphs_.recycle(num_keys, memory_limit);
+  }
+
+  /// Solves every move's max-flow in `parts` parts at once on up to `threads` threads, when the
+  /// backend can (DynamicMaxFlow::cut_into_parts): node i, and its QPBO complement, in part
+  /// i * parts / n (bands of indices). 1: one part. Call after bind(), before the first solve.
+  void solve_in_parts(std::size_t parts, int threads) {
+    parts_ = std::max<std::size_t>(1, std::min<std::size_t>(parts, 255));
+    parts_threads_ = threads;
   }
 
   /// Frees every graph (they are built again on the next solve); recycling goes on as
@@ -171,9 +180,24 @@ class BinaryMoveSolver {
     MoveGraph& graph = graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled);
     if (!graph.built) {
       graph.graph.build(graph_nodes(kind), graph_edges(kind));
+      if constexpr (requires(Backend & g, std::span<const std::uint8_t> part) {
+                      g.cut_into_parts(part);
+                    }) {
+        if (parts_ > 1) graph.graph.cut_into_parts(node_parts(kind));
+      }
       graph.built = true;
     }
     return graph;
+  }
+
+  /// Each node's part for solve_in_parts: node i in part i * parts / n, node n + i (QPBO) with i.
+  [[nodiscard]] std::vector<std::uint8_t> node_parts(GraphKind kind) const {
+    std::vector<std::uint8_t> part(graph_nodes(kind));
+    for (std::size_t i = 0; i < num_nodes_; ++i)
+      part[i] = static_cast<std::uint8_t>(i * parts_ / num_nodes_);
+    if (kind == GraphKind::qpbo)
+      std::copy(part.begin(), part.begin() + num_nodes_, part.begin() + num_nodes_);
+    return part;
   }
 
   /// One graph of this kind with its problem (what a key's graphs cost), in bytes.
@@ -192,7 +216,11 @@ class BinaryMoveSolver {
     if constexpr (ReusingMaxFlow<Backend>) {
       if (graph.solved) {
         change_graph(graph, kind, p);
-        graph.graph.resolve();
+        if constexpr (requires(Backend & g) { g.resolve_in_parts(1); }) {
+          graph.graph.resolve_in_parts(parts_threads_);
+        } else {
+          graph.graph.resolve();
+        }
         graph.graph.source_set(in_source_);
         return;
       }
@@ -203,7 +231,11 @@ class BinaryMoveSolver {
                     graph.graph.solve_cut(caps);
                     g.source_set(side);
                   }) {
-      graph.graph.solve_cut(caps);
+      if constexpr (requires(Backend & g) { g.solve_cut_in_parts(caps, 1); }) {
+        graph.graph.solve_cut_in_parts(caps, parts_threads_);
+      } else {
+        graph.graph.solve_cut(caps);
+      }
       graph.graph.source_set(in_source_);
     } else {
       graph.graph.solve(caps);
@@ -307,6 +339,8 @@ class BinaryMoveSolver {
   }
 
   std::size_t num_nodes_ = 0;
+  std::size_t parts_ = 1;  ///< solve_in_parts
+  int parts_threads_ = 1;
   std::vector<FlowEdge> pairs_;
   std::vector<FlowEdge> doubled_pairs_;  // the QPBO graph's edges, once some move needs them
   bool doubled_ready_ = false;

@@ -88,6 +88,7 @@ class ExpansionSolver {
     // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
     // within the whole limit.
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
+    state_.moves.solve_in_parts(flow_parts(energy.num_variables()), options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -148,6 +149,15 @@ class ExpansionSolver {
   /// The regions of this binding's moves (1: none, every move is over every variable).
   [[nodiscard]] std::size_t region_count() const noexcept {
     return regions_.active() ? regions_.count() : 1;
+  }
+
+  /// The parts the max-flow of a move over all n variables is solved in
+  /// (ExpansionOptions::flow_parts): at most flow_parts, at least kMinRegionVariables variables
+  /// each, at least one.
+  [[nodiscard]] std::size_t flow_parts(std::size_t n) const noexcept {
+    return std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(options_.flow_parts),
+                                 n / detail::kMinRegionVariables));
   }
 
  private:

@@ -83,9 +83,18 @@ struct ExpansionOptions : MoveOptions {
   /// on the aside 2014 Q and KITTI scenes (more sweeps to converge), so it is not the default
   /// (docs/performance.md, "The solve").
   int regions = 1;
-  /// Threads solving a move's regions at once (0: the machine's cores). Results are the same
-  /// for every count.
+  /// Threads solving a move's regions, or its max-flow's parts, at once (0: the machine's
+  /// cores). Results are the same for every count.
   int threads = 0;
+  /// Moves over every variable (whole and shift moves) solve their max-flow in this many parts
+  /// at once on `threads` threads: bands of about equal ranges of variable indices (bands of
+  /// rows on a grid), each part's flow found on its own, then the whole graph's from those
+  /// (DynamicMaxFlow::solve_cut_in_parts, resolve_in_parts). The moves are exact either way,
+  /// but a cut found in parts may differ from the serial one in floating-point rounding, so
+  /// results depend on this number, never on `threads`. 1 (the default): one part. Only our
+  /// max-flow (MaxFlowKind::dynamic) solves in parts; at most 255, and at least 4096 variables
+  /// per part (fewer parts on smaller problems).
+  int flow_parts = 1;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
