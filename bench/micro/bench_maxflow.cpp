@@ -2,9 +2,9 @@
 // and solving it (capacities reset each time, every solve from zero flow) are measured
 // separately, and so are re-solves after changing 1% or 10% of the nodes' terminal capacities
 // (the graph alternates between two capacity sets; DynamicMaxFlow changes what differs and
-// resumes from its flow, resolve_with, the others solve from zero). The problem is a
-// segmentation-like cut: terminal capacities from a smooth random field plus noise, neighbour
-// capacities 1.
+// resumes from its flow, resolve_with, the others solve from zero), and DynamicMaxFlow's solves
+// and re-solves in parts (bands of rows) on 1 and 2 threads. The problem is a segmentation-like
+// cut: terminal capacities from a smooth random field plus noise, neighbour capacities 1.
 
 #include <benchmark/benchmark.h>
 
