@@ -76,14 +76,16 @@ class ExpansionSolver {
   /// problem (d, p) is kept for patching within options.problem_memory_limit, recycled move
   /// graphs (keys: the labels, then shifts up and down) within options.graph_memory_limit.
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
-    problems_.bind(energy, options_.problem_memory_limit);
+    // One set of edge incidences for the kept problems, the regions and the near moves.
+    detail::SharedIncidence incidences(energy);
+    problems_.bind(energy, options_.problem_memory_limit, &incidences);
     shift_moves_ = makes_shift_moves(options_, energy);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
     const std::size_t graph_limit = recycled_graph_limit(options_);
     regions_ = {};
     if (options_.regions > 1 && options_.near_radius > 0) {
       regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys, graph_limit,
-                    options_.threads);
+                    options_.threads, detail::kMinRegionVariables, &incidences);
     }
     // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
     // within the whole limit.
@@ -97,7 +99,7 @@ class ExpansionSolver {
     }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
-    if (options_.near_radius > 0) near_.bind(energy, options_.near_radius);
+    if (options_.near_radius > 0) near_.bind(energy, options_.near_radius, &incidences);
     sweep_steps_done_ = 0;
     sweep_ = first_sweep();
   }

@@ -6,10 +6,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
@@ -29,8 +31,10 @@ namespace c2f::detail {
 /// computes in full.
 class ExpansionProblems {
  public:
-  /// Forgets every problem; keeps one per label when they fit in memory_limit bytes.
-  void bind(const PairwiseEnergy& energy, std::size_t memory_limit) {
+  /// Forgets every problem; keeps one per label when they fit in memory_limit bytes (the edge
+  /// incidences from `shared` when given).
+  void bind(const PairwiseEnergy& energy, std::size_t memory_limit,
+            SharedIncidence* shared = nullptr) {
     energy_ = &energy;
     const std::size_t per_label = (energy.num_variables() + energy.edges().size()) * sizeof(double);
     const auto labels = static_cast<std::size_t>(energy.num_labels());
@@ -38,7 +42,7 @@ class ExpansionProblems {
     problems_.assign(kept_ ? labels : 1, Problem{});
     log_.clear();
     if (kept_) {
-      incidence_ = EdgeIncidence(energy);
+      incidence_ = incidence_of(energy, shared);
       node_stamp_.assign(energy.num_variables(), 0);
       edge_stamp_.assign(energy.edges().size(), 0);
       stamp_ = 0;
@@ -115,7 +119,7 @@ class ExpansionProblems {
     for (std::size_t k = problem.mark; k < log_.size(); ++k) {
       const VariableIndex v = log_[k];
       affect(v);
-      for (const Incidence& inc : incidence_.of(v)) {
+      for (const Incidence& inc : incidence_->of(v)) {
         affect(inc.other);
         if (edge_stamp_[inc.edge] == stamp_) continue;
         edge_stamp_[inc.edge] = stamp_;
@@ -129,7 +133,7 @@ class ExpansionProblems {
     }
     for (const VariableIndex v : affected_) {
       double value = energy.unary(v, alpha) - energy.unary(v, x[v]);
-      for (const Incidence& inc : incidence_.of(v)) {
+      for (const Incidence& inc : incidence_->of(v)) {
         const Edge& edge = edges[inc.edge];
         const Label xu = x[edge.u];
         const Label xv = x[edge.v];
@@ -145,7 +149,7 @@ class ExpansionProblems {
   bool kept_ = false;
   std::vector<Problem> problems_;   // per label when kept, else one scratch problem
   std::vector<VariableIndex> log_;  // variables changed by accepted moves, in order
-  EdgeIncidence incidence_;
+  std::shared_ptr<const EdgeIncidence> incidence_;
   std::vector<std::uint32_t> node_stamp_, edge_stamp_;
   std::uint32_t stamp_ = 0;
   std::vector<VariableIndex> affected_;

@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/labeling.hpp"
@@ -68,11 +70,12 @@ inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence
 /// with the free variables numbered in the order of `free()` (ascending).
 class NearMoves {
  public:
-  /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences.
-  void bind(const PairwiseEnergy& energy, int radius) {
+  /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences
+  /// (from `shared` when given).
+  void bind(const PairwiseEnergy& energy, int radius, SharedIncidence* shared = nullptr) {
     energy_ = &energy;
     radius_ = radius;
-    incidence_ = EdgeIncidence(energy);
+    incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
     cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
     for (std::size_t i = 0; i < n; ++i) {
@@ -89,7 +92,7 @@ class NearMoves {
     // In index order, the unary table is read nearly sequentially.
     std::sort(free_.begin(), free_.end());
     for (std::size_t k = 0; k < free_.size(); ++k) local_[free_[k]] = static_cast<std::uint32_t>(k);
-    restricted_problem(*energy_, incidence_, alpha, x, free_, local_, d_, p_, pairs_);
+    restricted_problem(*energy_, *incidence_, alpha, x, free_, local_, d_, p_, pairs_);
   }
 
   /// Finds the free variables of the move to alpha from x (in no order in free()), without
@@ -112,7 +115,7 @@ class NearMoves {
     for (std::size_t k = 0; k < reached_.size(); ++k) {
       const VariableIndex v = reached_[k];
       if (depth_[v] >= radius_) continue;
-      for (const Incidence& inc : incidence_.of(v)) reach(inc.other, depth_[v] + 1);
+      for (const Incidence& inc : incidence_->of(v)) reach(inc.other, depth_[v] + 1);
     }
   }
 
@@ -132,7 +135,7 @@ class NearMoves {
 
   const PairwiseEnergy* energy_ = nullptr;
   int radius_ = 0;
-  EdgeIncidence incidence_;
+  std::shared_ptr<const EdgeIncidence> incidence_;
   std::vector<std::vector<VariableIndex>> cheapest_;  // per label: variables it is cheapest for
   std::vector<std::uint32_t> local_;                  // per variable: index in free_, or kHeld
   std::vector<int> depth_;                            // per variable: BFS depth, or kUnreached

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -50,16 +51,17 @@ class RegionMoves {
   /// Lays out at most `wanted` regions of `energy` of at least min_variables each
   /// (region_layout); the moves over every variable (whole and shift moves, keys
   /// 0..num_keys-1) recycle the regions' graphs within graph_memory_limit split evenly
-  /// between the regions. `threads` as for_each_region.
+  /// between the regions. `threads` as for_each_region. The edge incidences come from `shared`
+  /// when given.
   void bind(const PairwiseEnergy& energy, std::size_t wanted, std::size_t num_keys,
             std::size_t graph_memory_limit, int threads,
-            std::size_t min_variables = kMinRegionVariables) {
+            std::size_t min_variables = kMinRegionVariables, SharedIncidence* shared = nullptr) {
     energy_ = &energy;
     threads_ = threads;
     layout_ = region_layout(energy, wanted, min_variables);
     regions_ = std::vector<Region>(layout_.count());
     if (!active()) return;
-    incidence_ = EdgeIncidence(energy);
+    incidence_ = incidence_of(energy, shared);
     local_.assign(energy.num_variables(), kHeld);
     split_edges();
     for (Region& region : regions_) {
@@ -129,7 +131,7 @@ class RegionMoves {
         region.nodes.push_back(v);
       }
       if (region.nodes.empty()) return;
-      restricted_problem(*energy_, incidence_, alpha, labeling, region.nodes, local_, region.d,
+      restricted_problem(*energy_, *incidence_, alpha, labeling, region.nodes, local_, region.d,
                          region.p, region.subset_pairs);
       for (const VariableIndex v : region.nodes) local_[v] = kHeld;
       region.subset_solver.bind(region.nodes.size(), region.subset_pairs);
@@ -246,7 +248,7 @@ class RegionMoves {
     double delta = 0.0;
     for (const VariableIndex v : changed) {
       delta += energy.unary(v, candidate[v]) - energy.unary(v, labeling[v]);
-      for (const Incidence& inc : incidence_.of(v)) {
+      for (const Incidence& inc : incidence_->of(v)) {
         // An edge between two changed variables is counted once, from its u.
         if (!inc.is_first && candidate[inc.other] != labeling[inc.other]) continue;
         const Edge& edge = edges[inc.edge];
@@ -260,7 +262,7 @@ class RegionMoves {
   const PairwiseEnergy* energy_ = nullptr;
   int threads_ = 1;
   RegionLayout layout_;
-  EdgeIncidence incidence_;
+  std::shared_ptr<const EdgeIncidence> incidence_;
   std::vector<std::uint32_t> local_;  // near moves: a freed variable's node, else kHeld
   std::vector<Region> regions_;
 };
