@@ -93,14 +93,19 @@ void BM_Solve(benchmark::State& state) {
   state.counters["flow"] = value;
 }
 
+/// Node i's part when n nodes are cut into `parts` bands of consecutive indices (of rows).
+std::vector<std::uint8_t> row_bands(std::size_t n, std::size_t parts) {
+  std::vector<std::uint8_t> part(n);
+  for (std::size_t i = 0; i < n; ++i) part[i] = static_cast<std::uint8_t>(i * parts / n);
+  return part;
+}
+
 /// DynamicMaxFlow::solve_cut_in_parts in state.range(1) bands of rows on state.range(2) threads
 /// (one band: the serial solve_cut).
 void BM_SolveInParts(benchmark::State& state) {
   const GridFlow& flow = grid_flow(static_cast<std::size_t>(state.range(0)));
-  const auto parts = static_cast<std::size_t>(state.range(1));
-  std::vector<std::uint8_t> part(flow.nodes);
-  for (std::size_t i = 0; i < flow.nodes; ++i)
-    part[i] = static_cast<std::uint8_t>(i * parts / flow.nodes);
+  const std::vector<std::uint8_t> part =
+      row_bands(flow.nodes, static_cast<std::size_t>(state.range(1)));
   DynamicMaxFlow backend;
   backend.build(flow.nodes, flow.edges);
   backend.cut_into_parts(part);
@@ -113,10 +118,8 @@ void BM_SolveInParts(benchmark::State& state) {
 void BM_ResolveInParts(benchmark::State& state) {
   const GridFlow& flow = grid_flow(1024);
   const FlowCapacities& changed = state.range(0) == 1 ? flow.changed_1 : flow.changed_10;
-  const auto parts = static_cast<std::size_t>(state.range(1));
-  std::vector<std::uint8_t> part(flow.nodes);
-  for (std::size_t i = 0; i < flow.nodes; ++i)
-    part[i] = static_cast<std::uint8_t>(i * parts / flow.nodes);
+  const std::vector<std::uint8_t> part =
+      row_bands(flow.nodes, static_cast<std::size_t>(state.range(1)));
   DynamicMaxFlow backend;
   backend.build(flow.nodes, flow.edges);
   backend.cut_into_parts(part);
@@ -125,10 +128,7 @@ void BM_ResolveInParts(benchmark::State& state) {
   for (auto _ : state) {
     const FlowCapacities& before = use_changed ? flow.caps : changed;
     const FlowCapacities& after = use_changed ? changed : flow.caps;
-    for (std::size_t i = 0; i < flow.nodes; ++i) {
-      const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
-      if (delta != 0.0) backend.change_terminal(static_cast<FlowNode>(i), delta);
-    }
+    apply_capacity_changes(backend, before, after);
     backend.resolve_in_parts(static_cast<int>(state.range(2)));
     use_changed = !use_changed;
   }

@@ -251,21 +251,6 @@ TEST_CASE(
 
 namespace {
 
-/// resolve_with's changes without its resolve().
-void apply_changes(DynamicMaxFlow& graph, const FlowCapacities& before,
-                   const FlowCapacities& after) {
-  for (std::size_t i = 0; i < before.source.size(); ++i) {
-    const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
-    if (delta != 0.0) graph.change_terminal(static_cast<FlowNode>(i), delta);
-  }
-  for (std::size_t e = 0; e < before.forward.size(); ++e) {
-    if (after.forward[e] != before.forward[e] || after.backward[e] != before.backward[e]) {
-      graph.change_edge(e, after.forward[e] - before.forward[e],
-                        after.backward[e] - before.backward[e]);
-    }
-  }
-}
-
 /// Part ids of a problem's nodes: `parts` ranges of about equal size (a band layout), or random.
 std::vector<std::uint8_t> node_parts(Rng& rng, std::size_t num_nodes, std::size_t parts,
                                      bool random) {
@@ -301,7 +286,7 @@ TEST_CASE("dynamic max-flow in parts: the brute-force minimum cut on tiny graphs
       if (round % 2 == 0) {
         resolve_with(dynamic, before, problem.caps);
       } else {
-        apply_changes(dynamic, before, problem.caps);
+        apply_capacity_changes(dynamic, before, problem.caps);
         dynamic.resolve_in_parts(1 + round % 3);
       }
       CHECK(close_relative(cut_capacity(problem.caps, problem.edges, source_set(dynamic)),
@@ -340,7 +325,7 @@ TEST_CASE(
       for (int round = 0; round < 6; ++round) {
         const FlowCapacities before = caps;
         change_capacities(changes, caps, round % 2 == 0 ? 0.05 : 0.5, true);
-        apply_changes(dynamic, before, caps);
+        apply_capacity_changes(dynamic, before, caps);
         dynamic.resolve_in_parts(threads);
         CHECK(dynamic.last_solve().reused);
         CHECK(cut_capacity(caps, problem.edges, source_set(dynamic)) == boost.solve(caps));

@@ -781,13 +781,13 @@ std::size_t DynamicMaxFlow::topology_bytes() const noexcept {
          sizeof(Index);
 }
 
-std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
-                         const FlowCapacities& after) {
+std::size_t apply_capacity_changes(DynamicMaxFlow& graph, const FlowCapacities& before,
+                                   const FlowCapacities& after) {
   const std::size_t n = graph.num_nodes();
   const std::size_t m = graph.num_edges();
   for (const FlowCapacities* caps : {&before, &after}) {
     if (const std::string problem = check_capacities(*caps, n, m); !problem.empty())
-      throw std::invalid_argument("resolve_with: " + problem);
+      throw std::invalid_argument("apply_capacity_changes: " + problem);
   }
   std::size_t changes = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -802,6 +802,12 @@ std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
                       after.backward[e] - before.backward[e]);
     ++changes;
   }
+  return changes;
+}
+
+std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
+                         const FlowCapacities& after) {
+  const std::size_t changes = apply_capacity_changes(graph, before, after);
   graph.resolve();
   return changes;
 }

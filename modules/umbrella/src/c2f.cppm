@@ -168,6 +168,7 @@ using c2f::RelaxationOptions;
 using c2f::ReleasingSolver;
 using c2f::require_grid_size;
 using c2f::require_semi_metric;
+using c2f::apply_capacity_changes;
 using c2f::resolve_with;
 using c2f::ReusingMaxFlow;
 using c2f::Rule;

@@ -122,8 +122,13 @@ concept ReusingMaxFlow = MaxFlow<G> && std::copy_constructible<G> &&
 static_assert(ReusingMaxFlow<DynamicMaxFlow>);
 
 /// Applies to a solved graph the differences between two capacity sets (terminal pairs whose
-/// source - sink differs, edges whose capacities differ), then resolve(). Returns the number of
-/// changed nodes and edges. Throws std::invalid_argument when the sets do not fit the graph.
+/// source - sink differs, edges whose capacities differ), without re-solving: resolve() or
+/// resolve_in_parts() next. Returns the number of changed nodes and edges. Throws
+/// std::invalid_argument when the sets do not fit the graph.
+std::size_t apply_capacity_changes(DynamicMaxFlow& graph, const FlowCapacities& before,
+                                   const FlowCapacities& after);
+
+/// apply_capacity_changes, then resolve().
 std::size_t resolve_with(DynamicMaxFlow& graph, const FlowCapacities& before,
                          const FlowCapacities& after);
 
