@@ -177,6 +177,12 @@ TEST_CASE("every solver validates its options in one shape", "[solvers][surface]
         "coarse: options of icm for a run of lbp (the same solver on every level)");
   spec.coarse = LbpOptions{BpSchedule::parallel, 2.0};
   CHECK(spec.validate() == "coarse: damping must be in [0, 1)");
+  // The max-flow in parts is our max-flow's: another backend is refused, not run serially.
+  ExpansionOptions parted;
+  parted.flow_parts = 4;
+  CHECK(expansion_spec(parted, NearLevels::original, MaxFlowKind::dynamic).validate().empty());
+  CHECK(expansion_spec(parted, NearLevels::original, MaxFlowKind::boost).validate() ==
+        "maxflow: flow_parts 4 needs our max-flow ('dynamic'), and the run uses 'boost'");
 #ifndef C2F_HAVE_KOLMOGOROV_MAXFLOW
   CHECK_THAT(SolverSpec{MaxFlowKind::kolmogorov}.validate(),
              Catch::StartsWith("maxflow: 'kolmogorov' is not in this build"));

@@ -95,6 +95,14 @@ std::string SolverSpec::validate() const {
   }
   if (std::string problem = validate_options(original); !problem.empty())
     return "original: " + problem;
+  for (const SolverOptions* options : {&original, coarse ? &*coarse : nullptr}) {
+    const auto* expansion = options ? std::get_if<ExpansionOptions>(options) : nullptr;
+    if (expansion && expansion->flow_parts > 1 && maxflow != MaxFlowKind::dynamic) {
+      return "maxflow: flow_parts " + std::to_string(expansion->flow_parts) +
+             " needs our max-flow ('dynamic'), and the run uses '" +
+             std::string(to_string(maxflow)) + "'";
+    }
+  }
   if (!coarse) return {};
   if (coarse->index() != original.index()) {
     return "coarse: options of " + std::string(to_string(solver_kind(*coarse))) + " for a run of " +
