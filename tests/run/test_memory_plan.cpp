@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/run/memory_plan.hpp"
@@ -76,8 +77,11 @@ TEST_CASE("each solver states its working memory, and the floor adds the energy'
   CHECK(move_solver_bytes(size, GraphStorage::adjacency_lists) == 2 * one);
   ExpansionOptions near;
   near.near_radius = 3;
-  CHECK(working_memory_bytes(ExpansionOptions{}, size, GraphStorage::arrays) == one);
-  CHECK(working_memory_bytes(near, size, GraphStorage::arrays) == 2 * one);
+  // Expansion also tallies each move's energy with the energy's edge incidences.
+  const std::size_t incidences =
+      600 * sizeof(std::size_t) + energy.edges().size() * 2 * sizeof(Incidence);
+  CHECK(working_memory_bytes(ExpansionOptions{}, size, GraphStorage::arrays) == one + incidences);
+  CHECK(working_memory_bytes(near, size, GraphStorage::arrays) == 2 * one + incidences);
   CHECK(working_memory_bytes(SwapOptions{}, size, GraphStorage::arrays) == one);
   CHECK(wanted_graph_bytes(ExpansionOptions{}, size, GraphStorage::arrays) == 6 * one);
   CHECK(wanted_graph_bytes(SwapOptions{}, size, GraphStorage::arrays) == 21 * one);
@@ -91,7 +95,7 @@ TEST_CASE("each solver states its working memory, and the floor adds the energy'
 
   const auto floor = run_memory_floor(SolverSpec{}, size);
   REQUIRE(floor.has_value());
-  CHECK(*floor == (std::size_t{128} << 20) + size.energy_bytes + 600 * 64 + one);
+  CHECK(*floor == (std::size_t{128} << 20) + size.energy_bytes + 600 * 64 + one + incidences);
   CHECK(*run_memory_floor(near_expansion(NearLevels::original), size) == *floor + one);
 }
 

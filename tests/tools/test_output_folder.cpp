@@ -110,8 +110,9 @@ TEST_CASE("OutputFolder replaces only the files its runs wrote, and keeps what a
   CHECK(fs::is_directory(dir / "trace.csv" / "inside"));
   fs::remove_all(dir / "trace.csv");
   // A user's file put in place of a file the tool wrote (another inode) is the user's now.
-  fs::remove(dir / "summary.txt");
-  write_text(dir / "summary.txt", "the user's summary");
+  // Written beside it and renamed over it, so that it cannot reuse the freed inode number.
+  write_text(dir / "summary.txt.users", "the user's summary");
+  fs::rename(dir / "summary.txt.users", dir / "summary.txt");
   CHECK_THROWS_WITH(OutputFolder(dir, "c2f-test", owned), Catch::Contains("holds 'summary.txt'"));
   CHECK(read_text(dir / "summary.txt") == "the user's summary");
   fs::remove(dir / "summary.txt");

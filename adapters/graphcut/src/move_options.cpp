@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/support/memory_need.hpp"
 
 namespace c2f {
@@ -62,7 +63,13 @@ std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
   const auto one = move_solver_bytes(size, storage);
   const bool second =
       options.near_radius > 0 || options.shift_moves || options.shift_moves_unless_submodular;
-  return one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;
+  const auto solvers =
+      one ? checked_product({*one, second ? std::size_t{2} : std::size_t{1}}) : one;
+  // The edge incidences each move's exact energy is tallied with (EnergyTally).
+  const auto offsets = checked_product({size.variables, sizeof(std::size_t)});
+  const auto incidences = checked_product({size.edges, 2 * sizeof(Incidence)});
+  if (!solvers || !offsets || !incidences) return std::nullopt;
+  return checked_sum({*solvers, *offsets, *incidences});
 }
 
 std::optional<std::size_t> working_memory_bytes(const SwapOptions& /*options*/,

@@ -125,9 +125,28 @@ double PairwiseEnergy::evaluate(std::span<const Label> labeling) const {
 
 double PairwiseEnergy::evaluate_unchecked(std::span<const Label> labeling) const noexcept {
   double total = 0.0;
-  for (std::size_t v = 0; v < num_variables_; ++v) total += unary(v, labeling[v]);
-  for (const Edge& e : edges_) total += pairwise_cost(e, labeling[e.u], labeling[e.v]);
+  for (std::size_t first = 0; first < num_variables_; first += kEvaluationChunk)
+    total += unary_sum(labeling, first, std::min(first + kEvaluationChunk, num_variables_));
+  for (std::size_t first = 0; first < edges_.size(); first += kEvaluationChunk)
+    total += pairwise_sum(labeling, first, std::min(first + kEvaluationChunk, edges_.size()));
   return total;
+}
+
+double PairwiseEnergy::unary_sum(std::span<const Label> x, std::size_t first,
+                                 std::size_t last) const noexcept {
+  double sum = 0.0;
+  for (std::size_t v = first; v < last; ++v) sum += unary(v, x[v]);
+  return sum;
+}
+
+double PairwiseEnergy::pairwise_sum(std::span<const Label> x, std::size_t first,
+                                    std::size_t last) const noexcept {
+  double sum = 0.0;
+  for (std::size_t i = first; i < last; ++i) {
+    const Edge& e = edges_[i];
+    sum += pairwise_cost(e, x[e.u], x[e.v]);
+  }
+  return sum;
 }
 
 }  // namespace c2f

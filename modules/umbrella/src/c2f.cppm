@@ -69,6 +69,7 @@ using c2f::DynamicSolveStats;
 using c2f::Edge;
 using c2f::EdgeIncidence;
 using c2f::Energy;
+using c2f::EnergyTally;
 using c2f::energy_memory_bytes;
 using c2f::energy_traits;
 using c2f::expand;

@@ -18,6 +18,7 @@
 #include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/energy.hpp"
+#include "c2f/core/energy_tally.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/memory_budget.hpp"

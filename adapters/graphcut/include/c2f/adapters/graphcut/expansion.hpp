@@ -78,7 +78,7 @@ class ExpansionSolver {
   void bind(const PairwiseEnergy& energy, std::span<const Label> start) {
     // One set of edge incidences for the kept problems, the regions and the near moves.
     detail::SharedIncidence incidences(energy);
-    problems_.bind(energy, options_.problem_memory_limit, &incidences);
+    problems_.bind(energy, options_.problem_memory_limit, &incidences, options_.threads);
     shift_moves_ = makes_shift_moves(options_, energy);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
     const std::size_t graph_limit = recycled_graph_limit(options_);
@@ -90,6 +90,7 @@ class ExpansionSolver {
     // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
     // within the whole limit.
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
+    state_.tally_changes(incidences.get(), options_.threads);
     state_.moves.solve_in_parts(flow_parts(energy.num_variables()), options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
@@ -99,7 +100,8 @@ class ExpansionSolver {
     }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
-    if (options_.near_radius > 0) near_.bind(energy, options_.near_radius, &incidences);
+    if (options_.near_radius > 0)
+      near_.bind(energy, options_.near_radius, &incidences, options_.threads);
     sweep_steps_done_ = 0;
     sweep_ = first_sweep();
   }
@@ -258,6 +260,7 @@ class ExpansionSolver {
     moved_.clear();
     if (free.empty()) return;
     near_solver_.bind(free.size(), near_.pairs());
+    near_solver_.solve_in_parts(flow_parts(free.size()), options_.threads);
     near_out_.resize(free.size());
     const BinaryMoveStats stats = near_solver_.solve(near_.d(), near_.p(), near_out_);
     last_.unlabeled = stats.unlabeled;
@@ -275,7 +278,7 @@ class ExpansionSolver {
   /// Ends a move over every variable or over the near ones: takes its candidate when it lowers
   /// the energy, and logs what changed for the kept problems.
   void finish_move() {
-    state_.finish_move(last_, moved_.size(), options_.tolerance);
+    state_.finish_move(last_, moved_, options_.tolerance);
     if (last_.improved) problems_.log_changes(moved_);
   }
 
@@ -326,7 +329,7 @@ class ExpansionSolver {
     // The candidate already holds the moved labeling; the labeling goes back to the start.
     state_.value = start_value;
     state_.labeling.swap(move_start_);
-    if (!moved_.empty() && state_.accept_candidate_if_lower(options_.tolerance)) {
+    if (!moved_.empty() && state_.accept_candidate_if_lower(options_.tolerance, moved_)) {
       last_.changed = moved_.size();
       last_.improved = true;
     } else {

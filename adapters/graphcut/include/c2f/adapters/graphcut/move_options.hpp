@@ -18,8 +18,9 @@ namespace c2f {
 struct MoveOptions {
   VisitOrder order = VisitOrder::sequential;
   std::uint64_t seed = 1;  ///< for VisitOrder::random
-  /// A move is accepted when E_new < E_old - tolerance * max(1, |E_old|); with 0 every move
-  /// that lowers the energy is accepted (and no move that keeps it equal).
+  /// A move is accepted when E_new < E_old - max(tolerance, 1e-13) * max(1, |E_old|): with 0
+  /// every move that lowers the energy by more than the rounding of its sum is accepted (a
+  /// move whose exact energy ties may sum a few units in the last place lower).
   double tolerance = 0.0;
   /// Bytes recycled move graphs may take. With a backend that resumes from its flow (the
   /// default DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move
@@ -86,9 +87,10 @@ struct ExpansionOptions : MoveOptions {
   /// Threads solving a move's regions, or its max-flow's parts, at once (0: the machine's
   /// cores). Results are the same for every count.
   int threads = 0;
-  /// Moves over every variable (whole and shift moves) solve their max-flow in this many parts
-  /// at once on `threads` threads: bands of about equal ranges of variable indices (bands of
-  /// rows on a grid), each part's flow found on its own, then the whole graph's from those
+  /// Moves solve their max-flow (whole and shift moves over every variable, near moves over
+  /// their free variables) in this many parts at once on `threads` threads: bands of about
+  /// equal ranges of the move's variable indices (bands of rows on a grid), each part's flow
+  /// found on its own, then the whole graph's from those
   /// (DynamicMaxFlow::solve_cut_in_parts, resolve_in_parts). The moves are exact either way,
   /// but a cut found in parts may differ from the serial one in floating-point rounding, so
   /// results depend on this number, never on `threads`. 1 (the default): one part. Only our
@@ -133,7 +135,8 @@ enum class GraphStorage { arrays, adjacency_lists };
                                                            GraphStorage storage);
 
 /// What alpha-expansion with `options` works in on a problem of `size` besides its optional
-/// memory (graph_memory_limit): one binary-move solver, two with near or shift moves.
+/// memory (graph_memory_limit): one binary-move solver, two with near or shift moves, and the
+/// edge incidences its moves' energies are tallied with (EnergyTally).
 /// std::nullopt when the count overflows.
 [[nodiscard]] std::optional<std::size_t> working_memory_bytes(const ExpansionOptions& options,
                                                               const ProblemSize& size,

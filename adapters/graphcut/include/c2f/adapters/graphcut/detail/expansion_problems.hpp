@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/bands.hpp"
 #include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
@@ -23,26 +24,29 @@ namespace c2f::detail {
 /// with edge e = (u, v) adding C - A to d[u] and D - C to d[v], where A = cost(x_u, x_v),
 /// B = cost(x_u, alpha), C = cost(alpha, x_v), D = cost(alpha, alpha).
 ///
-/// A label's problem is computed in full on its first move (edge by edge, in edge order) and
-/// afterwards patched: for the variables changed since, their edges' p and their own and their
-/// neighbours' d, each d summed afresh over the variable's incidences, which follow the edge
-/// order, so a patched problem is bitwise the problem a full computation gives. Labels keep
-/// their problems while num_labels * (N + E) doubles fit in a memory limit; otherwise every move
-/// computes in full.
+/// A label's problem is computed in full on its first move and afterwards patched: for the
+/// variables changed since, their edges' p and their own and their neighbours' d. Either way
+/// each d is summed over the variable's incidences, which follow the edge order (the order in
+/// which add_binary_term, edge by edge, would add them), so a patched problem is bitwise the
+/// problem a full computation gives, and a full one is computed by bands on several threads. Labels
+/// keep their problems while num_labels * (N + E) doubles fit in a memory limit; otherwise every
+/// move computes in full.
 class ExpansionProblems {
  public:
   /// Forgets every problem; keeps one per label when they fit in memory_limit bytes (the edge
-  /// incidences from `shared` when given).
+  /// incidences from `shared` when given). Problems computed in full are computed by bands
+  /// (detail/bands.hpp) on up to `threads` threads, to the same bits for every count.
   void bind(const PairwiseEnergy& energy, std::size_t memory_limit,
-            SharedIncidence* shared = nullptr) {
+            SharedIncidence* shared = nullptr, int threads = 1) {
     energy_ = &energy;
+    threads_ = threads;
     const std::size_t per_label = (energy.num_variables() + energy.edges().size()) * sizeof(double);
     const auto labels = static_cast<std::size_t>(energy.num_labels());
     kept_ = per_label > 0 && per_label * labels <= memory_limit;
     problems_.assign(kept_ ? labels : 1, Problem{});
     log_.clear();
+    incidence_ = incidence_of(energy, shared);
     if (kept_) {
-      incidence_ = incidence_of(energy, shared);
       node_stamp_.assign(energy.num_variables(), 0);
       edge_stamp_.assign(energy.edges().size(), 0);
       stamp_ = 0;
@@ -85,26 +89,57 @@ class ExpansionProblems {
     std::size_t mark = kNever;  ///< log size when d and p were last brought up to date
   };
 
-  void compute_in_full(Label alpha, std::span<const Label> x, Problem& problem) const {
+  /// p[e] of the move to alpha from x: B + C - A - D.
+  [[nodiscard]] double pair_coefficient(const Edge& edge, Label alpha,
+                                        std::span<const Label> x) const noexcept {
     const PairwiseEnergy& energy = *energy_;
-    problem.d.resize(energy.num_variables());
-    problem.p.assign(energy.edges().size(), 0.0);
-    for (std::size_t i = 0; i < problem.d.size(); ++i)
-      problem.d[i] = energy.unary(i, alpha) - energy.unary(i, x[i]);
+    const Label xu = x[edge.u];
+    const Label xv = x[edge.v];
+    return energy.pairwise_cost(edge, xu, alpha) + energy.pairwise_cost(edge, alpha, xv) -
+           energy.pairwise_cost(edge, xu, xv) - energy.pairwise_cost(edge, alpha, alpha);
+  }
+
+  /// d[v] of the move to alpha from x: its unary change, then its edges' shares (C - A as an
+  /// edge's u, D - C as its v) in edge order, as add_binary_term adds them edge by edge.
+  [[nodiscard]] double node_coefficient(VariableIndex v, Label alpha,
+                                        std::span<const Label> x) const noexcept {
+    const PairwiseEnergy& energy = *energy_;
     const auto edges = energy.edges();
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      const Edge& edge = edges[e];
+    double value = energy.unary(v, alpha) - energy.unary(v, x[v]);
+    for (const Incidence& inc : incidence_->of(v)) {
+      const Edge& edge = edges[inc.edge];
       const Label xu = x[edge.u];
       const Label xv = x[edge.v];
-      add_binary_term(problem.d, problem.p, e, edge.u, edge.v, energy.pairwise_cost(edge, xu, xv),
-                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
-                      energy.pairwise_cost(edge, alpha, alpha));
+      const double C = energy.pairwise_cost(edge, alpha, xv);
+      value += inc.is_first ? C - energy.pairwise_cost(edge, xu, xv)
+                            : energy.pairwise_cost(edge, alpha, alpha) - C;
     }
+    return value;
+  }
+
+  /// Every p[e] and d[v], by bands of edges and of variables.
+  void compute_in_full(Label alpha, std::span<const Label> x, Problem& problem) const {
+    const auto edges = energy_->edges();
+    problem.d.resize(energy_->num_variables());
+    problem.p.resize(edges.size());
+    for_each_band(
+        edges.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t e = first; e < last; ++e)
+            problem.p[e] = pair_coefficient(edges[e], alpha, x);
+        },
+        threads_);
+    for_each_band(
+        problem.d.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t v = first; v < last; ++v)
+            problem.d[v] = node_coefficient(static_cast<VariableIndex>(v), alpha, x);
+        },
+        threads_);
   }
 
   void patch(Label alpha, std::span<const Label> x, Problem& problem) {
-    const PairwiseEnergy& energy = *energy_;
-    const auto edges = energy.edges();
+    const auto edges = energy_->edges();
     if (++stamp_ == 0) {  // the stamps wrapped: clear them
       std::fill(node_stamp_.begin(), node_stamp_.end(), 0);
       std::fill(edge_stamp_.begin(), edge_stamp_.end(), 0);
@@ -123,29 +158,14 @@ class ExpansionProblems {
         affect(inc.other);
         if (edge_stamp_[inc.edge] == stamp_) continue;
         edge_stamp_[inc.edge] = stamp_;
-        const Edge& edge = edges[inc.edge];
-        const Label xu = x[edge.u];
-        const Label xv = x[edge.v];
-        problem.p[inc.edge] =
-            energy.pairwise_cost(edge, xu, alpha) + energy.pairwise_cost(edge, alpha, xv) -
-            energy.pairwise_cost(edge, xu, xv) - energy.pairwise_cost(edge, alpha, alpha);
+        problem.p[inc.edge] = pair_coefficient(edges[inc.edge], alpha, x);
       }
     }
-    for (const VariableIndex v : affected_) {
-      double value = energy.unary(v, alpha) - energy.unary(v, x[v]);
-      for (const Incidence& inc : incidence_->of(v)) {
-        const Edge& edge = edges[inc.edge];
-        const Label xu = x[edge.u];
-        const Label xv = x[edge.v];
-        const double C = energy.pairwise_cost(edge, alpha, xv);
-        value += inc.is_first ? C - energy.pairwise_cost(edge, xu, xv)
-                              : energy.pairwise_cost(edge, alpha, alpha) - C;
-      }
-      problem.d[v] = value;
-    }
+    for (const VariableIndex v : affected_) problem.d[v] = node_coefficient(v, alpha, x);
   }
 
   const PairwiseEnergy* energy_ = nullptr;
+  int threads_ = 1;
   bool kept_ = false;
   std::vector<Problem> problems_;   // per label when kept, else one scratch problem
   std::vector<VariableIndex> log_;  // variables changed by accepted moves, in order

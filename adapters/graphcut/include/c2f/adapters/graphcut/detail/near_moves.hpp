@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/bands.hpp"
 #include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/energy.hpp"
@@ -24,44 +25,62 @@ namespace c2f::detail {
 /// Marks a variable that is no node of a restricted problem (restricted_problem's `local`).
 inline constexpr std::uint32_t kHeld = 0xffffffffu;
 
-/// The binary problem of the move to alpha from x restricted to `nodes` (ascending): every
-/// other variable keeps its label, so its edges to nodes become unary terms of those nodes.
-/// local[v] is v's index in `nodes` for a node, kHeld for every other variable. Writes the
-/// problem in binary_move.hpp's form, nodes numbered as in `nodes`.
+/// Rows [first, last) of the binary problem of the move to alpha from x restricted to `nodes`
+/// (ascending): every other variable keeps its label, so its edges to nodes become unary terms
+/// of those nodes. local[v] is v's index in `nodes` for a node, kHeld for every other variable.
+/// Writes d[k] for first <= k < last (d has a row per node) and appends the pairs whose u is
+/// one of these nodes to `pairs` and their p to `p` (in node order, then in edge order): the
+/// problem in binary_move.hpp's form, nodes numbered as in `nodes`. Each d[k] is its unary
+/// change plus its edges' terms in edge order, so rows computed apart (by bands) add up to the
+/// same bits.
+inline void restricted_rows(const PairwiseEnergy& energy, const EdgeIncidence& incidence,
+                            Label alpha, std::span<const Label> x,
+                            std::span<const VariableIndex> nodes,
+                            std::span<const std::uint32_t> local, std::size_t first,
+                            std::size_t last, std::span<double> d, std::vector<double>& p,
+                            std::vector<FlowEdge>& pairs) {
+  const auto edges = energy.edges();
+  for (std::size_t k = first; k < last; ++k) {
+    const VariableIndex v = nodes[k];
+    double value = energy.unary(v, alpha) - energy.unary(v, x[v]);
+    for (const Incidence& inc : incidence.of(v)) {
+      const Edge& edge = edges[inc.edge];
+      const VariableIndex other = inc.other;
+      if (local[other] == kHeld) {
+        value += inc.is_first ? energy.pairwise_cost(edge, alpha, x[other]) -
+                                    energy.pairwise_cost(edge, x[v], x[other])
+                              : energy.pairwise_cost(edge, x[other], alpha) -
+                                    energy.pairwise_cost(edge, x[other], x[v]);
+        continue;
+      }
+      // A pair between nodes: this node's share (add_binary_term), and the pair from u's side.
+      const Label xu = x[edge.u];
+      const Label xv = x[edge.v];
+      const double A = energy.pairwise_cost(edge, xu, xv);
+      const double C = energy.pairwise_cost(edge, alpha, xv);
+      const double D = energy.pairwise_cost(edge, alpha, alpha);
+      if (!inc.is_first) {
+        value += D - C;
+        continue;
+      }
+      value += C - A;
+      pairs.push_back({static_cast<FlowNode>(k), static_cast<FlowNode>(local[other])});
+      p.push_back(energy.pairwise_cost(edge, xu, alpha) + C - A - D);
+    }
+    d[k] = value;
+  }
+}
+
+/// Every row of that problem (restricted_rows), on the calling thread.
 inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence& incidence,
                                Label alpha, std::span<const Label> x,
                                std::span<const VariableIndex> nodes,
                                std::span<const std::uint32_t> local, std::vector<double>& d,
                                std::vector<double>& p, std::vector<FlowEdge>& pairs) {
-  const auto edges = energy.edges();
-  d.assign(nodes.size(), 0.0);
+  d.resize(nodes.size());
   p.clear();
   pairs.clear();
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const VariableIndex v = nodes[k];
-    d[k] += energy.unary(v, alpha) - energy.unary(v, x[v]);
-    for (const Incidence& inc : incidence.of(v)) {
-      const Edge& edge = edges[inc.edge];
-      const VariableIndex other = inc.other;
-      if (local[other] == kHeld) {
-        d[k] += inc.is_first ? energy.pairwise_cost(edge, alpha, x[other]) -
-                                   energy.pairwise_cost(edge, x[v], x[other])
-                             : energy.pairwise_cost(edge, x[other], alpha) -
-                                   energy.pairwise_cost(edge, x[other], x[v]);
-        continue;
-      }
-      if (!inc.is_first) continue;  // a pair between nodes, added from its u side
-      const Label xu = x[edge.u];
-      const Label xv = x[edge.v];
-      const auto u = static_cast<FlowNode>(local[edge.u]);
-      const auto w = static_cast<FlowNode>(local[edge.v]);
-      p.push_back(0.0);
-      pairs.push_back({u, w});
-      add_binary_term(d, p, p.size() - 1, u, w, energy.pairwise_cost(edge, xu, xv),
-                      energy.pairwise_cost(edge, xu, alpha), energy.pairwise_cost(edge, alpha, xv),
-                      energy.pairwise_cost(edge, alpha, alpha));
-    }
-  }
+  restricted_rows(energy, incidence, alpha, x, nodes, local, 0, nodes.size(), d, p, pairs);
 }
 
 /// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
@@ -71,10 +90,13 @@ inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence
 class NearMoves {
  public:
   /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences
-  /// (from `shared` when given).
-  void bind(const PairwiseEnergy& energy, int radius, SharedIncidence* shared = nullptr) {
+  /// (from `shared` when given). build() writes the problem by bands (detail/bands.hpp) on up
+  /// to `threads` threads, to the same bits for every count.
+  void bind(const PairwiseEnergy& energy, int radius, SharedIncidence* shared = nullptr,
+            int threads = 1) {
     energy_ = &energy;
     radius_ = radius;
+    threads_ = threads;
     incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
     cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
@@ -91,8 +113,32 @@ class NearMoves {
     select(alpha, x);
     // In index order, the unary table is read nearly sequentially.
     std::sort(free_.begin(), free_.end());
-    for (std::size_t k = 0; k < free_.size(); ++k) local_[free_[k]] = static_cast<std::uint32_t>(k);
-    restricted_problem(*energy_, *incidence_, alpha, x, free_, local_, d_, p_, pairs_);
+    const std::size_t bands = band_count(free_.size());
+    band_p_.resize(bands);
+    band_pairs_.resize(bands);
+    d_.resize(free_.size());
+    for_each_band(
+        free_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t k = first; k < last; ++k)
+            local_[free_[k]] = static_cast<std::uint32_t>(k);
+        },
+        threads_);
+    for_each_band(
+        free_.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          band_p_[b].clear();
+          band_pairs_[b].clear();
+          restricted_rows(*energy_, *incidence_, alpha, x, free_, local_, first, last, d_,
+                          band_p_[b], band_pairs_[b]);
+        },
+        threads_);
+    p_.clear();
+    pairs_.clear();
+    for (std::size_t b = 0; b < bands; ++b) {
+      p_.insert(p_.end(), band_p_[b].begin(), band_p_[b].end());
+      pairs_.insert(pairs_.end(), band_pairs_[b].begin(), band_pairs_[b].end());
+    }
   }
 
   /// Finds the free variables of the move to alpha from x (in no order in free()), without
@@ -135,6 +181,7 @@ class NearMoves {
 
   const PairwiseEnergy* energy_ = nullptr;
   int radius_ = 0;
+  int threads_ = 1;
   std::shared_ptr<const EdgeIncidence> incidence_;
   std::vector<std::vector<VariableIndex>> cheapest_;  // per label: variables it is cheapest for
   std::vector<std::uint32_t> local_;                  // per variable: index in free_, or kHeld
@@ -142,6 +189,9 @@ class NearMoves {
   std::vector<VariableIndex> free_, reached_;
   std::vector<double> d_, p_;
   std::vector<FlowEdge> pairs_;
+  // Per band of free variables: its pairs and their p, before they are joined in band order.
+  std::vector<std::vector<double>> band_p_;
+  std::vector<std::vector<FlowEdge>> band_pairs_;
 };
 
 }  // namespace c2f::detail

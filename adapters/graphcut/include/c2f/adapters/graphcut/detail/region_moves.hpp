@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/move_state.hpp"
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
 #include "c2f/adapters/graphcut/detail/region_layout.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
@@ -192,14 +193,14 @@ class RegionMoves {
 
   /// Runs solve(region) for the regions of `colour` at once (each proposes changes into
   /// `candidate` within its variables), then takes each region's proposal into `labeling` when
-  /// its exact energy change is below -tolerance * max(1, |value|): adds the changed variables
-  /// to `moved` (in region order), the changes taken to `value` and the solver statistics to
-  /// `step`. `candidate` equals `labeling` before and after.
+  /// its exact energy change is below -acceptance_margin(tolerance, value): adds the changed
+  /// variables to `moved` (in region order), the changes taken to `value` and the solver statistics
+  /// to `step`. `candidate` equals `labeling` before and after.
   template <class Solve>
   void run_phase(int colour, double tolerance, Labeling& labeling, Labeling& candidate,
                  double& value, std::vector<VariableIndex>& moved, MoveStep& step,
                  const Solve& solve) {
-    const double margin = tolerance * std::max(1.0, std::abs(value));
+    const double margin = acceptance_margin(tolerance, value);
     const auto first = static_cast<std::size_t>(colour);
     const std::size_t tasks = (regions_.size() - first + 1) / 2;
     for_each_region(

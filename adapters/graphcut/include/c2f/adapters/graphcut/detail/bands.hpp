@@ -1,0 +1,27 @@
+#pragma once
+// Internal to the graph-cut solvers: a pass over the variables or edges of a move, split into
+// bands of consecutive indices that depend on the count only, run on several threads. Each band
+// writes only its own outputs, so results are the same for every thread count. Installed only
+// because the solver templates include it.
+
+#include <cstddef>
+#include <functional>
+
+namespace c2f::detail {
+
+/// The indices of one band: [0, count) is cut into bands of this many (the last shorter).
+inline constexpr std::size_t kBandSize = 8192;
+
+/// The number of bands of [0, count).
+[[nodiscard]] constexpr std::size_t band_count(std::size_t count) noexcept {
+  return (count + kBandSize - 1) / kBandSize;
+}
+
+/// Calls task(b, first, last) for every band b = [first, last) of [0, count), each once, on up
+/// to `threads` threads (0: the machine's cores); a single band runs on the calling thread.
+/// Rethrows the exception of the lowest band that threw after all have ended.
+void for_each_band(std::size_t count,
+                   const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
+                   int threads);
+
+}  // namespace c2f::detail
