@@ -92,6 +92,7 @@ def solve(
     callback: Optional[Callback] = None,
     memory: Optional[float] = None,
     graph_memory: Optional[float] = None,
+    threads: Optional[int] = None,
 ) -> Result:
     """Minimise `energy`, flat or coarse to fine (the run layer's ``c2f::run``).
 
@@ -157,6 +158,10 @@ def solve(
     graph_memory : float, optional
         At most this many GiB of the budget for recycled move graphs (0: no recycling; None:
         all that the budget leaves).
+    threads : int, optional
+        The cores expansion solves on (``options['threads']``, which may be given instead but
+        not as well; None: that option's default, 0: every core). The result is the same bits
+        for every count. Only expansion takes it.
 
     Returns
     -------
@@ -176,6 +181,12 @@ def solve(
     -----
     The GIL is released while the solver runs.
     """
+    if threads is not None:
+        if method != "expansion":
+            raise ValueError(f"threads: only expansion solves on several threads, not {method!r}")
+        if options is not None and "threads" in options:
+            raise ValueError("threads: given as well as options['threads']; give one")
+        options = dict(options or {}, threads=threads)
     return _result(lambda: _solve(
         energy, list(schedule) if isinstance(schedule, tuple) else schedule, defaults=defaults,
         method=method,

@@ -253,3 +253,23 @@ def test_the_max_flow_in_parts_gives_the_same_bits_on_one_thread_and_on_several(
             c2f.solve(energy, options={"flow_parts": bad})
     with pytest.raises(ValueError, match="only our max-flow"):
         c2f.solve(energy, options={"flow_parts": 4, "maxflow": "boost"})
+
+
+def test_near_moves_in_parts_and_the_threads_argument(rng):
+    # 320 x 220 pixels with near moves: their max-flow in parts too, and their problems by bands.
+    energy = c2f.Energy.grid(rng.random((320, 220, 8)), c2f.Term.truncated_linear(2.0),
+                             weight=0.4)
+    options = {"flow_parts": 4, "near_radius": 2}
+    runs = [c2f.solve(energy, "flat", options=options, threads=threads) for threads in (1, 2, 3)]
+    assert "max-flow in 4 parts on 1 thread" in runs[0].summary
+    assert "max-flow in 4 parts on 2 threads" in runs[1].summary
+    for run in runs[1:]:
+        assert np.array_equal(run.labeling, runs[0].labeling)
+        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
+    assert runs[0].reason == "converged"
+    assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
+    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+    with pytest.raises(ValueError, match="given as well as options"):
+        c2f.solve(energy, options={"threads": 1}, threads=2)
+    with pytest.raises(ValueError, match="only expansion"):
+        c2f.solve(energy, method="icm", threads=2)
