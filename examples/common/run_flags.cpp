@@ -34,12 +34,13 @@ void RunFlags::declare(ToolOptions& options) {
                "once, then on the odd ones, on --threads threads; when a sweep gains at most 1e-4 "
                "of the energy, a sweep of band moves over every variable, then one of whole moves "
                "(convergence: four sweeps without decrease; e.g. 16). 1: every move on one thread")
-      .integer("flow-parts", &flow_parts_, {1, 255},
-               "expansion with --maxflow dynamic: solve the max-flow of every move over every "
-               "variable in this many bands of variables (at least 4096 each) at once on "
-               "--threads threads, then over the whole graph from their flows; exact moves, the "
-               "same output for every thread count (the bits may differ from 1 part's by "
-               "floating-point rounding); 1: one part (docs/performance.md, \"The solve\")")
+      .integer("flow-parts", &flow_parts_, {0, 255},
+               "expansion with --maxflow dynamic: solve the max-flow of every move in this many "
+               "bands of its variables (at least 4096 each) at once on --threads threads, then "
+               "over the whole graph from their flows; exact moves, the same output for every "
+               "thread count (the bits may differ from 1 part's by floating-point rounding); 0: "
+               "4 parts with --maxflow dynamic, 1 with another; 1: one part "
+               "(docs/performance.md, \"The solve\")")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label or of a pixel whose cheapest "

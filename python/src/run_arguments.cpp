@@ -130,7 +130,7 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
         } else if (key == "threads") {
           expansion.threads = static_cast<int>(integer_argument(value, name, 0, 1024));
         } else if (key == "flow_parts") {
-          expansion.flow_parts = static_cast<int>(integer_argument(value, name, 1, 255));
+          expansion.flow_parts = static_cast<int>(integer_argument(value, name, 0, 255));
         } else if (key == "near_levels") {
           levels = named_value(value, name, near_levels_from_string);
         } else {

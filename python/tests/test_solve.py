@@ -221,9 +221,11 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     assert runs[0].reason == "converged"
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
     assert runs[0].energy == energy.evaluate(runs[0].labeling)
-    # One band: every move on one thread.
-    one = c2f.solve(energy, "flat", options={"near_radius": 2})
+    # One band and one part: every move on one thread. By default the max-flow is in 4 parts.
+    one = c2f.solve(energy, "flat", options={"near_radius": 2, "flow_parts": 1})
     assert "solve: every move over every variable on one thread" in one.summary
+    default = c2f.solve(energy, "flat", options={"near_radius": 2, "threads": 2})
+    assert "solve: every move over every variable, max-flow in 4 parts on 2 threads" in default.summary
     with pytest.raises(ValueError, match="regions"):
         c2f.solve(energy, options={"regions": 0})
     with pytest.raises(ValueError, match="no effect without near_radius"):
@@ -246,9 +248,9 @@ def test_the_max_flow_in_parts_gives_the_same_bits_on_one_thread_and_on_several(
         assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
     assert runs[0].reason == "converged"
     assert runs[0].energy == energy.evaluate(runs[0].labeling)
-    serial = c2f.solve(energy)
+    serial = c2f.solve(energy, options={"flow_parts": 1})
     assert runs[0].energy == pytest.approx(serial.energy, rel=1e-4)
-    for bad in (0, 256):
+    for bad in (-1, 256):
         with pytest.raises(ValueError, match="flow_parts"):
             c2f.solve(energy, options={"flow_parts": bad})
     with pytest.raises(ValueError, match="only our max-flow"):

@@ -129,7 +129,7 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {grid + out + " --flow-parts 4 --solver swap", "--flow-parts with --solver swap"},
            {grid + out + " --flow-parts 4 --maxflow boost",
             "--flow-parts: only our max-flow (--maxflow dynamic) solves in parts"},
-           {grid + out + " --flow-parts 0", "--flow-parts"},
+           {grid + out + " --flow-parts 256", "--flow-parts"},
            // c2f-solve's defaults make whole moves (shift moves only where an expansion move is
            // not submodular: --shift-moves auto), so these flags are asked for, not defaults.
            {grid + out + " --solver icm --shift-moves",

@@ -273,8 +273,8 @@ TEST_CASE("expansion with its max-flow in parts gives the same bits on 1, 2 and 
     CHECK(results[2] == results[0]);
   }
   ExpansionOptions options;
-  options.flow_parts = 0;
-  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("flow_parts must be in [1, 255]"));
+  options.flow_parts = -1;
+  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("flow_parts must be in [0, 255]"));
   options.flow_parts = 256;
-  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("flow_parts must be in [1, 255]"));
+  CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("flow_parts must be in [0, 255]"));
 }

@@ -20,7 +20,7 @@ std::string ExpansionOptions::validate() const {
     return "near_sweep_gain must be finite and >= 0";
   if (regions < 1 || regions > 65535) return "regions must be in [1, 65535]";
   if (threads < 0) return "threads must be >= 0";
-  if (flow_parts < 1 || flow_parts > 255) return "flow_parts must be in [1, 255]";
+  if (flow_parts < 0 || flow_parts > 255) return "flow_parts must be in [0, 255]";
   return {};
 }
 

@@ -98,6 +98,7 @@ using c2f::initial_labeling;
 using c2f::initial_labeling_from_string;
 using c2f::InitialLabeling;
 using c2f::intersect;
+using c2f::kDefaultFlowParts;
 using c2f::kept_problem_bytes;
 using c2f::Label;
 using c2f::label_counts;

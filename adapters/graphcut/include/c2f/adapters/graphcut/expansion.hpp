@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -155,13 +156,19 @@ class ExpansionSolver {
     return regions_.active() ? regions_.count() : 1;
   }
 
-  /// The parts the max-flow of a move over all n variables is solved in
-  /// (ExpansionOptions::flow_parts): at most flow_parts, at least kMinRegionVariables variables
-  /// each, at least one.
+  /// The parts the max-flow of a move over n variables is solved in
+  /// (ExpansionOptions::flow_parts; 0: kDefaultFlowParts): at most that many, at least
+  /// kMinRegionVariables variables each, at least one; one on a backend that cannot solve in
+  /// parts.
   [[nodiscard]] std::size_t flow_parts(std::size_t n) const noexcept {
-    return std::max<std::size_t>(
-        1, std::min<std::size_t>(static_cast<std::size_t>(options_.flow_parts),
-                                 n / detail::kMinRegionVariables));
+    if constexpr (!requires(Backend & g, std::span<const std::uint8_t> part) {
+                    g.cut_into_parts(part);
+                  }) {
+      return 1;
+    }
+    const int wanted = options_.flow_parts == 0 ? kDefaultFlowParts : options_.flow_parts;
+    return std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(wanted),
+                                                          n / detail::kMinRegionVariables));
   }
 
  private:
