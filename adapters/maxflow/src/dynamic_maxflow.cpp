@@ -52,7 +52,28 @@ struct Parts {
   std::vector<std::uint8_t> of_node;
   std::vector<std::size_t> between;
   std::size_t count = 1;
+  /// The nodes of part k, ascending: members[first_member[k] .. first_member[k + 1]).
+  std::vector<std::uint32_t> members;
+  std::vector<std::size_t> first_member;
 };
+
+/// Nodes or edges per task when a pass over them is split among threads.
+constexpr std::size_t kPassChunk = 16384;
+
+/// Calls pass(first, last) over [0, count) in chunks of kPassChunk on up to `threads` threads
+/// (each chunk once; one chunk or one thread: in order, here).
+template <class Pass>
+void in_chunks(std::size_t count, int threads, const Pass& pass) {
+  const std::size_t chunks = (count + kPassChunk - 1) / kPassChunk;
+  const auto chunk = [&](std::size_t c) {
+    pass(c * kPassChunk, std::min(count, (c + 1) * kPassChunk));
+  };
+  if (chunks <= 1 || threads == 1) {
+    for (std::size_t c = 0; c < chunks; ++c) chunk(c);
+  } else {
+    parallel_for(chunks, chunk, threads);
+  }
+}
 
 /// Fills `to` with `from`, asking the kernel for transparent huge pages first when the block is
 /// large: a graph of many megabytes otherwise costs one page fault per 4 KiB as it is first
@@ -380,42 +401,57 @@ struct DynamicMaxFlow::Impl {
     return valid;
   }
 
+  /// all_valid on up to `threads` threads, by chunks.
+  [[nodiscard]] static bool all_valid(std::span<const double> values, int threads) {
+    if (threads == 1) return all_valid(values);
+    std::vector<std::uint8_t> valid((values.size() + kPassChunk - 1) / kPassChunk, 1);
+    in_chunks(values.size(), threads, [&](std::size_t first, std::size_t last) {
+      valid[first / kPassChunk] = all_valid(values.subspan(first, last - first)) ? 1 : 0;
+    });
+    return std::all_of(valid.begin(), valid.end(), [](std::uint8_t v) { return v != 0; });
+  }
+
   /// Throws std::invalid_argument naming the first capacity that does not fit the graph.
-  void check_solvable(const FlowCapacities& caps) const {
+  /// Checks on up to `threads` threads.
+  void check_solvable(const FlowCapacities& caps, int threads = 1) const {
     const bool sizes_fit = caps.source.size() == num_nodes && caps.sink.size() == num_nodes &&
                            caps.forward.size() == num_edges && caps.backward.size() == num_edges;
-    if (!sizes_fit || !all_valid(caps.source) || !all_valid(caps.sink) ||
-        !all_valid(caps.forward) || !all_valid(caps.backward)) {
+    if (!sizes_fit || !all_valid(caps.source, threads) || !all_valid(caps.sink, threads) ||
+        !all_valid(caps.forward, threads) || !all_valid(caps.backward, threads)) {
       throw std::invalid_argument("DynamicMaxFlow::solve: " +
                                   check_capacities(caps, num_nodes, num_edges));
     }
   }
 
   /// Zero flow on `caps`, every node with terminal residual hanging from its terminal, and
-  /// nothing queued yet.
-  void load_zero_flow(const FlowCapacities& caps) {
-    for (std::size_t i = 0; i < num_nodes; ++i) {
-      Node& node = nodes[i];
-      node.excess = caps.source[i] - caps.sink[i];
-      node.next_active = kNone;
-      node.stamp = 0;
-      node.distance = 1;
-      node.touched = false;
-      if (node.excess != 0.0) {
-        node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
-        node.parent = kTerminal;
-      } else {
-        node.tree = kFree;
-        node.parent = kNone;
+  /// nothing queued yet; written on up to `threads` threads (each node and edge by one).
+  void load_zero_flow(const FlowCapacities& caps, int threads = 1) {
+    in_chunks(num_nodes, threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        Node& node = nodes[i];
+        node.excess = caps.source[i] - caps.sink[i];
+        node.next_active = kNone;
+        node.stamp = 0;
+        node.distance = 1;
+        node.touched = false;
+        if (node.excess != 0.0) {
+          node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
+          node.parent = kTerminal;
+        } else {
+          node.tree = kFree;
+          node.parent = kNone;
+        }
       }
-    }
+    });
     first_active = last_active = kNone;
     const Topology& t = *topology;
-    for (std::size_t e = 0; e < num_edges; ++e) {
-      const Index forward = t.forward_arc[e];
-      residual[forward] = caps.forward[e];
-      residual[t.sister[forward]] = caps.backward[e];
-    }
+    in_chunks(num_edges, threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t e = first; e < last; ++e) {
+        const Index forward = t.forward_arc[e];
+        residual[forward] = caps.forward[e];
+        residual[t.sister[forward]] = caps.backward[e];
+      }
+    });
     time = 0;
   }
 
@@ -429,11 +465,12 @@ struct DynamicMaxFlow::Impl {
   /// The flow of `caps` from zero in parts (search_in_parts), every terminal node queued in
   /// its part.
   void solve_in_parts(const FlowCapacities& caps, int threads) {
-    load_zero_flow(caps);
-    const std::vector<std::uint8_t>& part = parts->of_node;
+    load_zero_flow(caps, threads);
     search_in_parts(threads, [&](Search& s, std::size_t k) {
-      for (std::size_t i = 0; i < num_nodes; ++i)
-        if (part[i] == k && nodes[i].tree != kFree) s.activate(static_cast<Index>(i));
+      for (std::size_t m = parts->first_member[k]; m < parts->first_member[k + 1]; ++m) {
+        const Index i = parts->members[m];
+        if (nodes[i].tree != kFree) s.activate(i);
+      }
     });
   }
 
@@ -682,6 +719,14 @@ void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part) {
   auto parts = std::make_shared<Parts>();
   parts->of_node.assign(part.begin(), part.end());
   parts->count = part.empty() ? 1 : std::size_t{*std::max_element(part.begin(), part.end())} + 1;
+  parts->first_member.assign(parts->count + 1, 0);
+  for (const std::uint8_t k : part) ++parts->first_member[std::size_t{k} + 1];
+  for (std::size_t k = 0; k < parts->count; ++k)
+    parts->first_member[k + 1] += parts->first_member[k];
+  parts->members.resize(part.size());
+  std::vector<std::size_t> next(parts->first_member.begin(), parts->first_member.end() - 1);
+  for (std::size_t i = 0; i < part.size(); ++i)
+    parts->members[next[part[i]]++] = static_cast<std::uint32_t>(i);
   const Topology& t = *m.topology;
   for (std::size_t e = 0; e < m.num_edges; ++e) {
     const Index forward = t.forward_arc[e];
@@ -700,7 +745,7 @@ void DynamicMaxFlow::solve_cut_in_parts(const FlowCapacities& caps, int threads)
     solve_cut(caps);
     return;
   }
-  m.check_solvable(caps);
+  m.check_solvable(caps, threads);
   m.stats = {};
   m.solve_in_parts(caps, threads);
   m.has_flow = true;

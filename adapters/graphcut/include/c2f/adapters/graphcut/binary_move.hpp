@@ -29,8 +29,10 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include "c2f/adapters/graphcut/detail/bands.hpp"
 #include "c2f/adapters/graphcut/detail/move_graphs.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
@@ -117,13 +119,7 @@ class BinaryMoveSolver {
       throw std::invalid_argument("BinaryMoveSolver::solve: sizes do not match the bound topology");
     }
     BinaryMoveStats stats;
-    bool submodular = true;
-    bool finite = true;
-    for (const double value : p) {
-      submodular &= value >= 0.0;
-      finite &= std::isfinite(value);
-    }
-    for (const double value : d) finite &= std::isfinite(value);
+    const auto [submodular, finite] = scan_coefficients(d, p);
     if (!finite)
       throw std::invalid_argument("BinaryMoveSolver::solve: a coefficient is not finite");
     const auto start = std::chrono::steady_clock::now();
@@ -165,6 +161,36 @@ class BinaryMoveSolver {
   static constexpr std::size_t kNoKey = detail::MoveGraphs<Backend>::kNoKey;
   using GraphKind = detail::GraphKind;
   using MoveGraph = detail::MoveGraph<Backend>;
+
+  /// Whether every p[e] >= 0, and whether every d[i] and p[e] is finite; by bands on the
+  /// threads the parts are solved on.
+  std::pair<bool, bool> scan_coefficients(std::span<const double> d, std::span<const double> p) {
+    const std::size_t p_bands = detail::band_count(p.size());
+    band_flags_.assign(p_bands + detail::band_count(d.size()), 0);
+    constexpr std::uint8_t kNegative = 1, kNotFinite = 2;
+    detail::for_each_band(
+        p.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          bool submodular = true, finite = true;
+          for (std::size_t e = first; e < last; ++e) {
+            submodular &= p[e] >= 0.0;
+            finite &= std::isfinite(p[e]);
+          }
+          band_flags_[b] = (submodular ? 0 : kNegative) | (finite ? 0 : kNotFinite);
+        },
+        parts_threads_);
+    detail::for_each_band(
+        d.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          bool finite = true;
+          for (std::size_t i = first; i < last; ++i) finite &= std::isfinite(d[i]);
+          band_flags_[p_bands + b] = finite ? 0 : kNotFinite;
+        },
+        parts_threads_);
+    std::uint8_t any = 0;
+    for (const std::uint8_t flags : band_flags_) any |= flags;
+    return {(any & kNegative) == 0, (any & kNotFinite) == 0};
+  }
 
   [[nodiscard]] std::size_t graph_nodes(GraphKind kind) const noexcept {
     return kind == GraphKind::plain ? num_nodes_ : 2 * num_nodes_;
@@ -258,69 +284,118 @@ class BinaryMoveSolver {
   // p/2 when p >= 0 (submodular), the last two -p/2 when p < 0; backward capacities stay 0.
   void fill_capacities(GraphKind kind, std::span<const double> p) {
     const std::size_t n = num_nodes_;
+    // By bands on the threads the parts are solved on (each entry written by one band).
     if (kind == GraphKind::plain) {
       plain_caps_.resize(n, pairs_.size());
-      for (std::size_t i = 0; i < n; ++i) {
-        plain_caps_.source[i] = std::max(node_values_[i], 0.0);
-        plain_caps_.sink[i] = std::max(-node_values_[i], 0.0);
-      }
-      std::copy(p.begin(), p.end(), plain_caps_.forward.begin());
-      std::fill(plain_caps_.backward.begin(), plain_caps_.backward.end(), 0.0);
+      detail::for_each_band(
+          n,
+          [&](std::size_t, std::size_t first, std::size_t last) {
+            for (std::size_t i = first; i < last; ++i) {
+              plain_caps_.source[i] = std::max(node_values_[i], 0.0);
+              plain_caps_.sink[i] = std::max(-node_values_[i], 0.0);
+            }
+          },
+          parts_threads_);
+      detail::for_each_band(
+          pairs_.size(),
+          [&](std::size_t, std::size_t first, std::size_t last) {
+            for (std::size_t e = first; e < last; ++e) {
+              plain_caps_.forward[e] = p[e];
+              plain_caps_.backward[e] = 0.0;
+            }
+          },
+          parts_threads_);
       return;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      const double half = 0.5 * node_values_[i];
-      qpbo_caps_.source[i] = std::max(half, 0.0);
-      qpbo_caps_.sink[i] = std::max(-half, 0.0);
-      qpbo_caps_.source[n + i] = std::max(-half, 0.0);
-      qpbo_caps_.sink[n + i] = std::max(half, 0.0);
-    }
-    for (std::size_t e = 0; e < pairs_.size(); ++e) {
-      const double half = 0.5 * p[e];
-      qpbo_caps_.forward[4 * e + 0] = qpbo_caps_.forward[4 * e + 1] = std::max(half, 0.0);
-      qpbo_caps_.forward[4 * e + 2] = qpbo_caps_.forward[4 * e + 3] = std::max(-half, 0.0);
-    }
-    std::fill(qpbo_caps_.backward.begin(), qpbo_caps_.backward.end(), 0.0);
+    detail::for_each_band(
+        n,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t i = first; i < last; ++i) {
+            const double half = 0.5 * node_values_[i];
+            qpbo_caps_.source[i] = std::max(half, 0.0);
+            qpbo_caps_.sink[i] = std::max(-half, 0.0);
+            qpbo_caps_.source[n + i] = std::max(-half, 0.0);
+            qpbo_caps_.sink[n + i] = std::max(half, 0.0);
+          }
+        },
+        parts_threads_);
+    detail::for_each_band(
+        pairs_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t e = first; e < last; ++e) {
+            const double half = 0.5 * p[e];
+            qpbo_caps_.forward[4 * e + 0] = qpbo_caps_.forward[4 * e + 1] = std::max(half, 0.0);
+            qpbo_caps_.forward[4 * e + 2] = qpbo_caps_.forward[4 * e + 3] = std::max(-half, 0.0);
+            for (std::size_t a = 4 * e; a < 4 * e + 4; ++a) qpbo_caps_.backward[a] = 0.0;
+          }
+        },
+        parts_threads_);
   }
 
   /// Changes a solved graph from the problem it holds to (node_values_, p): only the nodes and
   /// pairs whose coefficients differ, by the differences of the capacities above.
   void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
     const std::size_t n = num_nodes_;
+    // What differs is found by bands on the parts' threads, then changed in index order.
+    const std::size_t node_bands = detail::band_count(n);
+    band_changes_.resize(node_bands + detail::band_count(pairs_.size()));
+    detail::for_each_band(
+        n,
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          std::vector<std::uint32_t>& mine = band_changes_[b];
+          mine.clear();
+          for (std::size_t i = first; i < last; ++i)
+            if (node_values_[i] != graph.node_values[i])
+              mine.push_back(static_cast<std::uint32_t>(i));
+        },
+        parts_threads_);
+    detail::for_each_band(
+        pairs_.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          std::vector<std::uint32_t>& mine = band_changes_[node_bands + b];
+          mine.clear();
+          for (std::size_t e = first; e < last; ++e)
+            if (p[e] != graph.pair_values[e]) mine.push_back(static_cast<std::uint32_t>(e));
+        },
+        parts_threads_);
+    for (std::size_t b = 0; b < node_bands; ++b)
+      for (const std::uint32_t i : band_changes_[b]) change_node(graph, kind, i, node_values_[i]);
+    for (std::size_t b = node_bands; b < band_changes_.size(); ++b)
+      for (const std::uint32_t e : band_changes_[b]) change_pair(graph, kind, e, p[e]);
+  }
+
+  /// change_graph's change of node i's coefficient to `after`.
+  void change_node(MoveGraph& graph, GraphKind kind, std::size_t i, double after) {
     Backend& g = graph.graph;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double before = graph.node_values[i];
-      const double after = node_values_[i];
-      if (after == before) continue;
-      graph.node_values[i] = after;
-      const auto node = static_cast<FlowNode>(i);
-      if (kind == GraphKind::plain) {
-        g.change_terminal(node, after - before);
-      } else {
-        const double delta = 0.5 * after - 0.5 * before;
-        g.change_terminal(node, delta);
-        g.change_terminal(static_cast<FlowNode>(n + i), -delta);
-      }
+    const double before = graph.node_values[i];
+    graph.node_values[i] = after;
+    if (kind == GraphKind::plain) {
+      g.change_terminal(static_cast<FlowNode>(i), after - before);
+      return;
     }
-    for (std::size_t e = 0; e < pairs_.size(); ++e) {
-      const double before = graph.pair_values[e];
-      const double after = p[e];
-      if (after == before) continue;
-      graph.pair_values[e] = after;
-      if (kind == GraphKind::plain) {
-        g.change_edge(e, after - before, 0.0);
-        continue;
-      }
-      const double submodular = std::max(0.5 * after, 0.0) - std::max(0.5 * before, 0.0);
-      const double crossing = std::max(-0.5 * after, 0.0) - std::max(-0.5 * before, 0.0);
-      if (submodular != 0.0) {
-        g.change_edge(4 * e + 0, submodular, 0.0);
-        g.change_edge(4 * e + 1, submodular, 0.0);
-      }
-      if (crossing != 0.0) {
-        g.change_edge(4 * e + 2, crossing, 0.0);
-        g.change_edge(4 * e + 3, crossing, 0.0);
-      }
+    const double delta = 0.5 * after - 0.5 * before;
+    g.change_terminal(static_cast<FlowNode>(i), delta);
+    g.change_terminal(static_cast<FlowNode>(num_nodes_ + i), -delta);
+  }
+
+  /// change_graph's change of pair e's coefficient to `after`.
+  void change_pair(MoveGraph& graph, GraphKind kind, std::size_t e, double after) {
+    Backend& g = graph.graph;
+    const double before = graph.pair_values[e];
+    graph.pair_values[e] = after;
+    if (kind == GraphKind::plain) {
+      g.change_edge(e, after - before, 0.0);
+      return;
+    }
+    const double submodular = std::max(0.5 * after, 0.0) - std::max(0.5 * before, 0.0);
+    const double crossing = std::max(-0.5 * after, 0.0) - std::max(-0.5 * before, 0.0);
+    if (submodular != 0.0) {
+      g.change_edge(4 * e + 0, submodular, 0.0);
+      g.change_edge(4 * e + 1, submodular, 0.0);
+    }
+    if (crossing != 0.0) {
+      g.change_edge(4 * e + 2, crossing, 0.0);
+      g.change_edge(4 * e + 3, crossing, 0.0);
     }
   }
 
@@ -348,7 +423,9 @@ class BinaryMoveSolver {
   std::vector<double> node_values_;  // d, or QPBO's adjusted d
   FlowCapacities plain_caps_;
   FlowCapacities qpbo_caps_;
-  std::vector<char> in_source_;  // the last solve's source set
+  std::vector<char> in_source_;                           // the last solve's source set
+  std::vector<std::uint8_t> band_flags_;                  // scan_coefficients' findings per band
+  std::vector<std::vector<std::uint32_t>> band_changes_;  // change_graph's, per band
   detail::MoveGraphs<Backend> graphs_;
 };
 

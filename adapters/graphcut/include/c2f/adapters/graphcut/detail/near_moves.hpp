@@ -111,8 +111,7 @@ class NearMoves {
   /// Builds the restricted problem of the move to alpha from x.
   void build(Label alpha, std::span<const Label> x) {
     select(alpha, x);
-    // In index order, the unary table is read nearly sequentially.
-    std::sort(free_.begin(), free_.end());
+    order_free(alpha, x);
     const std::size_t bands = band_count(free_.size());
     band_p_.resize(bands);
     band_pairs_.resize(bands);
@@ -165,6 +164,30 @@ class NearMoves {
     }
   }
 
+  /// Puts free() in index order (then the unary table is read nearly sequentially): a sort
+  /// when few variables are free, else a scan of every variable by bands (each band's free
+  /// variables in order, the bands joined in order).
+  void order_free(Label alpha, std::span<const Label> x) {
+    if (free_.size() * kSortBelow < x.size()) {
+      std::sort(free_.begin(), free_.end());
+      return;
+    }
+    band_free_.resize(band_count(x.size()));
+    for_each_band(
+        x.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          std::vector<VariableIndex>& mine = band_free_[b];
+          mine.clear();
+          for (std::size_t v = first; v < last; ++v)
+            if (depth_[v] != kUnreached && x[v] != alpha)
+              mine.push_back(static_cast<VariableIndex>(v));
+        },
+        threads_);
+    free_.clear();
+    for (const std::vector<VariableIndex>& mine : band_free_)
+      free_.insert(free_.end(), mine.begin(), mine.end());
+  }
+
   /// Whether the last select() or build() freed v (reached, and not labelled alpha in the x
   /// it was given).
   [[nodiscard]] bool is_free(VariableIndex v, Label alpha, std::span<const Label> x) const {
@@ -178,6 +201,8 @@ class NearMoves {
 
  private:
   static constexpr int kUnreached = -1;
+  /// order_free sorts when fewer than one variable in this many is free.
+  static constexpr std::size_t kSortBelow = 16;
 
   const PairwiseEnergy* energy_ = nullptr;
   int radius_ = 0;
@@ -191,6 +216,7 @@ class NearMoves {
   std::vector<FlowEdge> pairs_;
   // Per band of free variables: its pairs and their p, before they are joined in band order.
   std::vector<std::vector<double>> band_p_;
+  std::vector<std::vector<VariableIndex>> band_free_;
   std::vector<std::vector<FlowEdge>> band_pairs_;
 };
 
