@@ -104,8 +104,9 @@ struct ExpansionOptions : MoveOptions {
 };
 
 /// The parts ExpansionOptions::flow_parts = 0 stands for with our max-flow. On 2 threads 4
-/// parts measured 1.2-1.36x faster to converge on Recycle (2014 Q) than one part, the same
-/// steps; on one thread they cost 5-10% (docs/performance.md, "The solve").
+/// parts measured 1.26-1.33x faster to converge than one part on one thread on Recycle (2014
+/// Q) and KITTI, with the stereo defaults; on one thread they cost 2-10% (docs/performance.md,
+/// "The solve").
 inline constexpr int kDefaultFlowParts = 4;
 
 /// Whether every expansion move on `energy` is submodular, so that none needs QPBO: every edge
