@@ -73,4 +73,11 @@ TEST_CASE("EnergyTally evaluates changed labelings to evaluate's bits", "[core][
     }
     CHECK(same_bits(tally.value(), energy.evaluate(x)));
   }
+  // keep() twice keeps the same labeling.
+  x[0] = static_cast<Label>((x[0] + 1) % energy.num_labels());
+  const std::vector<VariableIndex> first{0};
+  (void)tally.evaluate_changed(x, first);
+  tally.keep();
+  tally.keep();
+  CHECK(same_bits(tally.value(), energy.evaluate(x)));
 }

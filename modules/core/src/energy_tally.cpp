@@ -81,6 +81,9 @@ void EnergyTally::keep() {
   unary_.swap(candidate_unary_);
   pairwise_.swap(candidate_pairwise_);
   value_ = candidate_value_ = ordered_total(unary_, pairwise_);
+  // A keep() without an evaluation between keeps the same labeling.
+  std::copy(unary_.begin(), unary_.end(), candidate_unary_.begin());
+  std::copy(pairwise_.begin(), pairwise_.end(), candidate_pairwise_.begin());
 }
 
 void EnergyTally::sum_chunks(std::span<const Label> x, std::span<const std::uint32_t> unary_chunks,

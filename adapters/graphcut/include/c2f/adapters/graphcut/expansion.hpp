@@ -20,11 +20,14 @@
 // (binary_move.hpp), so late moves cost in proportion to what changed since the label's last.
 // Each move's binary problem goes straight into the max-flow graph when all its pairwise
 // terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
-// QPBO leaves unlabelled keep their label. The move is accepted only when the exact double
-// energy of the new labeling is lower than the current one (so the energy never increases,
-// and moves that only trade equal-energy labelings are not taken: a sweep without an
-// accepted move means no move found a lower energy, which for submodular moves means none
-// exists).
+// QPBO leaves unlabelled keep their label. The max-flow is solved in parts at once on several
+// threads (ExpansionOptions::flow_parts, 4 by default with our max-flow), and the passes
+// over a move's variables and edges run by bands (detail/bands.hpp); results never depend on
+// the thread count. The move is accepted only when the exact double energy of the new
+// labeling, re-summed where the move changed it (EnergyTally), is lower than the current one
+// by more than rounding (detail::acceptance_margin; so the energy never increases, and moves
+// that only trade equal-energy labelings are not taken: a sweep without an accepted move
+// means no move found a lower energy, which for submodular moves means none exists).
 
 #include <algorithm>
 #include <cmath>

@@ -31,8 +31,8 @@ inline constexpr std::uint32_t kHeld = 0xffffffffu;
 /// Writes d[k] for first <= k < last (d has a row per node) and appends the pairs whose u is
 /// one of these nodes to `pairs` and their p to `p` (in node order, then in edge order): the
 /// problem in binary_move.hpp's form, nodes numbered as in `nodes`. Each d[k] is its unary
-/// change plus its edges' terms in edge order, so rows computed apart (by bands) add up to the
-/// same bits.
+/// change plus its edges' terms in edge order, so rows computed apart (by bands) have the bits
+/// of rows computed together.
 inline void restricted_rows(const PairwiseEnergy& energy, const EdgeIncidence& incidence,
                             Label alpha, std::span<const Label> x,
                             std::span<const VariableIndex> nodes,
