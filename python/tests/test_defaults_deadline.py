@@ -8,24 +8,10 @@ N. The deadline is a third of the work flat needs to converge; at that point the
 must be no higher than flat's.
 """
 
-import importlib.util
-import pathlib
-
 import numpy as np
 import pytest
 
 import c2f
-
-SUITE = pathlib.Path(__file__).parents[2] / "bench/suite.py"
-
-
-@pytest.fixture(scope="module")
-def suite():
-    spec = importlib.util.spec_from_file_location("suite", SUITE)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
 
 def work_clock(trace, num_variables):
     """The work done when each step of `trace` ended, in variable visits (see the module)."""

@@ -205,6 +205,16 @@ def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
         c2f.solve(energy, plateau="sweep")
 
 
+def assert_same_converged_bits(energy, runs):
+    """Runs of one energy on different thread counts: the same labeling and trace to the bit,
+    converged, the reported energy that of the labeling."""
+    for run in runs[1:]:
+        assert np.array_equal(run.labeling, runs[0].labeling)
+        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
+    assert runs[0].reason == "converged"
+    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+
+
 def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     # 160 x 110 pixels: near moves by 4 bands of rows (ExpansionOptions::regions), two of a
     # colour at once.
@@ -215,12 +225,8 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
             for threads in (1, 2, 3)]
     assert "solve: moves by 4 regions on 1 thread" in runs[0].summary
     assert "solve: moves by 4 regions on 2 threads" in runs[2].summary
-    for run in runs[1:]:
-        assert np.array_equal(run.labeling, runs[0].labeling)
-        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
-    assert runs[0].reason == "converged"
+    assert_same_converged_bits(energy, runs)
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
-    assert runs[0].energy == energy.evaluate(runs[0].labeling)
     # One band and one part: every move on one thread. By default the max-flow is in 4 parts.
     one = c2f.solve(energy, "flat", options={"near_radius": 2, "flow_parts": 1})
     assert "solve: every move over every variable on one thread" in one.summary
@@ -243,11 +249,7 @@ def test_the_max_flow_in_parts_gives_the_same_bits_on_one_thread_and_on_several(
     assert ("solve: every move over every variable, max-flow in 4 parts on 1 thread"
             in runs[0].summary)
     assert "max-flow in 4 parts on 2 threads with shift moves" in runs[1].summary
-    for run in runs[1:]:
-        assert np.array_equal(run.labeling, runs[0].labeling)
-        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
-    assert runs[0].reason == "converged"
-    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+    assert_same_converged_bits(energy, runs)
     serial = c2f.solve(energy, options={"flow_parts": 1})
     assert runs[0].energy == pytest.approx(serial.energy, rel=1e-4)
     for bad in (-1, 256):
@@ -265,12 +267,8 @@ def test_near_moves_in_parts_and_the_threads_argument(rng):
     runs = [c2f.solve(energy, "flat", options=options, threads=threads) for threads in (1, 2, 3)]
     assert "max-flow in 4 parts on 1 thread" in runs[0].summary
     assert "max-flow in 4 parts on 2 threads" in runs[1].summary
-    for run in runs[1:]:
-        assert np.array_equal(run.labeling, runs[0].labeling)
-        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
-    assert runs[0].reason == "converged"
+    assert_same_converged_bits(energy, runs)
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
-    assert runs[0].energy == energy.evaluate(runs[0].labeling)
     with pytest.raises(ValueError, match="given as well as options"):
         c2f.solve(energy, options={"threads": 1}, threads=2)
     with pytest.raises(ValueError, match="only expansion"):

@@ -1,24 +1,11 @@
 """bench/suite.py: the aside rule, the measures it reports, and one instance end to end."""
 
 import csv
-import importlib.util
 import math
-import pathlib
 import zlib
 
 import numpy as np
 import pytest
-
-SCRIPT = pathlib.Path(__file__).parents[2] / "bench/suite.py"
-
-
-@pytest.fixture(scope="module")
-def suite():
-    spec = importlib.util.spec_from_file_location("suite", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
 
 def test_the_aside_set_is_fixed_by_names_only(suite):
     assert suite.is_aside("stereo", "middlebury2014/Recycle")
