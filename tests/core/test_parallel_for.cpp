@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "c2f/support/parallel_for.hpp"
@@ -55,4 +56,27 @@ TEST_CASE("parallel_for rethrows the lowest failing index after every task ran",
     CHECK_THROWS_WITH(parallel_for(50, task, threads), "task 3");
     CHECK(ran == 50);
   }
+}
+
+TEST_CASE("parallel_for_chunks covers every index once, in chunks fixed by the count",
+          "[core][threads]") {
+  for (const int threads : {1, 2, 3}) {
+    std::vector<std::atomic<int>> visits(1000);
+    std::vector<std::pair<std::size_t, std::size_t>> chunks(4);
+    c2f::parallel_for_chunks(
+        visits.size(), 256,
+        [&](std::size_t c, std::size_t first, std::size_t last) {
+          chunks[c] = {first, last};
+          for (std::size_t i = first; i < last; ++i) ++visits[i];
+        },
+        threads);
+    INFO(threads << " threads");
+    for (const auto& count : visits) CHECK(count == 1);
+    CHECK(chunks == std::vector<std::pair<std::size_t, std::size_t>>{
+                        {0, 256}, {256, 512}, {512, 768}, {768, 1000}});
+  }
+  int calls = 0;
+  c2f::parallel_for_chunks(
+      0, 256, [&](std::size_t, std::size_t, std::size_t) { ++calls; }, 2);
+  CHECK(calls == 0);
 }

@@ -57,23 +57,8 @@ struct Parts {
   std::vector<std::size_t> first_member;
 };
 
-/// Nodes or edges per task when a pass over them is split among threads.
+/// Nodes or edges per task when a pass over them is split among threads (parallel_for_chunks).
 constexpr std::size_t kPassChunk = 16384;
-
-/// Calls pass(first, last) over [0, count) in chunks of kPassChunk on up to `threads` threads
-/// (each chunk once; one chunk or one thread: in order, here).
-template <class Pass>
-void in_chunks(std::size_t count, int threads, const Pass& pass) {
-  const std::size_t chunks = (count + kPassChunk - 1) / kPassChunk;
-  const auto chunk = [&](std::size_t c) {
-    pass(c * kPassChunk, std::min(count, (c + 1) * kPassChunk));
-  };
-  if (chunks <= 1 || threads == 1) {
-    for (std::size_t c = 0; c < chunks; ++c) chunk(c);
-  } else {
-    parallel_for(chunks, chunk, threads);
-  }
-}
 
 /// Fills `to` with `from`, asking the kernel for transparent huge pages first when the block is
 /// large: a graph of many megabytes otherwise costs one page fault per 4 KiB as it is first
@@ -405,9 +390,12 @@ struct DynamicMaxFlow::Impl {
   [[nodiscard]] static bool all_valid(std::span<const double> values, int threads) {
     if (threads == 1) return all_valid(values);
     std::vector<std::uint8_t> valid((values.size() + kPassChunk - 1) / kPassChunk, 1);
-    in_chunks(values.size(), threads, [&](std::size_t first, std::size_t last) {
-      valid[first / kPassChunk] = all_valid(values.subspan(first, last - first)) ? 1 : 0;
-    });
+    parallel_for_chunks(
+        values.size(), kPassChunk,
+        [&](std::size_t c, std::size_t first, std::size_t last) {
+          valid[c] = all_valid(values.subspan(first, last - first)) ? 1 : 0;
+        },
+        threads);
     return std::all_of(valid.begin(), valid.end(), [](std::uint8_t v) { return v != 0; });
   }
 
@@ -426,32 +414,38 @@ struct DynamicMaxFlow::Impl {
   /// Zero flow on `caps`, every node with terminal residual hanging from its terminal, and
   /// nothing queued yet; written on up to `threads` threads (each node and edge by one).
   void load_zero_flow(const FlowCapacities& caps, int threads = 1) {
-    in_chunks(num_nodes, threads, [&](std::size_t first, std::size_t last) {
-      for (std::size_t i = first; i < last; ++i) {
-        Node& node = nodes[i];
-        node.excess = caps.source[i] - caps.sink[i];
-        node.next_active = kNone;
-        node.stamp = 0;
-        node.distance = 1;
-        node.touched = false;
-        if (node.excess != 0.0) {
-          node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
-          node.parent = kTerminal;
-        } else {
-          node.tree = kFree;
-          node.parent = kNone;
-        }
-      }
-    });
+    parallel_for_chunks(
+        num_nodes, kPassChunk,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t i = first; i < last; ++i) {
+            Node& node = nodes[i];
+            node.excess = caps.source[i] - caps.sink[i];
+            node.next_active = kNone;
+            node.stamp = 0;
+            node.distance = 1;
+            node.touched = false;
+            if (node.excess != 0.0) {
+              node.tree = node.excess > 0.0 ? kSourceTree : kSinkTree;
+              node.parent = kTerminal;
+            } else {
+              node.tree = kFree;
+              node.parent = kNone;
+            }
+          }
+        },
+        threads);
     first_active = last_active = kNone;
     const Topology& t = *topology;
-    in_chunks(num_edges, threads, [&](std::size_t first, std::size_t last) {
-      for (std::size_t e = first; e < last; ++e) {
-        const Index forward = t.forward_arc[e];
-        residual[forward] = caps.forward[e];
-        residual[t.sister[forward]] = caps.backward[e];
-      }
-    });
+    parallel_for_chunks(
+        num_edges, kPassChunk,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t e = first; e < last; ++e) {
+            const Index forward = t.forward_arc[e];
+            residual[forward] = caps.forward[e];
+            residual[t.sister[forward]] = caps.backward[e];
+          }
+        },
+        threads);
     time = 0;
   }
 

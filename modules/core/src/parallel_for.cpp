@@ -38,4 +38,16 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
   if (failure) std::rethrow_exception(failure);
 }
 
+void parallel_for_chunks(std::size_t count, std::size_t chunk,
+                         const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
+                         int threads) {
+  const std::size_t chunks = (count + chunk - 1) / chunk;
+  const auto one = [&](std::size_t c) { task(c, c * chunk, std::min(count, (c + 1) * chunk)); };
+  if (chunks <= 1 || resolved_threads(threads) == 1) {
+    for (std::size_t c = 0; c < chunks; ++c) one(c);
+    return;
+  }
+  parallel_for(chunks, one, threads);
+}
+
 }  // namespace c2f

@@ -25,6 +25,14 @@ namespace c2f {
 /// every thread has ended (the other tasks still run).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads);
 
+/// Calls task(c, first, last) for every chunk c = [first, last) of [0, count), cut into chunks
+/// of `chunk` indices (the last shorter; they depend on count and chunk only), each once, on
+/// up to resolved_threads(threads) threads; with one chunk or one thread, in order on the
+/// calling thread. Failures as parallel_for.
+void parallel_for_chunks(std::size_t count, std::size_t chunk,
+                         const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
+                         int threads);
+
 /// Runs member(m) for every m < members, each on a thread of its own (the calling thread is
 /// member 0), and returns when all have returned. Members may wait for each other (at a
 /// std::barrier of `members`), so none starts before every thread exists: when a thread cannot

@@ -18,8 +18,9 @@ inline constexpr std::size_t kBandSize = 8192;
 }
 
 /// Calls task(b, first, last) for every band b = [first, last) of [0, count), each once, on up
-/// to `threads` threads (0: the machine's cores); a single band runs on the calling thread.
-/// Rethrows the exception of the lowest band that threw after all have ended.
+/// to `threads` threads (0: the machine's cores); a single band or one thread runs in order on
+/// the calling thread (parallel_for_chunks). Rethrows the exception of the lowest band that
+/// threw after all have ended.
 void for_each_band(std::size_t count,
                    const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
                    int threads);
