@@ -80,3 +80,31 @@ TEST_CASE("parallel_for_chunks covers every index once, in chunks fixed by the c
       0, 256, [&](std::size_t, std::size_t, std::size_t) { ++calls; }, 2);
   CHECK(calls == 0);
 }
+
+TEST_CASE("parallel_for from inside a task, and from several threads at once, runs every task",
+          "[core][threads]") {
+  // The helpers wait in a pool between calls; a call made while another owns it (nested, or
+  // from another thread) must still run every task, on threads of its own.
+  std::vector<std::atomic<int>> runs(8 * 50);
+  parallel_for(
+      8,
+      [&](std::size_t outer) {
+        parallel_for(
+            50, [&](std::size_t inner) { ++runs[outer * 50 + inner]; }, 2);
+      },
+      2);
+  for (const auto& count : runs) CHECK(count == 1);
+
+  std::vector<std::atomic<int>> sums(4);
+  {
+    std::vector<std::jthread> callers;
+    for (std::size_t c = 0; c < sums.size(); ++c) {
+      callers.emplace_back([&, c] {
+        for (int round = 0; round < 200; ++round)
+          parallel_for(
+              10, [&](std::size_t i) { sums[c] += static_cast<int>(i); }, 1 + round % 3);
+      });
+    }
+  }
+  for (const auto& sum : sums) CHECK(sum == 200 * 45);
+}

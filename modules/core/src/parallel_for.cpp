@@ -1,7 +1,11 @@
 #include "c2f/support/parallel_for.hpp"
 
+#include <pthread.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -9,9 +13,109 @@
 
 namespace c2f {
 
+namespace {
+
+/// Threads kept waiting between parallel_for calls, so that a call costs a wake-up (a few
+/// microseconds) instead of starting and joining threads (tens of microseconds each): the
+/// solve's passes run thousands of short calls. One call owns the pool at a time; a call made
+/// while it is owned (from inside a task, or from another thread) starts threads of its own,
+/// as every call did before the pool. The pool is never destroyed (its threads wait until the
+/// process ends), and a child process after fork() starts a new one.
+class HelperPool {
+ public:
+  /// Runs work() on `helpers` of the pool's threads and on the calling thread, and returns when
+  /// all have returned; false, without running anything, when another call owns the pool.
+  /// work() must not throw.
+  bool try_run(std::size_t helpers, const std::function<void()>& work) {
+    if (helpers >= kMaxHelpers) return false;
+    bool idle = false;
+    if (!busy_.compare_exchange_strong(idle, true, std::memory_order_acquire)) return false;
+    struct Release {
+      std::atomic<bool>& busy;
+      ~Release() { busy.store(false, std::memory_order_release); }
+    } release{busy_};
+    while (threads_ < helpers) start_helper();  // throws std::system_error, nothing run yet
+    work_ = &work;
+    pending_.store(helpers, std::memory_order_relaxed);
+    // The round's number and how many helpers it wants, in one word: a helper reads both at
+    // once, so one that wakes late never reads another round's count.
+    const std::uint64_t round = (state_.load(std::memory_order_relaxed) >> kCountBits) + 1;
+    state_.store(round << kCountBits | helpers, std::memory_order_release);
+    state_.notify_all();
+    work();
+    for (std::size_t left; (left = pending_.load(std::memory_order_acquire)) != 0;)
+      pending_.wait(left, std::memory_order_acquire);
+    return true;
+  }
+
+ private:
+  static constexpr int kCountBits = 16;
+  static constexpr std::size_t kMaxHelpers = std::size_t{1} << kCountBits;
+
+  /// Starts helper number threads_, which will take part in the rounds after the current one.
+  void start_helper() {
+    const std::size_t id = threads_;
+    const std::uint64_t current = state_.load(std::memory_order_relaxed);
+    std::thread([this, id, current] { serve(id, current); }).detach();
+    ++threads_;
+  }
+
+  /// Helper `id`: in every round after `seen` that wants more than id helpers, runs the round's
+  /// work.
+  [[noreturn]] void serve(std::size_t id, std::uint64_t seen) {
+    while (true) {
+      state_.wait(seen, std::memory_order_acquire);
+      seen = state_.load(std::memory_order_acquire);
+      if (id >= (seen & ((std::uint64_t{1} << kCountBits) - 1))) continue;
+      (*work_)();
+      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_one();
+    }
+  }
+
+  std::atomic<bool> busy_{false};  // owned by a call (a flag, not a mutex: tasks may call again)
+  std::size_t threads_ = 0;        // helpers started; written by the owner
+  const std::function<void()>* work_ = nullptr;
+  std::atomic<std::uint64_t> state_{0};  // round << kCountBits | helpers wanted
+  std::atomic<std::size_t> pending_{0};  // helpers of the round still working
+};
+
+std::atomic<HelperPool*> the_pool{nullptr};
+
+/// The process's pool, made on first use.
+HelperPool& helper_pool() {
+  HelperPool* pool = the_pool.load(std::memory_order_acquire);
+  if (pool != nullptr) return *pool;
+  static const bool forks_handled = [] {
+    // A child has none of the parent's threads: it leaves the parent's pool behind.
+    pthread_atfork(nullptr, nullptr, [] { the_pool.store(nullptr); });
+    return true;
+  }();
+  (void)forks_handled;
+  auto* made = new HelperPool;
+  if (the_pool.compare_exchange_strong(pool, made, std::memory_order_acq_rel)) return *made;
+  delete made;  // another thread made it first
+  return *pool;
+}
+
+/// Runs work() on the calling thread and `helpers` more, and returns when all have returned.
+void run_with_helpers(std::size_t helpers, const std::function<void()>& work) {
+  if (helpers == 0) {
+    work();
+    return;
+  }
+  if (helper_pool().try_run(helpers, work)) return;
+  std::vector<std::jthread> started;  // joined when this returns
+  started.reserve(helpers);
+  for (std::size_t t = 0; t < helpers; ++t) started.emplace_back(work);
+  work();
+}
+
+}  // namespace
+
 unsigned resolved_threads(int requested) noexcept {
   if (requested >= 1) return static_cast<unsigned>(requested);
-  return std::max(1U, std::thread::hardware_concurrency());
+  static const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+  return cores;
 }
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads) {
@@ -20,7 +124,7 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
   std::mutex failure_mutex;
   std::exception_ptr failure;
   std::size_t failed_index = count;
-  const auto work = [&] {
+  const std::function<void()> work = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < count;) {
       try {
         task(i);
@@ -30,11 +134,7 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
       }
     }
   };
-  std::vector<std::jthread> helpers;  // none for one worker: all in order, here
-  helpers.reserve(workers > 0 ? workers - 1 : 0);
-  for (std::size_t t = 1; t < workers; ++t) helpers.emplace_back(work);
-  work();
-  helpers.clear();  // joins
+  run_with_helpers(workers > 0 ? workers - 1 : 0, work);  // none for one worker: in order, here
   if (failure) std::rethrow_exception(failure);
 }
 

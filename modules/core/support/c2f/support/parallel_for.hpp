@@ -1,11 +1,12 @@
 #pragma once
 // Data preparation on several cores, with results that do not depend on how many: the work is
 // split into tasks by index, each task writes only its own outputs, and nothing is reduced
-// across tasks in an order that depends on scheduling. Standard threads, started per call: the
-// tasks are coarse (labels, rows), so a pool or work stealing would save nothing measurable,
-// and the thread count of each call is exactly the caller's (no global setting, unlike OpenCV's
-// cv::setNumThreads). Two shapes: parallel_for hands out independent tasks; run_team runs a team
-// whose members work in lockstep (e.g. at a std::barrier).
+// across tasks in an order that depends on scheduling. The thread count of each call is exactly
+// the caller's (no global setting, unlike OpenCV's cv::setNumThreads). parallel_for's helper
+// threads wait between calls in a process-wide pool, since the solve makes thousands of short
+// calls per second (a call made while another owns the pool, e.g. from inside a task, starts
+// threads of its own). Two shapes: parallel_for hands out independent tasks; run_team runs a
+// team whose members work in lockstep (e.g. at a std::barrier), on threads started per call.
 
 #include <cstddef>
 #include <functional>
