@@ -346,3 +346,40 @@ TEST_CASE(
   dynamic.build(problem.num_nodes, problem.edges);  // a new topology forgets the parts
   CHECK(dynamic.num_parts() == 1);
 }
+
+TEST_CASE("dynamic max-flow built and cut on several threads is the graph built on one",
+          "[maxflow][dynamic][parts][threads]") {
+  // 200k edges: several ranges of build()'s parallel placement and of the topology check. The
+  // same arcs in the same order make the same search: the same flow, bit for bit, the same
+  // augmentations and the same source set, whole and in parts.
+  Rng rng(99);
+  auto problem = random_flow_problem(rng, 20000, 200000);
+  const auto part = node_parts(rng, problem.num_nodes, 4, false);
+  DynamicMaxFlow serial;
+  serial.build(problem.num_nodes, problem.edges);
+  const double flow = serial.solve(problem.caps);
+  DynamicMaxFlow serial_parts;
+  serial_parts.build(problem.num_nodes, problem.edges);
+  serial_parts.cut_into_parts(part);
+  serial_parts.solve_cut_in_parts(problem.caps, 1);
+  for (const int threads : {2, 3}) {
+    INFO(threads << " threads");
+    DynamicMaxFlow built;
+    built.build(problem.num_nodes, problem.edges, threads);
+    CHECK(built.solve(problem.caps) == flow);
+    CHECK(built.last_solve().augmentations == serial.last_solve().augmentations);
+    CHECK(source_set(built) == source_set(serial));
+    DynamicMaxFlow in_parts;
+    in_parts.build(problem.num_nodes, problem.edges, threads);
+    in_parts.cut_into_parts(part, threads);
+    in_parts.solve_cut_in_parts(problem.caps, threads);
+    CHECK(in_parts.last_solve().augmentations == serial_parts.last_solve().augmentations);
+    CHECK(source_set(in_parts) == source_set(serial_parts));
+  }
+  // The checks on several threads name the first bad edge, as on one.
+  problem.edges[150000] = {7, 7};
+  problem.edges[190000] = {1, 20000};
+  DynamicMaxFlow bad;
+  CHECK_THROWS_WITH(bad.build(problem.num_nodes, problem.edges, 2),
+                    Catch::Contains("edge 150000 (7, 7) must join two different nodes < 20000"));
+}

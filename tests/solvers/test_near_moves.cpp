@@ -78,6 +78,49 @@ TEST_CASE("a near move frees exactly the variables near its label", "[expansion]
   CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
 }
 
+TEST_CASE("near moves free the same variables on 1, 2 and 3 threads, as far as the radius says",
+          "[expansion][near][threads]") {
+  // 200 x 150 pixels, 3 labels: each breadth-first level spans several bands of 8192, so bands
+  // on different threads race for the variables they reach. The free variables must be those
+  // within `radius` grid steps of a variable labelled alpha or cheapest at alpha.
+  Rng rng(5);
+  const PairwiseEnergy energy = random_grid_energy(rng, 200, 150, 3);
+  const Labeling x = random_labeling(rng, energy.num_variables(), 3);
+  const std::size_t n = energy.num_variables();
+  for (const int radius : {1, 3}) {
+    // Brute force: each variable's grid distance to the nearest seed, by relaxation.
+    std::vector<std::vector<VariableIndex>> expected(3);
+    for (Label alpha = 0; alpha < 3; ++alpha) {
+      std::vector<int> distance(n, 1 << 20);
+      for (std::size_t v = 0; v < n; ++v)
+        if (x[v] == alpha || cheapest_label(energy, v) == alpha) distance[v] = 0;
+      for (int round = 0; round < radius; ++round) {
+        std::vector<int> next = distance;
+        for (const Edge& edge : energy.edges()) {
+          next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
+          next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+        }
+        distance = next;
+      }
+      for (std::size_t v = 0; v < n; ++v)
+        if (distance[v] <= radius && x[v] != alpha)
+          expected[alpha].push_back(static_cast<VariableIndex>(v));
+      REQUIRE(expected[alpha].size() > 2 * detail::kBandSize);
+    }
+    for (int threads = 1; threads <= 3; ++threads) {
+      detail::NearMoves near;
+      near.bind(energy, radius, nullptr, threads);
+      // Each label twice, in turn: a move's marks must not leak into the next.
+      for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
+        near.build(alpha, x);
+        INFO("radius " << radius << ", alpha " << alpha << ", " << threads << " threads");
+        CHECK(std::vector<VariableIndex>(near.free().begin(), near.free().end()) ==
+              expected[alpha]);
+      }
+    }
+  }
+}
+
 TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole move improves",
                    "[expansion][near][brute-force]", C2F_MAXFLOW_BACKENDS) {
   Rng rng(4242);

@@ -81,6 +81,62 @@ void assign_huge(std::vector<T>& to, const std::vector<T>& from) {
   to.assign(from.begin(), from.end());
 }
 
+/// Edges per task when build() places arcs on several threads.
+constexpr std::size_t kPlaceChunk = 65536;
+
+/// The arcs of `edges` sorted by tail, each node's in edge order (edge e's from -> to arc, then
+/// its sister, where both ends are one node's): the same arrays for every thread count. On
+/// several threads each range of edges counts its arcs at every node, and from those counts
+/// knows where its arcs go.
+void place_arcs(Topology& t, std::size_t num_nodes, std::span<const FlowEdge> edges, int threads) {
+  const std::size_t ranges = std::min<std::size_t>(
+      resolved_threads(threads), std::max<std::size_t>(1, edges.size() / kPlaceChunk));
+  const std::size_t per_range = (edges.size() + ranges - 1) / std::max<std::size_t>(ranges, 1);
+  // next[r][i]: where range r puts its next arc at node i (first its count of them).
+  std::vector<std::vector<Index>> next(ranges);
+  parallel_for(
+      ranges,
+      [&](std::size_t r) {
+        next[r].assign(num_nodes, 0);
+        const std::size_t last = std::min(edges.size(), (r + 1) * per_range);
+        for (std::size_t e = r * per_range; e < last; ++e) {
+          ++next[r][edges[e].from];
+          ++next[r][edges[e].to];
+        }
+      },
+      threads);
+  t.first_arc.assign(num_nodes + 1, 0);
+  Index offset = 0;
+  for (std::size_t i = 0; i < num_nodes; ++i) {
+    t.first_arc[i] = offset;
+    for (std::size_t r = 0; r < ranges; ++r) {
+      const Index count = next[r][i];
+      next[r][i] = offset;
+      offset += count;
+    }
+  }
+  t.first_arc[num_nodes] = offset;
+  t.head.resize(2 * edges.size());
+  t.sister.resize(2 * edges.size());
+  t.forward_arc.resize(edges.size());
+  parallel_for(
+      ranges,
+      [&](std::size_t r) {
+        std::vector<Index>& fill = next[r];
+        const std::size_t last = std::min(edges.size(), (r + 1) * per_range);
+        for (std::size_t e = r * per_range; e < last; ++e) {
+          const Index forward = fill[edges[e].from]++;
+          const Index backward = fill[edges[e].to]++;
+          t.head[forward] = edges[e].to;
+          t.sister[forward] = backward;
+          t.head[backward] = edges[e].from;
+          t.sister[backward] = forward;
+          t.forward_arc[e] = forward;
+        }
+      },
+      threads);
+}
+
 }  // namespace
 
 /// One search over the graph's nodes, or over one part of them: the active queue, the orphan
@@ -639,40 +695,15 @@ DynamicMaxFlow& DynamicMaxFlow::operator=(const DynamicMaxFlow& other) {
 DynamicMaxFlow::DynamicMaxFlow(DynamicMaxFlow&&) noexcept = default;
 DynamicMaxFlow& DynamicMaxFlow::operator=(DynamicMaxFlow&&) noexcept = default;
 
-void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edges) {
-  check_topology(num_nodes, edges, "DynamicMaxFlow::build");
+void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edges, int threads) {
+  check_topology(num_nodes, edges, "DynamicMaxFlow::build", threads);
   if (num_nodes >= kTerminal || edges.size() >= (std::size_t{1} << 31)) {
     throw std::invalid_argument("DynamicMaxFlow::build: " + std::to_string(num_nodes) +
                                 " nodes and " + std::to_string(edges.size()) +
                                 " edges exceed the 32-bit arc indices");
   }
   auto topology = std::make_shared<Topology>();
-  Topology& t = *topology;
-  // Arcs sorted by tail: count, prefix sums, place.
-  t.first_arc.assign(num_nodes + 1, 0);
-  for (const FlowEdge& e : edges) {
-    ++t.first_arc[e.from];
-    ++t.first_arc[e.to];
-  }
-  Index offset = 0;
-  for (Index& first : t.first_arc) {
-    const Index count = first;
-    first = offset;
-    offset += count;
-  }
-  std::vector<Index> fill(t.first_arc.begin(), t.first_arc.end() - 1);
-  t.head.resize(2 * edges.size());
-  t.sister.resize(2 * edges.size());
-  t.forward_arc.resize(edges.size());
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const Index forward = fill[edges[e].from]++;
-    const Index backward = fill[edges[e].to]++;
-    t.head[forward] = edges[e].to;
-    t.sister[forward] = backward;
-    t.head[backward] = edges[e].from;
-    t.sister[backward] = forward;
-    t.forward_arc[e] = forward;
-  }
+  place_arcs(*topology, num_nodes, edges, threads);
   Impl& m = *impl_;
   m.num_nodes = num_nodes;
   m.num_edges = edges.size();
@@ -703,7 +734,7 @@ void DynamicMaxFlow::solve_cut(const FlowCapacities& caps) {
   m.run();
 }
 
-void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part) {
+void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part, int threads) {
   Impl& m = *impl_;
   if (!m.topology) throw std::logic_error("DynamicMaxFlow::cut_into_parts: call build() first");
   if (part.size() != m.num_nodes) {
@@ -721,11 +752,20 @@ void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part) {
   std::vector<std::size_t> next(parts->first_member.begin(), parts->first_member.end() - 1);
   for (std::size_t i = 0; i < part.size(); ++i)
     parts->members[next[part[i]]++] = static_cast<std::uint32_t>(i);
+  // The edges between parts, found by chunks and joined in order.
   const Topology& t = *m.topology;
-  for (std::size_t e = 0; e < m.num_edges; ++e) {
-    const Index forward = t.forward_arc[e];
-    if (part[t.head[forward]] != part[t.head[t.sister[forward]]]) parts->between.push_back(e);
-  }
+  std::vector<std::vector<std::size_t>> found((m.num_edges + kPassChunk - 1) / kPassChunk);
+  parallel_for_chunks(
+      m.num_edges, kPassChunk,
+      [&](std::size_t c, std::size_t first, std::size_t last) {
+        for (std::size_t e = first; e < last; ++e) {
+          const Index forward = t.forward_arc[e];
+          if (part[t.head[forward]] != part[t.head[t.sister[forward]]]) found[c].push_back(e);
+        }
+      },
+      threads);
+  for (const std::vector<std::size_t>& edges : found)
+    parts->between.insert(parts->between.end(), edges.begin(), edges.end());
   m.parts = std::move(parts);
 }
 

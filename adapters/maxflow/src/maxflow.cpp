@@ -1,7 +1,12 @@
 #include "c2f/adapters/maxflow/maxflow.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
+#include <vector>
+
+#include "c2f/support/parallel_for.hpp"
 
 namespace c2f {
 
@@ -56,9 +61,33 @@ double cut_capacity(const FlowCapacities& caps, std::span<const FlowEdge> edges,
   return total;
 }
 
-void check_topology(std::size_t num_nodes, std::span<const FlowEdge> edges, const char* who) {
+namespace {
+
+[[nodiscard]] bool joins_two_nodes(const FlowEdge& edge, std::size_t num_nodes) noexcept {
+  return edge.from < num_nodes && edge.to < num_nodes && edge.from != edge.to;
+}
+
+/// Edges per task of check_topology's parallel pass.
+constexpr std::size_t kCheckChunk = 65536;
+
+}  // namespace
+
+void check_topology(std::size_t num_nodes, std::span<const FlowEdge> edges, const char* who,
+                    int threads) {
+  if (threads != 1 && edges.size() > kCheckChunk) {
+    std::vector<std::uint8_t> fine((edges.size() + kCheckChunk - 1) / kCheckChunk);
+    parallel_for_chunks(
+        edges.size(), kCheckChunk,
+        [&](std::size_t c, std::size_t first, std::size_t last) {
+          bool ok = true;
+          for (std::size_t e = first; e < last; ++e) ok &= joins_two_nodes(edges[e], num_nodes);
+          fine[c] = ok ? 1 : 0;
+        },
+        threads);
+    if (std::all_of(fine.begin(), fine.end(), [](std::uint8_t f) { return f != 0; })) return;
+  }
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (edges[e].from >= num_nodes || edges[e].to >= num_nodes || edges[e].from == edges[e].to) {
+    if (!joins_two_nodes(edges[e], num_nodes)) {
       throw std::invalid_argument(std::string(who) + ": edge " + std::to_string(e) + " (" +
                                   std::to_string(edges[e].from) + ", " +
                                   std::to_string(edges[e].to) +

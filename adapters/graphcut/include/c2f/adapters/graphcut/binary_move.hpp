@@ -62,9 +62,10 @@ template <MaxFlow Backend>
 class BinaryMoveSolver {
  public:
   /// Fixes the topology: n binary variables and the pairs (u, v) that carry pairwise terms.
-  /// The n-node graph and the 2n-node QPBO graph are built on first need.
+  /// The n-node graph and the 2n-node QPBO graph are built on first need. Keeps the threads
+  /// solve_in_parts gave (checks the pairs on them) and goes back to one part.
   void bind(std::size_t num_nodes, std::span<const FlowEdge> pairs) {
-    check_topology(num_nodes, pairs, "BinaryMoveSolver::bind");
+    check_topology(num_nodes, pairs, "BinaryMoveSolver::bind", parts_threads_);
     num_nodes_ = num_nodes;
     parts_ = 1;
     pairs_.assign(pairs.begin(), pairs.end());
@@ -205,11 +206,17 @@ class BinaryMoveSolver {
   MoveGraph& graph_for(std::size_t key, GraphKind kind, BinaryMoveStats& stats) {
     MoveGraph& graph = graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled);
     if (!graph.built) {
-      graph.graph.build(graph_nodes(kind), graph_edges(kind));
-      if constexpr (requires(Backend & g, std::span<const std::uint8_t> part) {
-                      g.cut_into_parts(part);
+      if constexpr (requires(Backend & g, std::span<const FlowEdge> edges) {
+                      g.build(0, edges, 1);
                     }) {
-        if (parts_ > 1) graph.graph.cut_into_parts(node_parts(kind));
+        graph.graph.build(graph_nodes(kind), graph_edges(kind), parts_threads_);
+      } else {
+        graph.graph.build(graph_nodes(kind), graph_edges(kind));
+      }
+      if constexpr (requires(Backend & g, std::span<const std::uint8_t> part) {
+                      g.cut_into_parts(part, 1);
+                    }) {
+        if (parts_ > 1) graph.graph.cut_into_parts(node_parts(kind), parts_threads_);
       }
       graph.built = true;
     }
@@ -399,16 +406,22 @@ class BinaryMoveSolver {
     }
   }
 
+  /// The QPBO graph's edges (see fill_capacities), by bands of pairs.
   void prepare_qpbo() {
     const auto n = static_cast<FlowNode>(num_nodes_);
-    doubled_pairs_.clear();
-    doubled_pairs_.reserve(4 * pairs_.size());
-    for (const FlowEdge& pair : pairs_) {
-      doubled_pairs_.push_back({pair.from, pair.to});
-      doubled_pairs_.push_back({pair.to + n, pair.from + n});
-      doubled_pairs_.push_back({pair.from, pair.to + n});
-      doubled_pairs_.push_back({pair.to, pair.from + n});
-    }
+    doubled_pairs_.resize(4 * pairs_.size());
+    detail::for_each_band(
+        pairs_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t e = first; e < last; ++e) {
+            const FlowEdge& pair = pairs_[e];
+            doubled_pairs_[4 * e + 0] = {pair.from, pair.to};
+            doubled_pairs_[4 * e + 1] = {pair.to + n, pair.from + n};
+            doubled_pairs_[4 * e + 2] = {pair.from, pair.to + n};
+            doubled_pairs_[4 * e + 3] = {pair.to, pair.from + n};
+          }
+        },
+        parts_threads_);
     qpbo_caps_.resize(2 * num_nodes_, doubled_pairs_.size());
     doubled_ready_ = true;
   }

@@ -48,8 +48,9 @@ class DynamicMaxFlow {
   DynamicMaxFlow& operator=(DynamicMaxFlow&&) noexcept;
 
   /// Throws std::invalid_argument for an edge with an endpoint >= num_nodes or a loop, or
-  /// more than 2^31 edges.
-  void build(std::size_t num_nodes, std::span<const FlowEdge> edges);
+  /// more than 2^31 edges. Builds on up to `threads` threads (0: every core), to the same
+  /// graph for every count.
+  void build(std::size_t num_nodes, std::span<const FlowEdge> edges, int threads = 1);
   /// Maximum flow value (= minimum cut capacity) from zero flow. Throws std::invalid_argument
   /// when caps do not fit the graph, std::logic_error before build().
   double solve(const FlowCapacities& caps);
@@ -59,8 +60,8 @@ class DynamicMaxFlow {
   /// Cuts the nodes into parts for the solves in parts: node i in part[i] (parts 0, 1, ... up
   /// to 255). Kept, with the list of edges between parts, until the next build(); copies share
   /// it. Throws std::invalid_argument when part does not have one entry per node,
-  /// std::logic_error before build().
-  void cut_into_parts(std::span<const std::uint8_t> part);
+  /// std::logic_error before build(). Finds the edges between parts on up to `threads` threads.
+  void cut_into_parts(std::span<const std::uint8_t> part, int threads = 1);
   /// The parts cut_into_parts made (1 before it).
   [[nodiscard]] std::size_t num_parts() const noexcept;
   /// solve_cut in two stages, the first on up to `threads` threads (0: every core): each part

@@ -57,7 +57,10 @@ concept MaxFlow = requires(G& g, const G& cg, std::size_t n, std::span<const Flo
 double cut_capacity(const FlowCapacities& caps, std::span<const FlowEdge> edges,
                     std::span<const char> in_source);
 
-/// Throws std::invalid_argument unless every edge has endpoints < num_nodes and from != to.
-void check_topology(std::size_t num_nodes, std::span<const FlowEdge> edges, const char* who);
+/// Throws std::invalid_argument unless every edge has endpoints < num_nodes and from != to,
+/// naming the first edge that does not. Checks by chunks on up to `threads` threads (0: every
+/// core).
+void check_topology(std::size_t num_nodes, std::span<const FlowEdge> edges, const char* who,
+                    int threads = 1);
 
 }  // namespace c2f

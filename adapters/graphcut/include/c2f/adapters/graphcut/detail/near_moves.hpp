@@ -6,6 +6,7 @@
 // held variables: an exact move on a smaller graph.
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -141,27 +142,44 @@ class NearMoves {
   }
 
   /// Finds the free variables of the move to alpha from x (in no order in free()), without
-  /// building the problem: is_free() answers for each variable.
+  /// building the problem: is_free() answers for each variable. Breadth first from the
+  /// variables labelled alpha and those whose cheapest label it is, a level at a time, each
+  /// level's variables by bands on the threads (a variable is claimed by one of them); which
+  /// variables are reached, and at what depth, does not depend on the threads.
   void select(Label alpha, std::span<const Label> x) {
-    for (const VariableIndex v : free_) local_[v] = kHeld;
-    for (const VariableIndex v : reached_) depth_[v] = kUnreached;
-    free_.clear();
+    for_each_band(
+        reached_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t k = first; k < last; ++k) {
+            depth_[reached_[k]] = kUnreached;
+            local_[reached_[k]] = kHeld;
+          }
+        },
+        threads_);
     reached_.clear();
-    // Breadth-first from the variables labelled alpha and those whose cheapest label it is.
-    auto reach = [&](VariableIndex v, int depth) {
-      if (depth_[v] != kUnreached) return;
-      depth_[v] = depth;
-      reached_.push_back(v);
-      if (x[v] != alpha) free_.push_back(v);
-    };
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (x[i] == alpha) reach(static_cast<VariableIndex>(i), 0);
-    for (const VariableIndex v : cheapest_[static_cast<std::size_t>(alpha)]) reach(v, 0);
-    for (std::size_t k = 0; k < reached_.size(); ++k) {
-      const VariableIndex v = reached_[k];
-      if (depth_[v] >= radius_) continue;
-      for (const Incidence& inc : incidence_->of(v)) reach(inc.other, depth_[v] + 1);
+    gather(x.size(), [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
+      for (std::size_t v = first; v < last; ++v)
+        if (x[v] == alpha) claim(static_cast<VariableIndex>(v), 0, out);
+    });
+    const std::vector<VariableIndex>& cheapest = cheapest_[static_cast<std::size_t>(alpha)];
+    gather(cheapest.size(),
+           [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
+             for (std::size_t k = first; k < last; ++k) claim(cheapest[k], 0, out);
+           });
+    std::size_t level_begin = 0;  // reached_[level_begin, end): the last level reached
+    for (int depth = 1; depth <= radius_; ++depth) {
+      const std::size_t level_end = reached_.size();
+      gather(level_end - level_begin,
+             [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
+               for (std::size_t k = level_begin + first; k < level_begin + last; ++k)
+                 for (const Incidence& inc : incidence_->of(reached_[k]))
+                   claim(inc.other, depth, out);
+             });
+      level_begin = level_end;
     }
+    free_.clear();
+    for (const VariableIndex v : reached_)
+      if (x[v] != alpha) free_.push_back(v);
   }
 
   /// Puts free() in index order (then the unary table is read nearly sequentially): a sort
@@ -204,6 +222,32 @@ class NearMoves {
   /// order_free sorts when fewer than one variable in this many is free.
   static constexpr std::size_t kSortBelow = 16;
 
+  /// Marks v reached at `depth` and lists it in `out`, unless it is reached already (an atomic
+  /// claim: bands of one level may race for a variable).
+  void claim(VariableIndex v, int depth, std::vector<VariableIndex>& out) {
+    std::atomic_ref<int> mark(depth_[v]);
+    int unreached = kUnreached;
+    if (mark.load(std::memory_order_relaxed) == kUnreached &&
+        mark.compare_exchange_strong(unreached, depth, std::memory_order_relaxed))
+      out.push_back(v);
+  }
+
+  /// Runs visit(first, last, out) for the bands of [0, count) on the threads, each band
+  /// listing what it claims in an `out` of its own, and appends those lists to reached_.
+  template <class Visit>
+  void gather(std::size_t count, const Visit& visit) {
+    band_lists_.resize(std::max(band_lists_.size(), band_count(count)));
+    for_each_band(
+        count,
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          band_lists_[b].clear();
+          visit(first, last, band_lists_[b]);
+        },
+        threads_);
+    for (std::size_t b = 0; b < band_count(count); ++b)
+      reached_.insert(reached_.end(), band_lists_[b].begin(), band_lists_[b].end());
+  }
+
   const PairwiseEnergy* energy_ = nullptr;
   int radius_ = 0;
   int threads_ = 1;
@@ -217,6 +261,7 @@ class NearMoves {
   // Per band of free variables: its pairs and their p, before they are joined in band order.
   std::vector<std::vector<double>> band_p_;
   std::vector<std::vector<VariableIndex>> band_free_;
+  std::vector<std::vector<VariableIndex>> band_lists_;  // gather's, per band
   std::vector<std::vector<FlowEdge>> band_pairs_;
 };
 
