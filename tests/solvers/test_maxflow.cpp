@@ -383,3 +383,75 @@ TEST_CASE("dynamic max-flow built and cut on several threads is the graph built 
   CHECK_THROWS_WITH(bad.build(problem.num_nodes, problem.edges, 2),
                     Catch::Contains("edge 150000 (7, 7) must join two different nodes < 20000"));
 }
+
+namespace {
+
+/// The changes from `before` to `after` as change_in_parts takes them, in index order.
+std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes_between(
+    const FlowCapacities& before, const FlowCapacities& after) {
+  std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes;
+  for (std::size_t i = 0; i < after.source.size(); ++i) {
+    const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
+    if (delta != 0.0) changes.first.push_back({static_cast<FlowNode>(i), delta});
+  }
+  for (std::size_t e = 0; e < after.forward.size(); ++e) {
+    if (after.forward[e] != before.forward[e] || after.backward[e] != before.backward[e])
+      changes.second.push_back(
+          {e, after.forward[e] - before.forward[e], after.backward[e] - before.backward[e]});
+  }
+  return changes;
+}
+
+}  // namespace
+
+TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on any threads",
+          "[maxflow][dynamic][parts][threads]") {
+  Rng rng(515);
+  for (int trial = 0; trial < 12; ++trial) {
+    auto problem = random_flow_problem(rng, 3000, 12000);
+    change_capacities(rng, problem.caps, 1.0, true);
+    const bool in_parts = trial % 4 != 0;  // else one part: the changes one at a time
+    const auto part = node_parts(rng, problem.num_nodes, 2 + trial % 5, trial % 3 == 0);
+    std::vector<std::vector<char>> first_sets;
+    for (const int threads : {1, 2, 3}) {
+      INFO("trial " << trial << ", " << threads << " threads");
+      DynamicMaxFlow dynamic;
+      dynamic.build(problem.num_nodes, problem.edges);
+      if (in_parts) dynamic.cut_into_parts(part);
+      dynamic.solve_cut_in_parts(problem.caps, threads);
+      DynamicMaxFlow one_at_a_time(dynamic);
+      FlowCapacities caps = problem.caps;
+      Rng changes(static_cast<std::uint64_t>(trial));  // the same changes for every thread count
+      for (int round = 0; round < 5; ++round) {
+        const FlowCapacities before = caps;
+        change_capacities(changes, caps, round % 2 == 0 ? 0.05 : 0.5, true);
+        const auto [terminals, edges] = changes_between(before, caps);
+        dynamic.change_in_parts(terminals, edges, threads);
+        dynamic.resolve_in_parts(threads);
+        CHECK(dynamic.last_solve().changed_nodes == terminals.size());
+        CHECK(dynamic.last_solve().changed_edges == edges.size());
+        BoostMaxFlow boost;
+        boost.build(problem.num_nodes, problem.edges);
+        const double flow = boost.solve(caps);
+        CHECK(cut_capacity(caps, problem.edges, source_set(dynamic)) == flow);
+        CHECK(source_set(dynamic) == source_set(boost));
+        if (threads == 1) first_sets.push_back(source_set(dynamic));
+        CHECK(source_set(dynamic) == first_sets[static_cast<std::size_t>(round)]);
+        if (!in_parts) {  // one part: exactly the changes one at a time
+          apply_capacity_changes(one_at_a_time, before, caps);
+          one_at_a_time.resolve();
+          CHECK(one_at_a_time.last_solve().augmentations == dynamic.last_solve().augmentations);
+        }
+      }
+    }
+  }
+  DynamicMaxFlow dynamic;
+  auto problem = random_flow_problem(rng, 10, 20);
+  dynamic.build(problem.num_nodes, problem.edges);
+  const std::vector<TerminalChange> bad_node{{10, 1.0}};
+  const std::vector<EdgeChange> bad_edge{{20, 1.0, 0.0}};
+  CHECK_THROWS_WITH(dynamic.change_in_parts(bad_node, {}, 1), Catch::Contains("solve() first"));
+  dynamic.solve(problem.caps);
+  CHECK_THROWS_WITH(dynamic.change_in_parts(bad_node, {}, 1), Catch::Contains("node 10 of 10"));
+  CHECK_THROWS_WITH(dynamic.change_in_parts({}, bad_edge, 1), Catch::Contains("edge 20 of 20"));
+}

@@ -201,6 +201,30 @@ std::vector<double> swapped_labels(const std::vector<double>& costs, int num_lab
 
 }  // namespace
 
+TEST_CASE("a shift move's problem by bands has the bits of the serial one on any threads",
+          "[expansion][shift][threads]") {
+  // 150 x 120 pixels: several bands of 8192 variables and of edges.
+  Rng rng(31);
+  const PairwiseEnergy energy = random_grid_energy(rng, 150, 120, 6);
+  const Labeling x = random_labeling(rng, energy.num_variables(), 6);
+  const EdgeIncidence incidence(energy);
+  for (const int shift : {1, -1, 2}) {
+    Labeling shifted(x.size());
+    std::vector<double> d(x.size()), p(energy.edges().size());
+    detail::shift_problem(energy, x, shift, shifted, d, p);
+    for (int threads = 1; threads <= 3; ++threads) {
+      Labeling banded_shifted(x.size());
+      std::vector<double> banded_d(x.size(), -1.0), banded_p(energy.edges().size(), -1.0);
+      detail::shift_problem(energy, incidence, x, shift, banded_shifted, banded_d, banded_p,
+                            threads);
+      INFO("shift " << shift << ", " << threads << " threads");
+      CHECK(banded_shifted == shifted);
+      CHECK(banded_d == d);  // every double the same
+      CHECK(banded_p == p);
+    }
+  }
+}
+
 TEST_CASE("expansion moves are submodular exactly where no move needs QPBO", "[expansion][shift]") {
   CHECK(expansion_moves_submodular(one_edge(PairwiseTerm::potts(), 5)));
   CHECK(expansion_moves_submodular(one_edge(PairwiseTerm::truncated_linear(2.0), 5)));

@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "c2f/support/parallel_for.hpp"
@@ -608,22 +609,27 @@ struct DynamicMaxFlow::Impl {
     run();
   }
 
-  void touch(Index i) {
+  /// Lists node i in `list` (the touched list, or a part's) unless it is touched already.
+  void touch(Index i, std::vector<Index>& list) {
     if (nodes[i].touched) return;
     nodes[i].touched = true;
-    touched.push_back(i);
+    list.push_back(i);
   }
+  void touch(Index i) { touch(i, touched); }
 
   /// Moves node i's residual terminal capacity by delta (a change of source - sink).
-  void change_terminal(Index i, double delta) {
+  void change_terminal(Index i, double delta, std::vector<Index>& list) {
     nodes[i].excess += delta;
-    touch(i);
+    touch(i, list);
+  }
+  void change_terminal(Index i, double delta) {
+    change_terminal(i, delta, touched);
     ++stats.changed_nodes;
   }
 
-  /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
-  /// cancelled and handed to the endpoints' terminal arcs.
-  void change_edge(std::size_t e, double delta_forward, double delta_backward) {
+  /// change_edge, listing the endpoints it touches in `list`.
+  void change_edge(std::size_t e, double delta_forward, double delta_backward,
+                   std::vector<Index>& list) {
     const Topology& t = *topology;
     const Index forward = t.forward_arc[e];
     const Index backward = t.sister[forward];
@@ -648,9 +654,49 @@ struct DynamicMaxFlow::Impl {
     }
     residual[forward] = std::max(forward_residual, 0.0);  // max: rounding below zero
     residual[backward] = std::max(backward_residual, 0.0);
-    touch(from);
-    touch(to);
+    touch(from, list);
+    touch(to, list);
+  }
+
+  /// Moves edge e's residuals by its capacity changes; flow above a lowered capacity is
+  /// cancelled and handed to the endpoints' terminal arcs.
+  void change_edge(std::size_t e, double delta_forward, double delta_backward) {
+    change_edge(e, delta_forward, delta_backward, touched);
     ++stats.changed_edges;
+  }
+
+  /// DynamicMaxFlow::change_in_parts with more than one part: part k's changes on one thread,
+  /// its touched nodes listed apart and then joined in part order, then the edges between.
+  void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,
+                       int threads) {
+    const Topology& t = *topology;
+    const std::vector<std::uint8_t>& part = parts->of_node;
+    const auto ends = [&](const EdgeChange& change) {
+      const Index forward = t.forward_arc[change.edge];
+      return std::pair{part[t.head[t.sister[forward]]], part[t.head[forward]]};
+    };
+    std::vector<std::vector<Index>> listed(parts->count);
+    parallel_for(
+        parts->count,
+        [&](std::size_t k) {
+          for (const TerminalChange& change : terminals)
+            if (part[change.node] == k) change_terminal(change.node, change.delta, listed[k]);
+          for (const EdgeChange& change : edges) {
+            const auto [from, to] = ends(change);
+            if (from == k && to == k)
+              change_edge(change.edge, change.delta_forward, change.delta_backward, listed[k]);
+          }
+        },
+        threads);
+    for (const std::vector<Index>& list : listed)
+      touched.insert(touched.end(), list.begin(), list.end());
+    for (const EdgeChange& change : edges) {
+      const auto [from, to] = ends(change);
+      if (from != to)
+        change_edge(change.edge, change.delta_forward, change.delta_backward, touched);
+    }
+    stats.changed_nodes += terminals.size();
+    stats.changed_edges += edges.size();
   }
 
   /// Restores the search-tree invariants at the touched nodes (Search::repair).
@@ -799,6 +845,32 @@ void DynamicMaxFlow::change_edge(std::size_t edge, double delta_forward, double 
   m.change_edge(edge, delta_forward, delta_backward);
 }
 
+void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
+                                     std::span<const EdgeChange> edges, int threads) {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_in_parts: solve() first");
+  for (const TerminalChange& change : terminals) {
+    if (change.node >= m.num_nodes) {
+      throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
+                              std::to_string(change.node) + " of " + std::to_string(m.num_nodes));
+    }
+  }
+  for (const EdgeChange& change : edges) {
+    if (change.edge >= m.num_edges) {
+      throw std::out_of_range("DynamicMaxFlow::change_in_parts: edge " +
+                              std::to_string(change.edge) + " of " + std::to_string(m.num_edges));
+    }
+  }
+  if (m.touched.empty()) m.stats = {};
+  if (num_parts() > 1) {
+    m.change_in_parts(terminals, edges, threads);
+    return;
+  }
+  for (const TerminalChange& change : terminals) m.change_terminal(change.node, change.delta);
+  for (const EdgeChange& change : edges)
+    m.change_edge(change.edge, change.delta_forward, change.delta_backward);
+}
+
 void DynamicMaxFlow::resolve_in_parts(int threads) {
   Impl& m = *impl_;
   if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::resolve: solve() first");
@@ -826,11 +898,16 @@ bool DynamicMaxFlow::in_source_set(FlowNode node) const {
   return impl_->nodes[node].tree == kSourceTree;
 }
 
-void DynamicMaxFlow::source_set(std::span<char> in_source) const {
+void DynamicMaxFlow::source_set(std::span<char> in_source, int threads) const {
   const Impl& m = *impl_;
   if (in_source.size() != m.num_nodes)
     throw std::invalid_argument("DynamicMaxFlow::source_set: wrong size");
-  for (std::size_t i = 0; i < m.num_nodes; ++i) in_source[i] = m.nodes[i].tree == kSourceTree;
+  parallel_for_chunks(
+      m.num_nodes, kPassChunk,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) in_source[i] = m.nodes[i].tree == kSourceTree;
+      },
+      threads);
 }
 
 std::size_t DynamicMaxFlow::num_nodes() const noexcept {

@@ -254,7 +254,7 @@ class BinaryMoveSolver {
         } else {
           graph.graph.resolve();
         }
-        graph.graph.source_set(in_source_);
+        read_source_set(graph.graph);
         return;
       }
     }
@@ -269,7 +269,7 @@ class BinaryMoveSolver {
       } else {
         graph.graph.solve_cut(caps);
       }
-      graph.graph.source_set(in_source_);
+      read_source_set(graph.graph);
     } else {
       graph.graph.solve(caps);
       for (std::size_t i = 0; i < nodes; ++i)
@@ -279,6 +279,15 @@ class BinaryMoveSolver {
       graph.node_values = node_values_;
       graph.pair_values.assign(p.begin(), p.end());
       graph.solved = true;
+    }
+  }
+
+  /// The solved graph's source set into in_source_ (on the parts' threads when the backend can).
+  void read_source_set(const Backend& graph) {
+    if constexpr (requires(std::span<char> side) { graph.source_set(side, 1); }) {
+      graph.source_set(in_source_, parts_threads_);
+    } else {
+      graph.source_set(in_source_);
     }
   }
 
@@ -340,69 +349,83 @@ class BinaryMoveSolver {
   }
 
   /// Changes a solved graph from the problem it holds to (node_values_, p): only the nodes and
-  /// pairs whose coefficients differ, by the differences of the capacities above.
+  /// pairs whose coefficients differ, by the differences of the capacities above. The changes
+  /// are found by bands on the parts' threads and listed in index order (nodes, then pairs);
+  /// a backend that can (DynamicMaxFlow::change_in_parts) makes them by parts on those threads.
   void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
-    const std::size_t n = num_nodes_;
-    // What differs is found by bands on the parts' threads, then changed in index order.
-    const std::size_t node_bands = detail::band_count(n);
-    band_changes_.resize(node_bands + detail::band_count(pairs_.size()));
+    band_terminals_.resize(detail::band_count(num_nodes_));
+    band_edges_.resize(detail::band_count(pairs_.size()));
     detail::for_each_band(
-        n,
+        num_nodes_,
         [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<std::uint32_t>& mine = band_changes_[b];
+          std::vector<TerminalChange>& mine = band_terminals_[b];
           mine.clear();
-          for (std::size_t i = first; i < last; ++i)
-            if (node_values_[i] != graph.node_values[i])
-              mine.push_back(static_cast<std::uint32_t>(i));
+          for (std::size_t i = first; i < last; ++i) {
+            if (node_values_[i] == graph.node_values[i]) continue;
+            list_node_change(kind, i, graph.node_values[i], node_values_[i], mine);
+            graph.node_values[i] = node_values_[i];
+          }
         },
         parts_threads_);
     detail::for_each_band(
         pairs_.size(),
         [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<std::uint32_t>& mine = band_changes_[node_bands + b];
+          std::vector<EdgeChange>& mine = band_edges_[b];
           mine.clear();
-          for (std::size_t e = first; e < last; ++e)
-            if (p[e] != graph.pair_values[e]) mine.push_back(static_cast<std::uint32_t>(e));
+          for (std::size_t e = first; e < last; ++e) {
+            if (p[e] == graph.pair_values[e]) continue;
+            list_pair_change(kind, e, graph.pair_values[e], p[e], mine);
+            graph.pair_values[e] = p[e];
+          }
         },
         parts_threads_);
-    for (std::size_t b = 0; b < node_bands; ++b)
-      for (const std::uint32_t i : band_changes_[b]) change_node(graph, kind, i, node_values_[i]);
-    for (std::size_t b = node_bands; b < band_changes_.size(); ++b)
-      for (const std::uint32_t e : band_changes_[b]) change_pair(graph, kind, e, p[e]);
+    terminal_changes_.clear();
+    for (const std::vector<TerminalChange>& mine : band_terminals_)
+      terminal_changes_.insert(terminal_changes_.end(), mine.begin(), mine.end());
+    edge_changes_.clear();
+    for (const std::vector<EdgeChange>& mine : band_edges_)
+      edge_changes_.insert(edge_changes_.end(), mine.begin(), mine.end());
+    Backend& g = graph.graph;
+    if constexpr (requires(std::span<const TerminalChange> t, std::span<const EdgeChange> e) {
+                    g.change_in_parts(t, e, 1);
+                  }) {
+      g.change_in_parts(terminal_changes_, edge_changes_, parts_threads_);
+    } else {
+      for (const TerminalChange& change : terminal_changes_)
+        g.change_terminal(change.node, change.delta);
+      for (const EdgeChange& change : edge_changes_)
+        g.change_edge(change.edge, change.delta_forward, change.delta_backward);
+    }
   }
 
-  /// change_graph's change of node i's coefficient to `after`.
-  void change_node(MoveGraph& graph, GraphKind kind, std::size_t i, double after) {
-    Backend& g = graph.graph;
-    const double before = graph.node_values[i];
-    graph.node_values[i] = after;
+  /// The terminal changes of node i's coefficient going from `before` to `after`.
+  void list_node_change(GraphKind kind, std::size_t i, double before, double after,
+                        std::vector<TerminalChange>& out) const {
     if (kind == GraphKind::plain) {
-      g.change_terminal(static_cast<FlowNode>(i), after - before);
+      out.push_back({static_cast<FlowNode>(i), after - before});
       return;
     }
     const double delta = 0.5 * after - 0.5 * before;
-    g.change_terminal(static_cast<FlowNode>(i), delta);
-    g.change_terminal(static_cast<FlowNode>(num_nodes_ + i), -delta);
+    out.push_back({static_cast<FlowNode>(i), delta});
+    out.push_back({static_cast<FlowNode>(num_nodes_ + i), -delta});
   }
 
-  /// change_graph's change of pair e's coefficient to `after`.
-  void change_pair(MoveGraph& graph, GraphKind kind, std::size_t e, double after) {
-    Backend& g = graph.graph;
-    const double before = graph.pair_values[e];
-    graph.pair_values[e] = after;
+  /// The edge changes of pair e's coefficient going from `before` to `after`.
+  static void list_pair_change(GraphKind kind, std::size_t e, double before, double after,
+                               std::vector<EdgeChange>& out) {
     if (kind == GraphKind::plain) {
-      g.change_edge(e, after - before, 0.0);
+      out.push_back({e, after - before, 0.0});
       return;
     }
     const double submodular = std::max(0.5 * after, 0.0) - std::max(0.5 * before, 0.0);
     const double crossing = std::max(-0.5 * after, 0.0) - std::max(-0.5 * before, 0.0);
     if (submodular != 0.0) {
-      g.change_edge(4 * e + 0, submodular, 0.0);
-      g.change_edge(4 * e + 1, submodular, 0.0);
+      out.push_back({4 * e + 0, submodular, 0.0});
+      out.push_back({4 * e + 1, submodular, 0.0});
     }
     if (crossing != 0.0) {
-      g.change_edge(4 * e + 2, crossing, 0.0);
-      g.change_edge(4 * e + 3, crossing, 0.0);
+      out.push_back({4 * e + 2, crossing, 0.0});
+      out.push_back({4 * e + 3, crossing, 0.0});
     }
   }
 
@@ -436,9 +459,13 @@ class BinaryMoveSolver {
   std::vector<double> node_values_;  // d, or QPBO's adjusted d
   FlowCapacities plain_caps_;
   FlowCapacities qpbo_caps_;
-  std::vector<char> in_source_;                           // the last solve's source set
-  std::vector<std::uint8_t> band_flags_;                  // scan_coefficients' findings per band
-  std::vector<std::vector<std::uint32_t>> band_changes_;  // change_graph's, per band
+  std::vector<char> in_source_;           // the last solve's source set
+  std::vector<std::uint8_t> band_flags_;  // scan_coefficients' findings per band
+  // change_graph's changes, per band and then joined.
+  std::vector<std::vector<TerminalChange>> band_terminals_;
+  std::vector<std::vector<EdgeChange>> band_edges_;
+  std::vector<TerminalChange> terminal_changes_;
+  std::vector<EdgeChange> edge_changes_;
   detail::MoveGraphs<Backend> graphs_;
 };
 

@@ -95,6 +95,7 @@ class ExpansionSolver {
     // within the whole limit.
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
     state_.tally_changes(incidences.get(), options_.threads);
+    incidence_ = shift_moves_ ? incidences.get() : nullptr;
     state_.moves.solve_in_parts(flow_parts(energy.num_variables()), options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
@@ -231,7 +232,8 @@ class ExpansionSolver {
   void shift_move(int shift) {
     const Labeling& labeling = state_.labeling;
     shifted_.resize(labeling.size());
-    detail::shift_problem(*state_.energy, labeling, shift, shifted_, state_.d, state_.p);
+    detail::shift_problem(*state_.energy, *incidence_, labeling, shift, shifted_, state_.d,
+                          state_.p, options_.threads);
     const auto key = static_cast<std::size_t>(state_.energy->num_labels()) + (shift > 0 ? 0 : 1);
     last_ = state_.solve_move(0, 0, key);
     last_.shift = shift;
@@ -368,6 +370,7 @@ class ExpansionSolver {
   std::vector<MoveLabel> near_out_;
   // Shift moves (options_.shift_moves).
   Labeling shifted_;  // the labeling shifted by the current shift move's shift
+  std::shared_ptr<const EdgeIncidence> incidence_;  // for shift moves' problems by bands
 };
 
 static_assert(AnytimeSolver<ExpansionSolver<>, PairwiseEnergy>);

@@ -77,6 +77,14 @@ class DynamicMaxFlow {
   /// After a solve: adds the deltas to the edge's forward and backward capacities (which must
   /// stay >= 0).
   void change_edge(std::size_t edge, double delta_forward, double delta_backward);
+  /// After a solve: every change of `terminals` (change_terminal), then of `edges`
+  /// (change_edge). With one part, one at a time in that order. Cut into parts, on up to
+  /// `threads` threads: each part's terminal changes and the edge changes inside it on one
+  /// thread, in their order, then the edge changes between parts in theirs. The changed graph
+  /// and the next resolve_in_parts depend on the parts, never on `threads`. Throws
+  /// std::out_of_range for a node or edge the graph does not have (nothing changed then).
+  void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,
+                       int threads);
   /// The minimum cut after the changes since the last solve or resolve, from the current flow.
   void resolve();
   /// resolve() in the two stages of solve_cut_in_parts: the touched nodes of every part searched
@@ -87,8 +95,9 @@ class DynamicMaxFlow {
 
   /// After a solve: whether node is reachable from the source in the residual graph.
   [[nodiscard]] bool in_source_set(FlowNode node) const;
-  /// in_source_set of every node at once; in_source.size() must be num_nodes().
-  void source_set(std::span<char> in_source) const;
+  /// in_source_set of every node at once, on up to `threads` threads (0: every core);
+  /// in_source.size() must be num_nodes().
+  void source_set(std::span<char> in_source, int threads = 1) const;
   [[nodiscard]] std::size_t num_nodes() const noexcept;
   [[nodiscard]] std::size_t num_edges() const noexcept;
   /// What the last solve() or resolve() did.

@@ -19,6 +19,20 @@ struct FlowEdge {
   FlowNode to = 0;
 };
 
+/// A change of a solved graph's terminal capacities, one of a batch (DynamicMaxFlow::
+/// change_in_parts).
+struct TerminalChange {
+  FlowNode node;
+  double delta;  ///< added to the node's source capacity minus its sink capacity
+};
+
+/// A change of a solved graph's edge capacities, one of a batch.
+struct EdgeChange {
+  std::size_t edge;
+  double delta_forward;
+  double delta_backward;
+};
+
 /// Every capacity of one solve: per node the arc from the source and the arc to the sink, per
 /// edge the capacity of from -> to (forward) and of to -> from (backward). All finite, >= 0.
 /// Cutting a node to the sink side costs `source[i]`, to the source side `sink[i]`.

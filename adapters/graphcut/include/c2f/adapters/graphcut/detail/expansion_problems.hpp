@@ -13,6 +13,7 @@
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/detail/bands.hpp"
 #include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
@@ -85,7 +86,9 @@ class ExpansionProblems {
   static constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
 
   struct Problem {
-    std::vector<double> d, p;
+    // Not zeroed when sized: compute_in_full writes every entry, by bands, so the pages of a
+    // label's first problem are first touched on the threads.
+    std::vector<double, DefaultInitAllocator<double>> d, p;
     std::size_t mark = kNever;  ///< log size when d and p were last brought up to date
   };
 
@@ -138,6 +141,8 @@ class ExpansionProblems {
         threads_);
   }
 
+  /// The p of the edges of the variables changed since the problem's mark and the d of those
+  /// variables and their neighbours: found in log order, then computed by bands.
   void patch(Label alpha, std::span<const Label> x, Problem& problem) {
     const auto edges = energy_->edges();
     if (++stamp_ == 0) {  // the stamps wrapped: clear them
@@ -146,6 +151,7 @@ class ExpansionProblems {
       stamp_ = 1;
     }
     affected_.clear();
+    affected_edges_.clear();
     auto affect = [&](VariableIndex v) {
       if (node_stamp_[v] == stamp_) return;
       node_stamp_[v] = stamp_;
@@ -158,10 +164,25 @@ class ExpansionProblems {
         affect(inc.other);
         if (edge_stamp_[inc.edge] == stamp_) continue;
         edge_stamp_[inc.edge] = stamp_;
-        problem.p[inc.edge] = pair_coefficient(edges[inc.edge], alpha, x);
+        affected_edges_.push_back(inc.edge);
       }
     }
-    for (const VariableIndex v : affected_) problem.d[v] = node_coefficient(v, alpha, x);
+    for_each_band(
+        affected_edges_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t k = first; k < last; ++k) {
+            const std::size_t e = affected_edges_[k];
+            problem.p[e] = pair_coefficient(edges[e], alpha, x);
+          }
+        },
+        threads_);
+    for_each_band(
+        affected_.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t k = first; k < last; ++k)
+            problem.d[affected_[k]] = node_coefficient(affected_[k], alpha, x);
+        },
+        threads_);
   }
 
   const PairwiseEnergy* energy_ = nullptr;
@@ -172,7 +193,8 @@ class ExpansionProblems {
   std::shared_ptr<const EdgeIncidence> incidence_;
   std::vector<std::uint32_t> node_stamp_, edge_stamp_;
   std::uint32_t stamp_ = 0;
-  std::vector<VariableIndex> affected_;
+  std::vector<VariableIndex> affected_;  // patch's variables and edges
+  std::vector<std::uint32_t> affected_edges_;
 };
 
 }  // namespace c2f::detail

@@ -11,6 +11,8 @@
 #include <span>
 
 #include "c2f/adapters/graphcut/binary_move.hpp"
+#include "c2f/adapters/graphcut/detail/bands.hpp"
+#include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -37,6 +39,53 @@ inline void shift_problem(const PairwiseEnergy& energy, std::span<const Label> x
                     energy.pairwise_cost(edge, xu, xv), energy.pairwise_cost(edge, xu, yv),
                     energy.pairwise_cost(edge, yu, xv), energy.pairwise_cost(edge, yu, yv));
   }
+}
+
+/// shift_problem by bands (detail/bands.hpp) on up to `threads` threads: y, then every p[e],
+/// then every d[i] as its unary change plus its edges' shares over the variable's incidences,
+/// which follow the edge order, so the bits are shift_problem's for every thread count.
+inline void shift_problem(const PairwiseEnergy& energy, const EdgeIncidence& incidence,
+                          std::span<const Label> x, int shift, std::span<Label> shifted,
+                          std::span<double> d, std::span<double> p, int threads) {
+  const int top = energy.num_labels() - 1;
+  const auto edges = energy.edges();
+  for_each_band(
+      x.size(),
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i)
+          shifted[i] = static_cast<Label>(std::clamp(static_cast<int>(x[i]) + shift, 0, top));
+      },
+      threads);
+  for_each_band(
+      edges.size(),
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        for (std::size_t e = first; e < last; ++e) {
+          const Edge& edge = edges[e];
+          const Label xu = x[edge.u], xv = x[edge.v], yu = shifted[edge.u], yv = shifted[edge.v];
+          const double A = energy.pairwise_cost(edge, xu, xv);
+          const double B = energy.pairwise_cost(edge, xu, yv);
+          const double C = energy.pairwise_cost(edge, yu, xv);
+          const double D = energy.pairwise_cost(edge, yu, yv);
+          p[e] = 0.0 + (B + C - A - D);  // add_binary_term's sum, onto a zero
+        }
+      },
+      threads);
+  for_each_band(
+      x.size(),
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          double value = energy.unary(i, shifted[i]) - energy.unary(i, x[i]);
+          for (const Incidence& inc : incidence.of(static_cast<VariableIndex>(i))) {
+            const Edge& edge = edges[inc.edge];
+            const Label xu = x[edge.u], xv = x[edge.v], yu = shifted[edge.u], yv = shifted[edge.v];
+            const double C = energy.pairwise_cost(edge, yu, xv);
+            value += inc.is_first ? C - energy.pairwise_cost(edge, xu, xv)
+                                  : energy.pairwise_cost(edge, yu, yv) - C;
+          }
+          d[i] = value;
+        }
+      },
+      threads);
 }
 
 }  // namespace c2f::detail
