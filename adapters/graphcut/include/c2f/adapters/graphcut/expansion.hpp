@@ -237,12 +237,7 @@ class ExpansionSolver {
     const auto key = static_cast<std::size_t>(state_.energy->num_labels()) + (shift > 0 ? 0 : 1);
     last_ = state_.solve_move(0, 0, key);
     last_.shift = shift;
-    moved_.clear();
-    for (std::size_t i = 0; i < labeling.size(); ++i) {
-      const bool moves = state_.out[i] == MoveLabel::one && shifted_[i] != labeling[i];
-      state_.candidate[i] = moves ? shifted_[i] : labeling[i];
-      if (moves) moved_.push_back(static_cast<VariableIndex>(i));
-    }
+    propose([this](std::size_t i) { return shifted_[i]; });
     finish_move();
   }
 
@@ -252,13 +247,33 @@ class ExpansionSolver {
     std::span<const double> d, p;
     problems_.update(alpha, labeling, d, p);
     last_ = state_.solve_move(alpha, alpha, static_cast<std::size_t>(alpha), d, p);
-    moved_.clear();
-    for (std::size_t i = 0; i < labeling.size(); ++i) {
-      const bool to_alpha = state_.out[i] == MoveLabel::one && labeling[i] != alpha;
-      state_.candidate[i] = to_alpha ? alpha : labeling[i];
-      if (to_alpha) moved_.push_back(static_cast<VariableIndex>(i));
-    }
+    propose([alpha](std::size_t) { return alpha; });
     finish_move();
+  }
+
+  /// The candidate of a move over every variable: variable i takes proposal(i) where the move's
+  /// solution says so (state_.out[i] is one) and that is not its label, else keeps its label;
+  /// moved_ lists the variables that change, ascending. By bands on the threads.
+  template <class Proposal>
+  void propose(const Proposal& proposal) {
+    const Labeling& labeling = state_.labeling;
+    band_moved_.resize(std::max(band_moved_.size(), detail::band_count(labeling.size())));
+    detail::for_each_band(
+        labeling.size(),
+        [&](std::size_t b, std::size_t first, std::size_t last) {
+          std::vector<VariableIndex>& mine = band_moved_[b];
+          mine.clear();
+          for (std::size_t i = first; i < last; ++i) {
+            const Label to = proposal(i);
+            const bool moves = state_.out[i] == MoveLabel::one && to != labeling[i];
+            state_.candidate[i] = moves ? to : labeling[i];
+            if (moves) mine.push_back(static_cast<VariableIndex>(i));
+          }
+        },
+        options_.threads);
+    moved_.clear();
+    for (std::size_t b = 0; b < detail::band_count(labeling.size()); ++b)
+      moved_.insert(moved_.end(), band_moved_[b].begin(), band_moved_[b].end());
   }
 
   /// The move to alpha over the variables near alpha (detail/near_moves.hpp), on a graph of
@@ -356,6 +371,7 @@ class ExpansionSolver {
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change
+  std::vector<std::vector<VariableIndex>> band_moved_;  // propose()'s, per band
   MoveCycle<Label> cycle_;
   MoveStep last_;
   std::size_t sweep_steps_done_ = 0;  // steps of the current sweep so far
