@@ -148,6 +148,7 @@ using c2f::pairwise_energy;
 using c2f::pairwise_schedule_presets;
 using c2f::PairwiseEnergy;
 using c2f::PairwiseTerm;
+using c2f::PartedMaxFlow;
 using c2f::Partition;
 using c2f::partition_traits;
 using c2f::PartitionList;

@@ -91,8 +91,9 @@ class BinaryMoveSolver {
   }
 
   /// Solves every move's max-flow in `parts` parts at once on up to `threads` threads, when the
-  /// backend can (DynamicMaxFlow::cut_into_parts): node i, and its QPBO complement, in part
-  /// i * parts / n (bands of indices). 1: one part. Call after bind(), before the first solve.
+  /// backend can (PartedMaxFlow; and builds, changes and reads its graphs on those threads): node
+  /// i, and its QPBO complement, in part i * parts / n (bands of indices). 1: one part. Call after
+  /// bind(), before the first solve.
   void solve_in_parts(std::size_t parts, int threads) {
     parts_ = std::max<std::size_t>(1, std::min<std::size_t>(parts, 255));
     parts_threads_ = threads;
@@ -206,17 +207,11 @@ class BinaryMoveSolver {
   MoveGraph& graph_for(std::size_t key, GraphKind kind, BinaryMoveStats& stats) {
     MoveGraph& graph = graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled);
     if (!graph.built) {
-      if constexpr (requires(Backend & g, std::span<const FlowEdge> edges) {
-                      g.build(0, edges, 1);
-                    }) {
+      if constexpr (PartedMaxFlow<Backend>) {
         graph.graph.build(graph_nodes(kind), graph_edges(kind), parts_threads_);
+        if (parts_ > 1) graph.graph.cut_into_parts(node_parts(kind), parts_threads_);
       } else {
         graph.graph.build(graph_nodes(kind), graph_edges(kind));
-      }
-      if constexpr (requires(Backend & g, std::span<const std::uint8_t> part) {
-                      g.cut_into_parts(part, 1);
-                    }) {
-        if (parts_ > 1) graph.graph.cut_into_parts(node_parts(kind), parts_threads_);
       }
       graph.built = true;
     }
@@ -249,7 +244,7 @@ class BinaryMoveSolver {
     if constexpr (ReusingMaxFlow<Backend>) {
       if (graph.solved) {
         change_graph(graph, kind, p);
-        if constexpr (requires(Backend & g) { g.resolve_in_parts(1); }) {
+        if constexpr (PartedMaxFlow<Backend>) {
           graph.graph.resolve_in_parts(parts_threads_);
         } else {
           graph.graph.resolve();
@@ -264,7 +259,7 @@ class BinaryMoveSolver {
                     graph.graph.solve_cut(caps);
                     g.source_set(side);
                   }) {
-      if constexpr (requires(Backend & g) { g.solve_cut_in_parts(caps, 1); }) {
+      if constexpr (PartedMaxFlow<Backend>) {
         graph.graph.solve_cut_in_parts(caps, parts_threads_);
       } else {
         graph.graph.solve_cut(caps);
@@ -284,7 +279,7 @@ class BinaryMoveSolver {
 
   /// The solved graph's source set into in_source_ (on the parts' threads when the backend can).
   void read_source_set(const Backend& graph) {
-    if constexpr (requires(std::span<char> side) { graph.source_set(side, 1); }) {
+    if constexpr (PartedMaxFlow<Backend>) {
       graph.source_set(in_source_, parts_threads_);
     } else {
       graph.source_set(in_source_);
@@ -386,9 +381,7 @@ class BinaryMoveSolver {
     for (const std::vector<EdgeChange>& mine : band_edges_)
       edge_changes_.insert(edge_changes_.end(), mine.begin(), mine.end());
     Backend& g = graph.graph;
-    if constexpr (requires(std::span<const TerminalChange> t, std::span<const EdgeChange> e) {
-                    g.change_in_parts(t, e, 1);
-                  }) {
+    if constexpr (PartedMaxFlow<Backend>) {
       g.change_in_parts(terminal_changes_, edge_changes_, parts_threads_);
     } else {
       for (const TerminalChange& change : terminal_changes_)

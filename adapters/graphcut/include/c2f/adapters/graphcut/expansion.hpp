@@ -165,11 +165,7 @@ class ExpansionSolver {
   /// kMinRegionVariables variables each, at least one; one on a backend that cannot solve in
   /// parts.
   [[nodiscard]] std::size_t flow_parts(std::size_t n) const noexcept {
-    if constexpr (!requires(Backend & g, std::span<const std::uint8_t> part) {
-                    g.cut_into_parts(part);
-                  }) {
-      return 1;
-    }
+    if constexpr (!PartedMaxFlow<Backend>) return 1;
     const int wanted = options_.flow_parts == 0 ? kDefaultFlowParts : options_.flow_parts;
     return std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(wanted),
                                                           n / detail::kMinRegionVariables));

@@ -131,6 +131,25 @@ concept ReusingMaxFlow = MaxFlow<G> && std::copy_constructible<G> &&
 
 static_assert(ReusingMaxFlow<DynamicMaxFlow>);
 
+/// A ReusingMaxFlow backend that builds a graph, cuts it into parts, and solves, changes and
+/// re-solves it in parts, each on up to `threads` threads, to results that depend on the parts
+/// and never on the threads. The graph-cut solvers solve in parts on such a backend only.
+template <class G>
+concept PartedMaxFlow = ReusingMaxFlow<G> &&
+    requires(G& g, const G& cg, std::size_t n, std::span<const FlowEdge> edges,
+             std::span<const std::uint8_t> part, const FlowCapacities& caps,
+             std::span<const TerminalChange> terminals, std::span<const EdgeChange> changes,
+             std::span<char> in_source, int threads) {
+  g.build(n, edges, threads);
+  g.cut_into_parts(part, threads);
+  g.solve_cut_in_parts(caps, threads);
+  g.change_in_parts(terminals, changes, threads);
+  g.resolve_in_parts(threads);
+  cg.source_set(in_source, threads);
+};
+
+static_assert(PartedMaxFlow<DynamicMaxFlow>);
+
 /// Applies to a solved graph the differences between two capacity sets (terminal pairs whose
 /// source - sink differs, edges whose capacities differ), without re-solving: resolve() or
 /// resolve_in_parts() next. Returns the number of changed nodes and edges. Throws
