@@ -85,10 +85,9 @@ void assign_huge(std::vector<T>& to, const std::vector<T>& from) {
 /// Edges per task when build() places arcs on several threads.
 constexpr std::size_t kPlaceChunk = 65536;
 
-/// The arcs of `edges` sorted by tail, each node's in edge order (edge e's from -> to arc, then
-/// its sister, where both ends are one node's): the same arrays for every thread count. On
-/// several threads each range of edges counts its arcs at every node, and from those counts
-/// knows where its arcs go.
+/// The arcs of `edges` sorted by tail, each node's in edge order: the same arrays for every
+/// thread count. On several threads each range of edges counts its arcs at every node, and
+/// from those counts knows where its arcs go.
 void place_arcs(Topology& t, std::size_t num_nodes, std::span<const FlowEdge> edges, int threads) {
   const std::size_t ranges = std::min<std::size_t>(
       resolved_threads(threads), std::max<std::size_t>(1, edges.size() / kPlaceChunk));
