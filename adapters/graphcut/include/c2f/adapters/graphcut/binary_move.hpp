@@ -348,38 +348,28 @@ class BinaryMoveSolver {
   /// are found by bands on the parts' threads and listed in index order (nodes, then pairs);
   /// a backend that can (DynamicMaxFlow::change_in_parts) makes them by parts on those threads.
   void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
-    band_terminals_.resize(detail::band_count(num_nodes_));
-    band_edges_.resize(detail::band_count(pairs_.size()));
-    detail::for_each_band(
-        num_nodes_,
-        [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<TerminalChange>& mine = band_terminals_[b];
-          mine.clear();
+    terminal_changes_.clear();
+    detail::append_by_bands(
+        num_nodes_, band_terminals_, terminal_changes_,
+        [&](std::size_t first, std::size_t last, std::vector<TerminalChange>& out) {
           for (std::size_t i = first; i < last; ++i) {
             if (node_values_[i] == graph.node_values[i]) continue;
-            list_node_change(kind, i, graph.node_values[i], node_values_[i], mine);
+            list_node_change(kind, i, graph.node_values[i], node_values_[i], out);
             graph.node_values[i] = node_values_[i];
           }
         },
         parts_threads_);
-    detail::for_each_band(
-        pairs_.size(),
-        [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<EdgeChange>& mine = band_edges_[b];
-          mine.clear();
+    edge_changes_.clear();
+    detail::append_by_bands(
+        pairs_.size(), band_edges_, edge_changes_,
+        [&](std::size_t first, std::size_t last, std::vector<EdgeChange>& out) {
           for (std::size_t e = first; e < last; ++e) {
             if (p[e] == graph.pair_values[e]) continue;
-            list_pair_change(kind, e, graph.pair_values[e], p[e], mine);
+            list_pair_change(kind, e, graph.pair_values[e], p[e], out);
             graph.pair_values[e] = p[e];
           }
         },
         parts_threads_);
-    terminal_changes_.clear();
-    for (const std::vector<TerminalChange>& mine : band_terminals_)
-      terminal_changes_.insert(terminal_changes_.end(), mine.begin(), mine.end());
-    edge_changes_.clear();
-    for (const std::vector<EdgeChange>& mine : band_edges_)
-      edge_changes_.insert(edge_changes_.end(), mine.begin(), mine.end());
     Backend& g = graph.graph;
     if constexpr (PartedMaxFlow<Backend>) {
       g.change_in_parts(terminal_changes_, edge_changes_, parts_threads_);

@@ -253,23 +253,18 @@ class ExpansionSolver {
   template <class Proposal>
   void propose(const Proposal& proposal) {
     const Labeling& labeling = state_.labeling;
-    band_moved_.resize(std::max(band_moved_.size(), detail::band_count(labeling.size())));
-    detail::for_each_band(
-        labeling.size(),
-        [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<VariableIndex>& mine = band_moved_[b];
-          mine.clear();
+    moved_.clear();
+    detail::append_by_bands(
+        labeling.size(), band_moved_, moved_,
+        [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
           for (std::size_t i = first; i < last; ++i) {
             const Label to = proposal(i);
             const bool moves = state_.out[i] == MoveLabel::one && to != labeling[i];
             state_.candidate[i] = moves ? to : labeling[i];
-            if (moves) mine.push_back(static_cast<VariableIndex>(i));
+            if (moves) out.push_back(static_cast<VariableIndex>(i));
           }
         },
         options_.threads);
-    moved_.clear();
-    for (std::size_t b = 0; b < detail::band_count(labeling.size()); ++b)
-      moved_.insert(moved_.end(), band_moved_[b].begin(), band_moved_[b].end());
   }
 
   /// The move to alpha over the variables near alpha (detail/near_moves.hpp), on a graph of

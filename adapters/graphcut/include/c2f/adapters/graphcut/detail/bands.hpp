@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace c2f::detail {
 
@@ -24,5 +25,24 @@ inline constexpr std::size_t kBandSize = 8192;
 void for_each_band(std::size_t count,
                    const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
                    int threads);
+
+/// Runs list(first, last, out) for every band [first, last) of [0, count) by for_each_band,
+/// each band into a list of its own (`lists`, kept between calls for their memory), then
+/// appends the lists to `joined` in band order: the same result for every thread count.
+template <class T, class List>
+void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std::vector<T>& joined,
+                     const List& list, int threads) {
+  const std::size_t bands = band_count(count);
+  if (lists.size() < bands) lists.resize(bands);
+  for_each_band(
+      count,
+      [&](std::size_t b, std::size_t first, std::size_t last) {
+        lists[b].clear();
+        list(first, last, lists[b]);
+      },
+      threads);
+  for (std::size_t b = 0; b < bands; ++b)
+    joined.insert(joined.end(), lists[b].begin(), lists[b].end());
+}
 
 }  // namespace c2f::detail

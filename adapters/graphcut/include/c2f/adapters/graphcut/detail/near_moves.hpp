@@ -190,20 +190,15 @@ class NearMoves {
       std::sort(free_.begin(), free_.end());
       return;
     }
-    band_free_.resize(band_count(x.size()));
-    for_each_band(
-        x.size(),
-        [&](std::size_t b, std::size_t first, std::size_t last) {
-          std::vector<VariableIndex>& mine = band_free_[b];
-          mine.clear();
+    free_.clear();
+    append_by_bands(
+        x.size(), band_lists_, free_,
+        [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
           for (std::size_t v = first; v < last; ++v)
             if (depth_[v] != kUnreached && x[v] != alpha)
-              mine.push_back(static_cast<VariableIndex>(v));
+              out.push_back(static_cast<VariableIndex>(v));
         },
         threads_);
-    free_.clear();
-    for (const std::vector<VariableIndex>& mine : band_free_)
-      free_.insert(free_.end(), mine.begin(), mine.end());
   }
 
   /// Whether the last select() or build() freed v (reached, and not labelled alpha in the x
@@ -232,20 +227,11 @@ class NearMoves {
       out.push_back(v);
   }
 
-  /// Runs visit(first, last, out) for the bands of [0, count) on the threads, each band
-  /// listing what it claims in an `out` of its own, and appends those lists to reached_.
+  /// Runs visit(first, last, out) for the bands of [0, count) on the threads and appends what
+  /// they list to reached_ (append_by_bands).
   template <class Visit>
   void gather(std::size_t count, const Visit& visit) {
-    band_lists_.resize(std::max(band_lists_.size(), band_count(count)));
-    for_each_band(
-        count,
-        [&](std::size_t b, std::size_t first, std::size_t last) {
-          band_lists_[b].clear();
-          visit(first, last, band_lists_[b]);
-        },
-        threads_);
-    for (std::size_t b = 0; b < band_count(count); ++b)
-      reached_.insert(reached_.end(), band_lists_[b].begin(), band_lists_[b].end());
+    append_by_bands(count, band_lists_, reached_, visit, threads_);
   }
 
   const PairwiseEnergy* energy_ = nullptr;
@@ -260,8 +246,7 @@ class NearMoves {
   std::vector<FlowEdge> pairs_;
   // Per band of free variables: its pairs and their p, before they are joined in band order.
   std::vector<std::vector<double>> band_p_;
-  std::vector<std::vector<VariableIndex>> band_free_;
-  std::vector<std::vector<VariableIndex>> band_lists_;  // gather's, per band
+  std::vector<std::vector<VariableIndex>> band_lists_;  // gather's and order_free's, per band
   std::vector<std::vector<FlowEdge>> band_pairs_;
 };
 
