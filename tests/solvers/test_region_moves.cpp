@@ -278,3 +278,48 @@ TEST_CASE("expansion with its max-flow in parts gives the same bits on 1, 2 and 
   options.flow_parts = 256;
   CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("flow_parts must be in [0, 255]"));
 }
+
+TEST_CASE("the default solves in parts only where few edges join different parts",
+          "[expansion][flow-parts]") {
+  Rng rng(5);
+  // 130 wide, 128 high: the 4 parts are bands of 32 rows, joined by 3 x 130 of its edges.
+  const PairwiseEnergy grid = random_grid_energy(rng, 130, 128, 3);
+  const double grid_share = share_of_edges_between_parts(grid, 4);
+  CHECK(grid_share == Approx(3.0 * 130 / grid.edges().size()));
+  // The same number of variables with random edges: about 3/4 of them join different parts.
+  const PairwiseEnergy random = random_energy(rng, 130 * 130, 3, 2 * 130 * 130);
+  const double random_share = share_of_edges_between_parts(random, 4);
+  CHECK(random_share > 0.7);
+  CHECK(random_share < 0.8);
+  // The same count by hand.
+  std::size_t between = 0;
+  for (const Edge& edge : random.edges())
+    between += edge.u * 4 / random.num_variables() != edge.v * 4 / random.num_variables();
+  CHECK(random_share == Approx(static_cast<double>(between) / random.edges().size()));
+  CHECK(share_of_edges_between_parts(random, 1) == 0.0);
+
+  ExpansionOptions options;  // flow_parts 0: the default's choice
+  const ExpansionSolver<> by_default(options);
+  CHECK(by_default.flow_parts(grid) == 4);
+  CHECK(by_default.flow_parts(random) == 1);
+  options.flow_parts = 4;  // asked for: kept on any graph
+  const ExpansionSolver<> asked(options);
+  CHECK(asked.flow_parts(random) == 4);
+  // A random graph's run is the one-part run, bit for bit, and near moves follow the choice.
+  for (const int radius : {0, 1}) {
+    const Labeling start = random_labeling(rng, random.num_variables(), 3);
+    std::vector<std::vector<double>> traces;
+    for (const int parts : {0, 1}) {
+      ExpansionOptions run_options;
+      run_options.flow_parts = parts;
+      run_options.near_radius = radius;
+      ExpansionSolver<> solver(run_options);
+      solver.bind(random, start);
+      std::vector<double> trace;
+      for (int step = 0; step < 12; ++step) trace.push_back(solver.step());
+      traces.push_back(trace);
+    }
+    INFO("near radius " << radius);
+    CHECK(traces[0] == traces[1]);
+  }
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/support/memory_need.hpp"
@@ -22,6 +23,18 @@ std::string ExpansionOptions::validate() const {
   if (threads < 0) return "threads must be >= 0";
   if (flow_parts < 0 || flow_parts > 255) return "flow_parts must be in [0, 255]";
   return {};
+}
+
+double share_of_edges_between_parts(const PairwiseEnergy& energy, std::size_t parts) {
+  const std::span<const Edge> edges = energy.edges();
+  const std::size_t n = energy.num_variables();
+  if (edges.empty() || parts < 2 || n == 0) return 0.0;
+  std::size_t between = 0;
+  for (const Edge& edge : edges) {
+    between += static_cast<std::size_t>(edge.u) * parts / n !=
+               static_cast<std::size_t>(edge.v) * parts / n;
+  }
+  return static_cast<double>(between) / static_cast<double>(edges.size());
 }
 
 bool expansion_moves_submodular(const PairwiseEnergy& energy) {

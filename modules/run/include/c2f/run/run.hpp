@@ -47,12 +47,12 @@ std::size_t regions_of(const Solver& solver) {
   }
 }
 
-/// The parts the max-flow of a solver's moves over every one of n variables is solved in
+/// The parts the max-flow of a solver's moves over every variable of `energy` is solved in
 /// (ExpansionSolver::flow_parts), 1 for a solver that has none.
 template <class Solver>
-std::size_t flow_parts_of(const Solver& solver, std::size_t n) {
-  if constexpr (requires { solver.flow_parts(n); }) {
-    return solver.flow_parts(n);
+std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
+  if constexpr (requires { solver.flow_parts(energy); }) {
+    return solver.flow_parts(energy);
   } else {
     return 1;
   }
@@ -115,7 +115,7 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
     report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
     report.regions = detail::regions_of(detail::original_of(solvers));
     report.solve_threads = detail::solve_threads(spec.original, report.regions);
-    report.flow_parts = detail::flow_parts_of(detail::original_of(solvers), energy.num_variables());
+    report.flow_parts = detail::flow_parts_of(detail::original_of(solvers), energy);
     report.flow_threads = detail::flow_threads(spec.original, report.flow_parts);
     return summary;
   };

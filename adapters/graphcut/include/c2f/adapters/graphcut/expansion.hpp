@@ -96,7 +96,8 @@ class ExpansionSolver {
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
     state_.tally_changes(incidences.get(), options_.threads);
     incidence_ = shift_moves_ ? incidences.get() : nullptr;
-    state_.moves.solve_in_parts(flow_parts(energy.num_variables()), options_.threads);
+    parts_pay_ = flow_parts(energy) > 1;
+    state_.moves.solve_in_parts(flow_parts(energy), options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -169,6 +170,18 @@ class ExpansionSolver {
     const int wanted = options_.flow_parts == 0 ? kDefaultFlowParts : options_.flow_parts;
     return std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(wanted),
                                                           n / detail::kMinRegionVariables));
+  }
+
+  /// The parts the max-flow of a move over every variable of `energy` is solved in:
+  /// flow_parts(n), except that by default (ExpansionOptions::flow_parts = 0) it is one part
+  /// when more than kMaxShareBetweenParts of the energy's edges join variables of different
+  /// parts (on a graph without locality in its variable order the parts' flows leave nearly all
+  /// the work to the stage that joins them). Near moves follow this choice. O(E).
+  [[nodiscard]] std::size_t flow_parts(const PairwiseEnergy& energy) const {
+    const std::size_t parts = flow_parts(energy.num_variables());
+    if (parts < 2 || options_.flow_parts != 0) return parts;
+    const double between = share_of_edges_between_parts(energy, parts);
+    return between <= kMaxShareBetweenParts ? parts : 1;
   }
 
  private:
@@ -278,7 +291,7 @@ class ExpansionSolver {
     moved_.clear();
     if (free.empty()) return;
     near_solver_.bind(free.size(), near_.pairs());
-    near_solver_.solve_in_parts(flow_parts(free.size()), options_.threads);
+    near_solver_.solve_in_parts(parts_pay_ ? flow_parts(free.size()) : 1, options_.threads);
     near_out_.resize(free.size());
     const BinaryMoveStats stats = near_solver_.solve(near_.d(), near_.p(), near_out_);
     last_.unlabeled = stats.unlabeled;
@@ -359,6 +372,7 @@ class ExpansionSolver {
 
   ExpansionOptions options_;
   bool shift_moves_ = false;  // this binding makes shift moves (makes_shift_moves)
+  bool parts_pay_ = false;    // this binding's moves over every variable are solved in parts
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change

@@ -95,7 +95,9 @@ struct ExpansionOptions : MoveOptions {
   /// from the serial one in floating-point rounding, so results depend on this number, never
   /// on `threads`. At most 255, and at least 4096 variables per part (fewer parts on smaller
   /// problems); only our max-flow (MaxFlowKind::dynamic) solves in parts. 0 (the default):
-  /// kDefaultFlowParts with our max-flow, one part with any other backend. 1: one part.
+  /// kDefaultFlowParts with our max-flow, but one part on an energy where more than
+  /// kMaxShareBetweenParts of the edges would join different parts (the choice depends on the
+  /// energy only), and one part with any other backend. 1: one part.
   int flow_parts = 0;
 
   /// Empty when usable, else a message naming the field.
@@ -108,6 +110,17 @@ struct ExpansionOptions : MoveOptions {
 /// Q) and KITTI, with the stereo defaults; on one thread they cost 2-10% (docs/performance.md,
 /// "The solve").
 inline constexpr int kDefaultFlowParts = 4;
+
+/// The largest share of an energy's edges that may join different parts for the default
+/// (ExpansionOptions::flow_parts = 0) to solve in parts. On a 300x400 Potts grid with a share
+/// of its edges rewired at random, 4 parts on 2 threads took 0.72-0.82x one part's time up to
+/// 4.3% of the edges between parts, and 1.15x at 8% (docs/performance.md, "The solve").
+inline constexpr double kMaxShareBetweenParts = 0.05;
+
+/// The share of `energy`'s edges whose ends lie in different parts when its n variables are
+/// cut into `parts` bands of indices (variable i in part i * parts / n, as the move solvers
+/// cut them); 0 without edges. O(E).
+[[nodiscard]] double share_of_edges_between_parts(const PairwiseEnergy& energy, std::size_t parts);
 
 /// Whether every expansion move on `energy` is submodular, so that none needs QPBO: every edge
 /// weight is >= 0 and every pairwise term has cost(a, a) + cost(b, c) <= cost(b, a) + cost(a, c)
