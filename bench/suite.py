@@ -33,7 +33,11 @@ it did not); the default run's final energy relative to flat's; the error at dea
 (grid: pixels more than one label from the truth; segmentation: pixel error; stereo: the
 scene's measure, at c2f-bench-stereo's own deadlines) averaged over 20 deadlines in [0, the
 slower run's convergence time]. Then
-OUT_DIR/suite.md: per family and size, the medians of the tuning and the aside instances.
+OUT_DIR/suite.md: per family and size, the medians of the tuning and the aside instances; then
+per family and set, over the instances where flat took at least a second (the targets' scope),
+the median, the worst instance and the worst from one megapixel against issue 43's targets
+(0.4, 1.1, 0.3). `--summarize A/suite.tsv B/suite.tsv` writes suite.md from earlier runs'
+tables (say, one family re-run) without measuring.
 """
 
 import argparse
@@ -427,7 +431,56 @@ def summary(rows: List[Dict[str, str]]) -> str:
             f"| {family} | {size} | {'aside' if aside == '1' else 'tuning'} | {len(members)} | "
             f"{text(median(r4))} | {text(median(r3))} | {text(max(r4))} | "
             f"{sum(math.isinf(v) for v in r4)} | {text(median(gaps), 6)} | {errors} |")
+    return "\n".join(lines) + "\n\n" + target_summary(rows)
+
+
+# Issue 43's targets: the scope (flat converged in at least this many seconds), each family's
+# median ratio to 1e-4, every instance's, and that of instances of at least a megapixel.
+TARGET_MIN_FLAT_SECONDS = 1.0
+TARGET_MEDIAN, TARGET_WORST, TARGET_MEGAPIXEL = 0.4, 1.1, 0.3
+
+
+def target_summary(rows: List[Dict[str, str]]) -> str:
+    """Per family and set, over the instances where flat took at least a second: how many, the
+    median ratio to 1e-4, the worst instance, the worst of a megapixel or more, each against its
+    target ('ok' or 'missed')."""
+    def verdict(value: float, target: float) -> str:
+        return "-" if math.isnan(value) else ("ok" if value <= target else "missed")
+
+    lines = [f"Against the targets (instances where flat took at least "
+             f"{TARGET_MIN_FLAT_SECONDS:g} s; median <= {TARGET_MEDIAN}, every instance <= "
+             f"{TARGET_WORST}, from 1 MP <= {TARGET_MEGAPIXEL}):", "",
+             "| family | set | n (of) | median to 1e-4 | worst to 1e-4 (instance) | "
+             "worst from 1 MP |", "|" + "---|" * 6]
+    groups: Dict[tuple, List[Dict[str, str]]] = {}
+    for row in rows:
+        groups.setdefault((row["family"], row["aside"]), []).append(row)
+    for (family, aside), members in sorted(groups.items()):
+        scope = [r for r in members if number(r["flat_seconds"]) >= TARGET_MIN_FLAT_SECONDS]
+        ratios = [number(r["ratio_1e4"]) for r in scope]
+        middle = median(ratios)
+        worst = max(scope, key=lambda r: number(r["ratio_1e4"]), default=None)
+        worst_value = number(worst["ratio_1e4"]) if worst else math.nan
+        large = [number(r["ratio_1e4"]) for r in scope if number(r["variables"]) >= 1e6]
+        large_worst = max(large, default=math.nan)
+        lines.append(
+            f"| {family} | {'aside' if aside == '1' else 'tuning'} | {len(scope)} "
+            f"({len(members)}) | {text(middle)} {verdict(middle, TARGET_MEDIAN)} | "
+            f"{text(worst_value)} {verdict(worst_value, TARGET_WORST)}"
+            f"{' (' + worst['instance'] + ')' if worst else ''} | "
+            f"{text(large_worst)} {verdict(large_worst, TARGET_MEGAPIXEL)} |")
     return "\n".join(lines) + "\n"
+
+
+def read_rows(tables: List[Path]) -> List[Dict[str, str]]:
+    """The rows of earlier runs' suite.tsv files, in order (a later row of the same instance
+    replaces an earlier one)."""
+    rows: Dict[str, Dict[str, str]] = {}
+    for table in tables:
+        with open(table, newline="") as file:
+            for row in csv.DictReader(file, delimiter="\t"):
+                rows[row["instance"]] = row
+    return list(rows.values())
 
 
 def main(argv: Optional[List[str]] = None) -> int:
@@ -438,6 +491,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     parser.add_argument("--families", default="grid,general,stereo,segmentation",
                         help="comma-separated families to run")
     parser.add_argument("--only", default="", help="run only instances whose name contains this")
+    parser.add_argument("--skip", default="",
+                        help="run no instance whose name contains this (e.g. opencv-doc/aloe)")
     parser.add_argument("--max-size", type=float, default=32.0,
                         help="grid instances up to this many M pixels x labels (default 32)")
     parser.add_argument("--time-limit", type=float, default=600.0,
@@ -445,7 +500,19 @@ def main(argv: Optional[List[str]] = None) -> int:
     parser.add_argument("--tools", default="build/release/bench",
                         help="folder of c2f-bench-stereo and c2f-bench-segment")
     parser.add_argument("--list", action="store_true", help="list the instances and stop")
+    parser.add_argument("--summarize", nargs="+", metavar="TSV", type=Path,
+                        help="measure nothing: write OUT/suite.md from these suite.tsv files "
+                             "(a later row of an instance replaces an earlier one)")
     args = parser.parse_args(argv)
+    if args.summarize:
+        for table in args.summarize:
+            if not table.is_file():
+                parser.error(f"--summarize: no such file: {table}")
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "suite.md").write_text(summary(read_rows(args.summarize)))
+        print(f"suite: medians in {out / 'suite.md'}")
+        return 0
     if not args.time_limit > 0 or not math.isfinite(args.time_limit):
         parser.error(f"--time-limit: expected a positive number of seconds, got {args.time_limit}")
     families = [f for f in args.families.split(",") if f]
@@ -457,7 +524,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     makers = {"grid": lambda: grid_instances(args), "general": lambda: general_instances(args),
               "stereo": lambda: stereo_instances(args, tools),
               "segmentation": lambda: segmentation_instances(args, tools)}
-    instances = [i for f in families for i in makers[f]() if args.only in i.name]
+    instances = [i for f in families for i in makers[f]()
+                 if args.only in i.name and not (args.skip and args.skip in i.name)]
     if args.list:
         for i in instances:
             print(f"{i.family}\t{i.name}\t{'aside' if is_aside(i.family, i.name) else 'tuning'}")

@@ -1,5 +1,6 @@
-// Hello, c2f: a small denoising energy minimised flat and coarse to fine with the same solver.
-// Copy this file to start: it uses only the core, the driver and one solver.
+// Hello, c2f: a small denoising energy minimised flat and coarse to fine with the same solver,
+// then as the library runs it when nothing is named (the run layer's defaults).
+// Copy this file to start: it uses the core, the driver, one solver and the run layer.
 //   build/release/examples/hello/c2f-hello
 #include <cstdio>
 #include <random>
@@ -10,6 +11,8 @@
 #include "c2f/driver/coarse_to_fine.hpp"        // c2f::driver
 #include "c2f/lift/partition_list.hpp"          // c2f::lift
 #include "c2f/lift/schedule_provider.hpp"
+#include "c2f/run/defaults.hpp"  // c2f::run
+#include "c2f/run/run.hpp"
 
 /// A width x height image of `labels` grey levels (a bright square on a ramp) seen through
 /// noise, as an energy: squared distance to the observed value per pixel and label, plus a
@@ -52,6 +55,16 @@ int main() {
   c2f::ScheduleProvider levels(c2f::Schedule::parse("cp:1,1 cp:2,1 cp:3,1 flat"), {width, height});
   const c2f::Summary summary = c2f::coarse_to_fine(energy, levels, solver, options);
   print("coarse to fine:", summary);
+
+  // The defaults: what c2f-solve and c2f.solve run when nothing is named, the schedule, moves
+  // and rules measured best (docs/results.md, "Defaults"), planned within a memory budget.
+  const c2f::RunDefaults defaults = c2f::pairwise_defaults();
+  c2f::ScheduleProvider default_levels(c2f::Schedule::parse(defaults.grid_schedule),
+                                       {width, height});
+  const c2f::RunReport report = c2f::run(energy, default_levels, defaults.config());
+  print("defaults:", report.summary);
   // A summary's energy is the energy of its labeling on the original problem.
-  return summary.energy == energy.evaluate(summary.labeling) ? 0 : 1;
+  const bool exact = summary.energy == energy.evaluate(summary.labeling) &&
+                     report.summary.energy == energy.evaluate(report.summary.labeling);
+  return exact ? 0 : 1;
 }

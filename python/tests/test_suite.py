@@ -52,3 +52,38 @@ def test_an_unknown_family_is_refused_by_name(suite, capsys):
     with pytest.raises(SystemExit):
         suite.main(["--families", "grid,stero"])
     assert "unknown family 'stero'" in capsys.readouterr().err
+
+
+def test_the_targets_table_counts_instances_where_flat_took_a_second(suite, tmp_path):
+    columns = suite.COLUMNS + ["size"]
+
+    def row(name, aside, variables, flat_seconds, ratio):
+        values = dict.fromkeys(columns, "0")
+        values.update(family="grid", instance=name, aside=str(aside), variables=str(variables),
+                      flat_seconds=str(flat_seconds), ratio_1e4=str(ratio), size="x")
+        return values
+
+    first, second = tmp_path / "a.tsv", tmp_path / "b.tsv"
+    for path, rows in ((first, [row("g/a", 0, 1000, 5.0, 0.5), row("g/b", 0, 1000, 0.5, 3.0),
+                                row("g/c", 0, 2_000_000, 2.0, 0.2), row("g/d", 1, 1000, 4.0, 0.9)]),
+                       (second, [row("g/a", 0, 1000, 5.0, 0.3)])):
+        with open(path, "w", newline="") as file:
+            writer = csv.DictWriter(file, fieldnames=columns, delimiter="\t")
+            writer.writeheader()
+            writer.writerows(rows)
+    out = tmp_path / "out"
+    assert suite.main(["--out", str(out), "--summarize", str(first), str(second)]) == 0
+    table = (out / "suite.md").read_text()
+    # g/b (flat 0.5 s) is out of scope; the second table's g/a (0.3) replaces the first's.
+    assert "| grid | tuning | 2 (3) | 0.25 ok | 0.30 ok (g/a) | 0.20 ok |" in table
+    assert "| grid | aside | 1 (1) | 0.90 missed | 0.90 ok (g/d) | - - |" in table
+    with pytest.raises(SystemExit):
+        suite.main(["--out", str(out), "--summarize", str(tmp_path / "missing.tsv")])
+
+
+def test_only_and_skip_pick_instances_by_name(suite, capsys):
+    assert suite.main(["--families", "general", "--only", "lattice", "--skip", "32L",
+                       "--list"]) == 0
+    names = [line.split("\t")[1] for line in capsys.readouterr().out.splitlines()]
+    assert names and all("lattice" in n and "32L" not in n for n in names)
+    assert len(names) == 4  # 8 and 16 labels, two sizes each
