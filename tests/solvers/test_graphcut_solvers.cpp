@@ -275,7 +275,7 @@ TEST_CASE("a full graph budget evicts only graphs idle since the requesting key'
   bool recycled = false;
   // The key's own graph when it has one, else the shared graph of its kind.
   const auto owns = [&](std::size_t key, GraphKind kind = GraphKind::plain) {
-    graphs.acquire(key, kind, 100, recycled);
+    graphs.acquire(key, kind, 100, recycled, 1);
     return recycled;
   };
   // A repeating order over three keys with room for two: keys 0 and 1 keep their graphs and

@@ -249,6 +249,27 @@ TEST_CASE(
   CHECK_THROWS_WITH(unsolved.resolve(), Catch::Contains("solve() first"));
 }
 
+TEST_CASE("dynamic max-flow: a large copy made on several threads resumes like one made on one",
+          "[maxflow][dynamic][threads]") {
+  // 270k edges: 4.3 MB of residuals, so the copy asks for some of its pages ahead.
+  Rng rng(9);
+  auto problem = random_flow_problem(rng, 20000, 270000);
+  DynamicMaxFlow dynamic;
+  dynamic.build(problem.num_nodes, problem.edges);
+  dynamic.solve(problem.caps);
+  const FlowCapacities before = problem.caps;
+  change_capacities(rng, problem.caps, 0.1, false);
+  DynamicMaxFlow serial(dynamic, 1);
+  resolve_with(serial, before, problem.caps);
+  for (const int threads : {2, 3}) {
+    DynamicMaxFlow copy(dynamic, threads);
+    CHECK(source_set(copy) == source_set(dynamic));
+    resolve_with(copy, before, problem.caps);
+    CHECK(copy.last_solve().augmentations == serial.last_solve().augmentations);
+    CHECK(source_set(copy) == source_set(serial));
+  }
+}
+
 namespace {
 
 /// Part ids of a problem's nodes: `parts` ranges of about equal size (a band layout), or random.

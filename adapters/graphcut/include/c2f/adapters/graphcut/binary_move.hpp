@@ -205,7 +205,8 @@ class BinaryMoveSolver {
 
   /// The graph that solves a move of this key and kind (detail::MoveGraphs), built.
   MoveGraph& graph_for(std::size_t key, GraphKind kind, BinaryMoveStats& stats) {
-    MoveGraph& graph = graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled);
+    MoveGraph& graph =
+        graphs_.acquire(key, kind, graph_bytes(kind), stats.recycled, parts_threads_);
     if (!graph.built) {
       if constexpr (PartedMaxFlow<Backend>) {
         graph.graph.build(graph_nodes(kind), graph_edges(kind), parts_threads_);

@@ -43,6 +43,9 @@ class DynamicMaxFlow {
   DynamicMaxFlow();
   ~DynamicMaxFlow();
   DynamicMaxFlow(const DynamicMaxFlow& other);
+  /// The same copy, its new memory faulted in on up to `threads` threads (0: every core): a
+  /// large graph's copy costs mostly the kernel's zeroing of fresh pages.
+  DynamicMaxFlow(const DynamicMaxFlow& other, int threads);
   DynamicMaxFlow& operator=(const DynamicMaxFlow& other);
   DynamicMaxFlow(DynamicMaxFlow&&) noexcept;
   DynamicMaxFlow& operator=(DynamicMaxFlow&&) noexcept;

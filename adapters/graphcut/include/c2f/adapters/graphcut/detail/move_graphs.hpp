@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,19 @@ struct MoveGraph {
   bool solved = false;  ///< node_values and pair_values hold its last problem
   std::vector<double> node_values, pair_values;
 };
+
+/// A copy of `graph`; a backend that can (DynamicMaxFlow) faults its new memory in on up to
+/// `threads` threads, which is most of what copying a large graph costs.
+template <MaxFlow Backend>
+std::unique_ptr<MoveGraph<Backend>> copy_of(const MoveGraph<Backend>& graph, int threads) {
+  if constexpr (std::is_constructible_v<Backend, const Backend&, int>) {
+    return std::unique_ptr<MoveGraph<Backend>>(
+        new MoveGraph<Backend>{Backend(graph.graph, threads), graph.built, graph.solved,
+                               graph.node_values, graph.pair_values});
+  } else {
+    return std::make_unique<MoveGraph<Backend>>(graph);
+  }
+}
 
 /// One shared graph per kind, and for a reusing backend (ReusingMaxFlow) graphs of their own
 /// for the keys 0..num_keys-1 from their second move on, while those fit in a memory limit.
@@ -75,11 +89,11 @@ class MoveGraphs {
   /// The graph for a move of this key and kind (graph_bytes: what one such graph with its
   /// problem takes). A key with a graph of its own gets it back (recycled = true). A key seen
   /// before without one gets one when it fits, after evicting graphs idle since before its
-  /// previous move if needed: a copy of the graph of this kind solved last. Otherwise, and on
-  /// a key's first move, which has nothing to recycle, the shared graph. The graph may still
-  /// need building (built == false).
+  /// previous move if needed: a copy of the graph of this kind solved last (made on up to
+  /// `threads` threads, copy_of). Otherwise, and on a key's first move, which has nothing to
+  /// recycle, the shared graph. The graph may still need building (built == false).
   MoveGraph<Backend>& acquire(std::size_t key, GraphKind kind, std::size_t graph_bytes,
-                              bool& recycled) {
+                              bool& recycled, int threads) {
     const auto k = static_cast<std::size_t>(kind);
     recycled = false;
     ++clock_;
@@ -94,8 +108,7 @@ class MoveGraphs {
           recycled = true;
         } else if (previous_use > 0 && make_room(graph_bytes, previous_use)) {
           const MoveGraph<Backend>* last = last_graph(kind);
-          mine = last != nullptr ? std::make_unique<MoveGraph<Backend>>(*last)
-                                 : std::make_unique<MoveGraph<Backend>>();
+          mine = last != nullptr ? copy_of(*last, threads) : std::make_unique<MoveGraph<Backend>>();
           own.bytes[k] = graph_bytes;
           owned_bytes_ += graph_bytes;
         }
