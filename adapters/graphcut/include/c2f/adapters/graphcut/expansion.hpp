@@ -96,8 +96,9 @@ class ExpansionSolver {
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
     state_.tally_changes(incidences.get(), options_.threads);
     incidence_ = shift_moves_ ? incidences.get() : nullptr;
-    parts_pay_ = flow_parts(energy) > 1;
-    state_.moves.solve_in_parts(flow_parts(energy), options_.threads);
+    const std::size_t parts = flow_parts(energy);
+    parts_pay_ = parts > 1;
+    state_.moves.solve_in_parts(parts, options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {

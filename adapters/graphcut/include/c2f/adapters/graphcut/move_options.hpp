@@ -113,8 +113,9 @@ inline constexpr int kDefaultFlowParts = 4;
 
 /// The largest share of an energy's edges that may join different parts for the default
 /// (ExpansionOptions::flow_parts = 0) to solve in parts. On a 300x400 Potts grid with a share
-/// of its edges rewired at random, 4 parts on 2 threads took 0.72-0.82x one part's time up to
-/// 4.3% of the edges between parts, and 1.15x at 8% (docs/performance.md, "The solve").
+/// of its edges rewired at random, 4 parts on 2 threads were 1.14-1.44x faster than one part on
+/// one thread up to 4.2% of the edges between parts, 1.01x at 5.7% and 0.83x at 8.0%
+/// (docs/performance.md, "The solve").
 inline constexpr double kMaxShareBetweenParts = 0.05;
 
 /// The share of `energy`'s edges whose ends lie in different parts when its n variables are
