@@ -169,3 +169,64 @@ TEST_CASE("agg and /cc levels build on an energy that is no pixel grid",
   CHECK(*third == connected_components_along_edges(*third, view));  // components along the edges
   CHECK_FALSE(provider.next(energy));
 }
+
+TEST_CASE("agg:R,MAX,SHARE takes the smallest radius whose level keeps at most SHARE",
+          "[lift][aggregated][schedule]") {
+  const Schedule schedule = Schedule::parse("agg:1,4,0.2/cc");
+  CHECK(schedule.to_string() == "agg:1,4,0.2/cc flat");
+  CHECK(schedule.levels[0].partition == LevelPartition{AggregatedLevel{1, 4, 0.2}});
+  CHECK(schedule.levels[0].connected);
+  CHECK_THROWS_WITH(Schedule::parse("agg:2,2,0.1"),
+                    Catch::Contains("'2' must be a whole number >= 3"));
+  CHECK_THROWS_WITH(Schedule::parse("agg:1,3,0"), Catch::Contains("SHARE must be in (0, 1]"));
+  CHECK_THROWS_WITH(Schedule::parse("agg:1,3,1.5"), Catch::Contains("SHARE must be in (0, 1]"));
+  CHECK_THROWS_WITH(Schedule::parse("agg:1,3"), Catch::Contains("expected agg:RADIUS"));
+
+  // On a grid, the share of the level after /cc: between radius 2's and 3's, radius 3.
+  Rng rng(12);
+  const GridShape shape{40, 30};
+  const PairwiseEnergy energy = random_grid_energy(rng, shape.width, shape.height, 6);
+  const LiftingView view = lifting_view(energy);
+  auto on_grid = [&](int radius) {
+    return connected_components(aggregated_best_labels(view, shape, radius), shape);
+  };
+  auto share = [](const DensePartition& p) {
+    return static_cast<double>(p.num_groups()) / static_cast<double>(p.num_variables());
+  };
+  REQUIRE(share(on_grid(1)) > share(on_grid(2)));  // so the share decides the radius
+  REQUIRE(share(on_grid(2)) > share(on_grid(3)));
+  auto first_level = [&](const std::string& text, ScheduleProvider provider) {
+    INFO(text);
+    const auto level = provider.next(energy);
+    REQUIRE(level);
+    return *level;
+  };
+  auto grid_level = [&](const std::string& text) {
+    return first_level(text, ScheduleProvider(Schedule::parse(text), shape));
+  };
+  const std::string between = std::to_string((share(on_grid(2)) + share(on_grid(3))) / 2.0);
+  CHECK(grid_level("agg:1,4," + between + "/cc") == on_grid(3));
+  CHECK(grid_level("agg:1,4,1/cc") == on_grid(1));
+  CHECK(grid_level("agg:1,4,1e-9/cc") == on_grid(4));  // none keeps so few: the widest
+
+  // On a graph, over rounds of neighbours, components along the edges.
+  const PairwiseEnergy graph = random_energy(rng, 300, 5, 360);
+  const LiftingView graph_view = lifting_view(graph);
+  auto on_graph = [&](int radius) {
+    return connected_components_along_edges(aggregated_best_labels(graph_view, radius), graph_view);
+  };
+  int expected = 3;
+  for (int radius = 0; radius < 3; ++radius) {
+    if (share(on_graph(radius)) <= 0.3) {
+      expected = radius;
+      break;
+    }
+  }
+  INFO("shares: " << share(on_graph(0)) << ", " << share(on_graph(1)) << ", " << share(on_graph(2))
+                  << ", " << share(on_graph(3)));
+  REQUIRE(expected > 0);  // radius 0 alone would not tell the rule from a fixed radius
+  ScheduleProvider provider(Schedule::parse("agg:0,3,0.3/cc"));
+  const auto level = provider.next(graph);
+  REQUIRE(level);
+  CHECK(*level == on_graph(expected));
+}

@@ -26,10 +26,32 @@ GridShape LevelBuilder::grid_of(const LevelSpec& spec) const {
 
 DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& view,
                                    const DensePartition* previous) {
+  if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition);
+      aggregated != nullptr && aggregated->max_radius > aggregated->radius) {
+    return aggregated_within_share(spec, *aggregated, view);
+  }
+  return build_one(spec, view, previous);
+}
+
+DensePartition LevelBuilder::build_one(const LevelSpec& spec, const LiftingView& view,
+                                       const DensePartition* previous) {
   DensePartition partition = build_groups(spec, view, previous);
   if (!spec.connected) return partition;
   return shape_ ? connected_components(partition, *shape_)
                 : connected_components_along_edges(partition, view);
+}
+
+DensePartition LevelBuilder::aggregated_within_share(const LevelSpec& spec,
+                                                     const AggregatedLevel& level,
+                                                     const LiftingView& view) {
+  const auto variables = static_cast<double>(view.num_variables);
+  for (int radius = level.radius;; ++radius) {
+    LevelSpec fixed = spec;
+    fixed.partition = AggregatedLevel{radius};
+    DensePartition partition = build_one(fixed, view, nullptr);
+    const double share = static_cast<double>(partition.num_groups()) / variables;
+    if (share <= level.max_share || radius == level.max_radius) return partition;
+  }
 }
 
 DensePartition LevelBuilder::build_groups(const LevelSpec& spec, const LiftingView& view,

@@ -27,7 +27,14 @@ class LevelBuilder {
                        const DensePartition* previous);
 
  private:
-  /// build() before /cc.
+  /// build() of a level with one partition (not a radius that builds itself).
+  DensePartition build_one(const LevelSpec& spec, const LiftingView& view,
+                           const DensePartition* previous);
+  /// build() of agg:R,MAX,SHARE: each radius from R on, until its level keeps at most SHARE of
+  /// the variables as groups or the radius is MAX.
+  DensePartition aggregated_within_share(const LevelSpec& spec, const AggregatedLevel& level,
+                                         const LiftingView& view);
+  /// build_one() before /cc.
   DensePartition build_groups(const LevelSpec& spec, const LiftingView& view,
                               const DensePartition* previous);
   DensePartition colour_passing(const ColourPassingLevel& level, const LiftingView& view);

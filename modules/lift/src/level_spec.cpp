@@ -21,7 +21,9 @@ struct LevelText {
     return "slic:" + std::to_string(l.region_size);
   }
   std::string operator()(const AggregatedLevel& l) const {
-    return "agg:" + std::to_string(l.radius);
+    if (l.max_radius <= l.radius) return "agg:" + std::to_string(l.radius);
+    return "agg:" + std::to_string(l.radius) + "," + std::to_string(l.max_radius) + "," +
+           format_real(l.max_share);
   }
   std::string operator()(const BlockLevel& l) const { return "blocks:" + std::to_string(l.size); }
 };

@@ -82,8 +82,16 @@ LevelSpec parse_level(const std::string& token) {
     if (args.size() != 1) bad(token, "expected slic:SIZE");
     spec.partition = SlicLevel{whole_number(token, args[0], 2)};
   } else if (kind == "agg") {
-    if (args.size() != 1) bad(token, "expected agg:RADIUS");
-    spec.partition = AggregatedLevel{whole_number(token, args[0], 0)};
+    if (args.size() != 1 && args.size() != 3)
+      bad(token, "expected agg:RADIUS or agg:RADIUS,MAX_RADIUS,SHARE");
+    AggregatedLevel level{whole_number(token, args[0], 0)};
+    if (args.size() == 3) {
+      level.max_radius = whole_number(token, args[1], level.radius + 1);
+      level.max_share = number(token, args[2]);
+      if (!(level.max_share > 0.0 && level.max_share <= 1.0))
+        bad(token, "SHARE must be in (0, 1], got '" + printable(args[2]) + "'");
+    }
+    spec.partition = level;
   } else if (kind == "blocks") {
     if (args.size() != 1) bad(token, "expected blocks:SIZE");
     spec.partition = BlockLevel{whole_number(token, args[0], 1)};

@@ -19,7 +19,7 @@ RunConfig RunDefaults::config() const {
 
 RunDefaults pairwise_defaults() {
   RunDefaults defaults;
-  defaults.grid_schedule = "agg:2/cc";
+  defaults.grid_schedule = "agg:2,8,0.15/cc";
   defaults.general_schedule = "agg:2/cc";
   defaults.shift_moves_unless_submodular = true;
   return defaults;

@@ -35,8 +35,14 @@ struct SlicLevel {
 
 /// agg:R: pixels of equal best label after summing unaries over a (2R+1) x (2R+1) window
 /// (aggregated_best_labels.hpp).
+/// agg:R,MAX,SHARE (MAX > R, SHARE in (0, 1]): the radius that builds itself, the smallest
+/// from R to MAX whose level (after /cc when given) keeps at most SHARE of the variables as
+/// groups; MAX when none does. Wider windows give fewer groups where noisy unaries leave many
+/// (e.g. 128 labels).
 struct AggregatedLevel {
   int radius = 1;
+  int max_radius = 0;      ///< above radius: the radius builds itself (else the radius is fixed)
+  double max_share = 1.0;  ///< the groups over the variables a level may keep (when it builds)
   friend bool operator==(const AggregatedLevel&, const AggregatedLevel&) = default;
 };
 

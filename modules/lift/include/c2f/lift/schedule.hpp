@@ -10,6 +10,9 @@
 //   agg:R                pixels of equal best label after summing unaries over a (2R+1) x
 //                        (2R+1) window, or without a grid R times over graph neighbours
 //                        (aggregated_best_labels.hpp)
+//   agg:R,MAX,SHARE      agg with the smallest radius from R to MAX (> R) whose level (after
+//                        /cc when given) keeps at most SHARE of the variables as groups; MAX
+//                        when none does
 //   blocks:S             S x S pixel blocks
 //   auto:F1,F2,...       colour-passing levels whose group counts are closest to the fractions
 //                        F1 < F2 < ... of the number of pixels (alone, optionally + flat)

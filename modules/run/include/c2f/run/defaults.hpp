@@ -32,8 +32,9 @@ struct RunDefaults {
 };
 
 /// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels split into
-/// connected regions (agg:2/cc: unaries summed over 5x5 windows on a grid, over two rounds of
-/// graph neighbours on any other graph);
+/// connected regions (on a grid agg:2,8,0.15/cc: unaries summed over 5x5 windows, or wider ones
+/// up to 17x17 while the level keeps more than 15% of the variables as groups; on any other
+/// graph agg:2/cc, over two rounds of graph neighbours, where wider rounds mix what differs);
 /// whole expansion moves, with shift moves on energies where some expansion move is not
 /// submodular (e.g. truncated quadratic); a coarse level ends after 4 moves without decrease.
 [[nodiscard]] RunDefaults pairwise_defaults();
