@@ -208,6 +208,14 @@ TEST_CASE("agg:R,MAX,SHARE takes the smallest radius whose level keeps at most S
   CHECK(grid_level("agg:1,4," + between + "/cc") == on_grid(3));
   CHECK(grid_level("agg:1,4,1/cc") == on_grid(1));
   CHECK(grid_level("agg:1,4,1e-9/cc") == on_grid(4));  // none keeps so few: the widest
+  // The report names the radius chosen, then the level's text.
+  ScheduleProvider chosen(Schedule::parse("agg:1,4," + between + "/cc"), shape);
+  REQUIRE(chosen.next(energy));
+  CHECK_THAT(chosen.reports()[0].level,
+             Catch::StartsWith("agg:3/cc (agg:1,4,") && Catch::EndsWith("/cc)"));
+  ScheduleProvider fixed(Schedule::parse("agg:1/cc"), shape);
+  REQUIRE(fixed.next(energy));
+  CHECK(fixed.reports()[0].level == "agg:1/cc");
 
   // On a graph, over rounds of neighbours, components along the edges.
   const PairwiseEnergy graph = random_energy(rng, 300, 5, 360);

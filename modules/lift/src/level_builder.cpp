@@ -30,6 +30,7 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
       aggregated != nullptr && aggregated->max_radius > aggregated->radius) {
     return aggregated_within_share(spec, *aggregated, view);
   }
+  last_built_ = spec;
   return build_one(spec, view, previous);
 }
 
@@ -50,7 +51,10 @@ DensePartition LevelBuilder::aggregated_within_share(const LevelSpec& spec,
     fixed.partition = AggregatedLevel{radius};
     DensePartition partition = build_one(fixed, view, nullptr);
     const double share = static_cast<double>(partition.num_groups()) / variables;
-    if (share <= level.max_share || radius == level.max_radius) return partition;
+    if (share <= level.max_share || radius == level.max_radius) {
+      last_built_ = fixed;
+      return partition;
+    }
   }
 }
 

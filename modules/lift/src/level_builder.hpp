@@ -25,6 +25,9 @@ class LevelBuilder {
   /// cannot be built.
   DensePartition build(const LevelSpec& spec, const LiftingView& view,
                        const DensePartition* previous);
+  /// The level the last build() made: its spec, or for agg:R,MAX,SHARE the fixed agg:RADIUS
+  /// it chose (with its /cc).
+  [[nodiscard]] const LevelSpec& last_built() const noexcept { return last_built_; }
 
  private:
   /// build() of a level with one partition (not a radius that builds itself).
@@ -46,6 +49,7 @@ class LevelBuilder {
   std::optional<GridShape> shape_;
   SuperpixelSource superpixels_;
   std::optional<ColourPassing> colour_passing_;
+  LevelSpec last_built_;
 };
 
 }  // namespace c2f::detail

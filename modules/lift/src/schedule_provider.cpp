@@ -48,8 +48,12 @@ std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) 
   const LevelSpec& spec = levels_[position_];
   DensePartition partition = builder_->build(spec, energy, previous_ ? &*previous_ : nullptr);
   ++position_;
+  // A level that chose its own radius reports the one it chose, then its text.
+  const LevelSpec& built = builder_->last_built();
+  std::string text = built.to_string();
+  if (!(built == spec)) text += " (" + spec.to_string() + ")";
   reports_.push_back(
-      {spec.to_string(), partition.num_groups(),
+      {std::move(text), partition.num_groups(),
        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
   previous_ = partition;
   return partition;

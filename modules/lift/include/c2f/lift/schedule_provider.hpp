@@ -20,7 +20,9 @@ namespace c2f {
 
 /// What one level of a schedule produced.
 struct LevelReport {
-  std::string level;       ///< the level in schedule syntax
+  /// The level in schedule syntax; for agg:R,MAX,SHARE the agg:RADIUS it chose, then its text
+  /// in brackets, e.g. "agg:5/cc (agg:2,8,0.15/cc)".
+  std::string level;
   std::size_t num_groups;  ///< groups of the partition produced
   double seconds;          ///< time to build it
 };
