@@ -102,8 +102,8 @@ def solve(
         The pairwise energy (``Energy.grid``, ``Energy.general``, ``stereo_energy``, ...).
     schedule : str or sequence of ndarray, optional
         The coarse levels, coarsest first. None: the defaults' (coarse to fine:
-        'agg:2,8,0.15/cc' on a grid energy, 'agg:2/cc' on any other; see ``defaults``). 'flat' (the original problem
-        only, with the same moves: the fair baseline), 'paper' (colour
+        'agg:2,8,0.15/cc' on a grid energy, 'agg:2/cc' on any other; see ``defaults``).
+        'flat' (the original problem only, with the same moves: the fair baseline), 'paper' (colour
         passing CP(1,1) CP(2,1) CP(3,1)), any schedule text of the library ('cp:1,1 cp:2,1',
         'auto:0.01,0.1', 'agg:2/cc', and on a grid energy also 'blocks:4', 'threshold:0.5',
         ...), or a list of your own partitions, each an integer array of group ids of every
