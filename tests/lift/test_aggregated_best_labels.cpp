@@ -196,14 +196,12 @@ TEST_CASE("agg:R,MAX,SHARE takes the smallest radius whose level keeps at most S
   };
   REQUIRE(share(on_grid(1)) > share(on_grid(2)));  // so the share decides the radius
   REQUIRE(share(on_grid(2)) > share(on_grid(3)));
-  auto first_level = [&](const std::string& text, ScheduleProvider provider) {
+  auto grid_level = [&](const std::string& text) {
     INFO(text);
+    ScheduleProvider provider(Schedule::parse(text), shape);
     const auto level = provider.next(energy);
     REQUIRE(level);
     return *level;
-  };
-  auto grid_level = [&](const std::string& text) {
-    return first_level(text, ScheduleProvider(Schedule::parse(text), shape));
   };
   const std::string between = std::to_string((share(on_grid(2)) + share(on_grid(3))) / 2.0);
   CHECK(grid_level("agg:1,4," + between + "/cc") == on_grid(3));

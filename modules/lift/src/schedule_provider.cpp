@@ -51,7 +51,7 @@ std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) 
   // A level that chose its own radius reports the one it chose, then its text.
   const LevelSpec& built = builder_->last_built();
   std::string text = built.to_string();
-  if (!(built == spec)) text += " (" + spec.to_string() + ")";
+  if (built != spec) text += " (" + spec.to_string() + ")";
   reports_.push_back(
       {std::move(text), partition.num_groups(),
        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
