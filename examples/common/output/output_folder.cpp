@@ -1,5 +1,6 @@
 #include "output_folder.hpp"
 
+#include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -247,6 +248,32 @@ bool OutputFolder::recorded(const fs::path& folder, const std::string& name,
          S_ISREG(entry.st_mode) && found->second.count(entry.st_ino) > 0;
 }
 
+void OutputFolder::remove_old_version(const std::optional<FileRecord>& old_record) const {
+  // Entries made in the old version (now at staging_) while this run carried it over, or while
+  // it is being removed, are moved into the new one; the rest (the marker, what this run
+  // replaced, what the new version holds already) are removed one by one. Only an empty folder
+  // can be removed, so a file another process makes in it after a pass is found by the next.
+  std::error_code error;
+  for (int pass = 0; pass < kRemovalPasses; ++pass) {
+    for (const auto& entry : fs::directory_iterator(staging_, error)) {
+      const std::string name = entry.path().filename().string();
+      const bool replaced = owns(name) && recorded(staging_, name, old_record);
+      if (name != FolderClaim::kMarker && !replaced &&
+          !fs::exists(fs::symlink_status(folder_ / name, error))) {
+        fs::rename(entry.path(), folder_ / name, error);
+        if (!error) continue;
+      }
+      if (entry.is_directory(error) && !entry.is_symlink(error)) {
+        remove_tree(entry.path());
+      } else {
+        ::unlinkat(AT_FDCWD, entry.path().c_str(), 0);
+      }
+    }
+    if (::rmdir(staging_.c_str()) == 0 || errno != ENOTEMPTY) break;
+  }
+  remove_tree(staging_);  // what is left when the passes ran out (or nothing)
+}
+
 bool OutputFolder::keeps(const std::string& name, const std::optional<FileRecord>& record) const {
   return name != FolderClaim::kMarker && !(owns(name) && recorded(folder_, name, record));
 }
@@ -282,23 +309,7 @@ std::vector<std::string> OutputFolder::commit() {
   claim_->write_record(during);
   swap_in(staging_, folder_, retired_);
   committed_ = true;  // from here on the new version is in place
-  // Entries made in the old version (now at staging_) while this run carried it over are moved
-  // into the new one.
-  std::error_code error;
-  for (int sweep = 0; sweep < 5; ++sweep) {
-    bool moved = false;
-    for (const auto& entry : fs::directory_iterator(staging_, error)) {
-      const std::string name = entry.path().filename().string();
-      const bool replaced = owns(name) && recorded(staging_, name, old_record);
-      if (name == FolderClaim::kMarker || replaced ||
-          fs::exists(fs::symlink_status(folder_ / name, error)))
-        continue;
-      fs::rename(entry.path(), folder_ / name, error);
-      moved = moved || !error;
-    }
-    if (!moved) break;
-  }
-  remove_tree(staging_);  // the old version
+  remove_old_version(old_record);
   claim_->write_record(record);
   for (StagedFile& file : elsewhere_) file.commit();
   if (sharing_ == Sharing::by_files) claim_.reset();  // the next run sharing the folder may commit

@@ -86,12 +86,18 @@ class OutputFolder {
   [[nodiscard]] bool owns(const std::string& name) const;
 
  private:
+  static constexpr int kRemovalPasses = 100;
+
   /// Whether the entry `name` of `folder` is a file the tool's runs wrote (by `record`).
   [[nodiscard]] bool recorded(const std::filesystem::path& folder, const std::string& name,
                               const std::optional<FileRecord>& record) const;
   /// Whether the old folder's entry `name` goes into the new version (not the marker, not a
   /// file of an earlier run that this run replaces).
   [[nodiscard]] bool keeps(const std::string& name, const std::optional<FileRecord>& record) const;
+  /// After the exchange: empties and removes the old version at staging_, moving into the new
+  /// version what processes made in the old one meanwhile (an entry the new one lacks), pass
+  /// by pass until the folder is empty when it is removed (at most kRemovalPasses).
+  void remove_old_version(const std::optional<FileRecord>& old_record) const;
   void take_claim(bool wait);
   void remove_stale_siblings() const;
   void refuse_taken_names(const std::vector<std::string>& names,
