@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <barrier>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -42,6 +44,49 @@ TEST_CASE("parallel_for runs every index once on at most the threads asked for",
       0, [](std::size_t) { FAIL("no task to run"); }, 4);
   CHECK(c2f::resolved_threads(3) == 3);
   CHECK(c2f::resolved_threads(0) >= 1);
+}
+
+TEST_CASE("parallel_for starts each thread on its own run of indices, the caller on the first",
+          "[core][threads]") {
+  // Every task waits at a barrier for one task of the other thread, so neither thread can take
+  // an index of the other's run: thread w of 2 runs the w-th half, in order.
+  for (int call = 0; call < 3; ++call) {  // the same split in every call
+    std::barrier meet(2);
+    std::vector<std::thread::id> ran_on(6);
+    parallel_for(
+        ran_on.size(),
+        [&](std::size_t i) {
+          ran_on[i] = std::this_thread::get_id();
+          meet.arrive_and_wait();
+        },
+        2);
+    INFO("call " << call);
+    const std::thread::id caller = std::this_thread::get_id();
+    CHECK(ran_on[0] == caller);
+    CHECK(ran_on[1] == caller);
+    CHECK(ran_on[2] == caller);
+    CHECK(ran_on[3] != caller);
+    CHECK(ran_on[4] == ran_on[3]);
+    CHECK(ran_on[5] == ran_on[3]);
+  }
+  // A thread done with its run takes the rest of the other's: one slow task does not hold the
+  // indices after it.
+  std::atomic<int> after_slow{0};
+  bool others_ran = false;
+  parallel_for(
+      8,
+      [&](std::size_t i) {
+        if (i == 4) {  // the helper's first: waits (10 s at most) for the other thread to run 5-7
+          const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+          while (after_slow.load() < 3 && std::chrono::steady_clock::now() < give_up)
+            std::this_thread::yield();
+          others_ran = after_slow.load() == 3;
+        } else if (i > 4) {
+          ++after_slow;
+        }
+      },
+      2);
+  CHECK(others_ran);
 }
 
 TEST_CASE("parallel_for rethrows the lowest failing index after every task ran",

@@ -447,7 +447,20 @@ TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on 
         const FlowCapacities before = caps;
         change_capacities(changes, caps, round % 2 == 0 ? 0.05 : 0.5, true);
         const auto [terminals, edges] = changes_between(before, caps);
-        dynamic.change_in_parts(terminals, edges, threads);
+        const std::span<const TerminalChange> all_terminals(terminals);
+        const std::span<const EdgeChange> all_edges(edges);
+        const std::size_t half_terminals = terminals.size() / 2, half_edges = edges.size() / 2;
+        if (in_parts && round == 3) {  // in two calls before the re-solve
+          dynamic.change_in_parts(all_terminals.first(half_terminals), all_edges.first(half_edges),
+                                  threads);
+          dynamic.change_in_parts(all_terminals.subspan(half_terminals),
+                                  all_edges.subspan(half_edges), threads);
+        } else if (in_parts && round == 4 && !terminals.empty()) {  // the last one on its own
+          dynamic.change_in_parts(all_terminals.first(terminals.size() - 1), edges, threads);
+          dynamic.change_terminal(terminals.back().node, terminals.back().delta);
+        } else {
+          dynamic.change_in_parts(terminals, edges, threads);
+        }
         dynamic.resolve_in_parts(threads);
         CHECK(dynamic.last_solve().changed_nodes == terminals.size());
         CHECK(dynamic.last_solve().changed_edges == edges.size());
@@ -475,4 +488,18 @@ TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on 
   dynamic.solve(problem.caps);
   CHECK_THROWS_WITH(dynamic.change_in_parts(bad_node, {}, 1), Catch::Contains("node 10 of 10"));
   CHECK_THROWS_WITH(dynamic.change_in_parts({}, bad_edge, 1), Catch::Contains("edge 20 of 20"));
+  // In parts the changes are checked as they are sorted by part, and nothing changes either.
+  dynamic.cut_into_parts(node_parts(rng, problem.num_nodes, 3, false));
+  dynamic.solve_cut_in_parts(problem.caps, 2);
+  const std::vector<char> solved = source_set(dynamic);
+  const std::vector<TerminalChange> good_then_bad{{0, 5.0}, {10, 1.0}};
+  const std::vector<EdgeChange> good_edge{{0, 1.0, 0.0}};
+  CHECK_THROWS_WITH(dynamic.change_in_parts(good_then_bad, good_edge, 2),
+                    Catch::Contains("node 10 of 10"));
+  CHECK_THROWS_WITH(dynamic.change_in_parts(std::span(good_then_bad).first(1), bad_edge, 2),
+                    Catch::Contains("edge 20 of 20"));
+  dynamic.resolve_in_parts(2);
+  CHECK(dynamic.last_solve().changed_nodes == 0);
+  CHECK(dynamic.last_solve().changed_edges == 0);
+  CHECK(source_set(dynamic) == solved);
 }

@@ -7,6 +7,7 @@
 #endif
 #include <limits>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,6 +52,8 @@ struct Topology {
 /// the edges joining two parts. Fixed with the topology, shared by copies.
 struct Parts {
   std::vector<std::uint8_t> of_node;
+  /// Per edge: the part of both its nodes, or `count` when it joins two parts.
+  std::vector<std::uint16_t> of_edge;
   std::vector<std::size_t> between;
   std::size_t count = 1;
   /// The nodes of part k, ascending: members[first_member[k] .. first_member[k + 1]).
@@ -60,6 +63,71 @@ struct Parts {
 
 /// Nodes or edges per task when a pass over them is split among threads (parallel_for_chunks).
 constexpr std::size_t kPassChunk = 16384;
+
+/// A bucket sort_by_part's bucket_of returns for an entry that names no node or edge.
+constexpr std::size_t kOutOfRange = std::numeric_limits<std::size_t>::max();
+
+/// The positions of a list's entries sorted by bucket, each bucket's in list order.
+struct ByPart {
+  std::vector<std::uint32_t> positions;  ///< bucket b's: [first[b], first[b + 1])
+  std::vector<std::size_t> first;
+  bool out_of_range = false;  ///< some entry's bucket was kOutOfRange (then nothing is sorted)
+
+  [[nodiscard]] std::span<const std::uint32_t> of(std::size_t bucket) const {
+    return std::span(positions).subspan(first[bucket], first[bucket + 1] - first[bucket]);
+  }
+};
+
+/// Sorts positions 0 .. size - 1 of a list into `buckets` buckets, entry c into bucket_of(c):
+/// each chunk of kPassChunk entries counts its buckets and later places its entries, both on up
+/// to `threads` threads, so every bucket keeps list order and the result does not depend on
+/// the threads.
+template <class BucketOf>
+ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucket_of, int threads) {
+  ByPart sorted;
+  const std::size_t chunks = (size + kPassChunk - 1) / kPassChunk;
+  std::vector<std::uint16_t> bucket(size);           // up to 256 parts and the bucket between them
+  std::vector<std::size_t> at(chunks * buckets, 0);  // chunk c's count, then its next place, of b
+  std::vector<std::uint8_t> bad(chunks, 0);
+  parallel_for_chunks(
+      size, kPassChunk,
+      [&](std::size_t chunk, std::size_t first, std::size_t last) {
+        std::size_t* count = at.data() + chunk * buckets;
+        for (std::size_t c = first; c < last; ++c) {
+          const std::size_t b = bucket_of(c);
+          if (b >= buckets) {
+            bad[chunk] = 1;
+            continue;
+          }
+          bucket[c] = static_cast<std::uint16_t>(b);
+          ++count[b];
+        }
+      },
+      threads);
+  sorted.out_of_range = std::find(bad.begin(), bad.end(), 1) != bad.end();
+  sorted.first.assign(buckets + 1, 0);
+  if (sorted.out_of_range) return sorted;
+  std::size_t place = 0;  // bucket by bucket, chunk by chunk
+  for (std::size_t b = 0; b < buckets; ++b) {
+    sorted.first[b] = place;
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+      const std::size_t count = at[chunk * buckets + b];
+      at[chunk * buckets + b] = place;
+      place += count;
+    }
+  }
+  sorted.first[buckets] = place;
+  sorted.positions.resize(size);
+  parallel_for_chunks(
+      size, kPassChunk,
+      [&](std::size_t chunk, std::size_t first, std::size_t last) {
+        std::size_t* next = at.data() + chunk * buckets;
+        for (std::size_t c = first; c < last; ++c)
+          sorted.positions[next[bucket[c]]++] = static_cast<std::uint32_t>(c);
+      },
+      threads);
+  return sorted;
+}
 
 /// Fills `to` with `from`. When the block is large, asks the kernel for transparent huge pages
 /// and, on up to `threads` threads at once, for the pages themselves (MADV_POPULATE_WRITE, by
@@ -426,6 +494,10 @@ struct DynamicMaxFlow::Impl {
   Index time = 0;
   Index first_active = kNone, last_active = kNone;
   std::vector<Index> orphans, touched;
+  /// Where change_in_parts listed each part's nodes in `touched`: part k's are
+  /// touched[touched_by_part[k], touched_by_part[k + 1]); those before the first and after the
+  /// last are of any part. Empty when `touched` is in no such order.
+  std::vector<std::size_t> touched_by_part;
   DynamicSolveStats stats;
 
   Impl() = default;
@@ -442,6 +514,7 @@ struct DynamicMaxFlow::Impl {
         last_active(other.last_active),
         orphans(other.orphans),
         touched(other.touched),
+        touched_by_part(other.touched_by_part),
         stats(other.stats) {
     assign_huge(nodes, other.nodes, threads);
     assign_huge(residual, other.residual, threads);
@@ -540,12 +613,23 @@ struct DynamicMaxFlow::Impl {
     });
   }
 
-  /// resolve() in parts (search_in_parts): each part repairs its touched nodes.
+  /// resolve() in parts (search_in_parts): each part repairs its touched nodes, in the order of
+  /// `touched` (the run change_in_parts listed for it, and the rest picked out by part).
   void resolve_in_parts(int threads) {
     const std::vector<std::uint8_t>& part = parts->of_node;
+    const auto repair_of_part = [&](Search& s, std::size_t k, std::size_t first, std::size_t last) {
+      for (std::size_t m = first; m < last; ++m)
+        if (part[touched[m]] == k) s.repair(touched[m]);
+    };
     search_in_parts(threads, [&](Search& s, std::size_t k) {
-      for (const Index i : touched)
-        if (part[i] == k) s.repair(i);
+      if (touched_by_part.empty()) {
+        repair_of_part(s, k, 0, touched.size());
+        return;
+      }
+      repair_of_part(s, k, 0, touched_by_part.front());
+      for (std::size_t m = touched_by_part[k]; m < touched_by_part[k + 1]; ++m)
+        s.repair(touched[m]);
+      repair_of_part(s, k, touched_by_part.back(), touched.size());
     });
   }
 
@@ -611,6 +695,7 @@ struct DynamicMaxFlow::Impl {
       stats.augmentations += own.augmentations;
     }
     touched.clear();  // the parts repaired them
+    touched_by_part.clear();
     for (std::size_t k = 0; k < between.size(); ++k) {
       const Index forward = t.forward_arc[between[k]];
       residual[forward] = set_aside[2 * k];
@@ -680,36 +765,64 @@ struct DynamicMaxFlow::Impl {
     ++stats.changed_edges;
   }
 
-  /// DynamicMaxFlow::change_in_parts with more than one part: part k's changes on one thread,
-  /// its touched nodes listed apart and then joined in part order, then the edges between.
+  /// DynamicMaxFlow::change_in_parts with more than one part. The changes are sorted by part
+  /// first (by chunks on the threads, each part's in their order); then part k's changes are
+  /// made on one thread, its touched nodes listed apart and joined in part order, and then the
+  /// changes of edges between parts in their order. Throws std::out_of_range, changing
+  /// nothing, when a change names a node or edge the graph does not have.
   void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,
                        int threads) {
-    const Topology& t = *topology;
     const std::vector<std::uint8_t>& part = parts->of_node;
-    const auto ends = [&](const EdgeChange& change) {
-      const Index forward = t.forward_arc[change.edge];
-      return std::pair{part[t.head[t.sister[forward]]], part[t.head[forward]]};
-    };
+    const std::size_t between_parts = parts->count;  // Parts::of_edge of edges between parts
+    const ByPart terminals_by_part = sort_by_part(
+        terminals.size(), parts->count + 1,
+        [&](std::size_t c) -> std::size_t {
+          const FlowNode node = terminals[c].node;
+          return node < num_nodes ? part[node] : kOutOfRange;
+        },
+        threads);
+    if (terminals_by_part.out_of_range) {
+      for (const TerminalChange& change : terminals) {
+        if (change.node >= num_nodes) {
+          throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
+                                  std::to_string(change.node) + " of " + std::to_string(num_nodes));
+        }
+      }
+    }
+    const ByPart edges_by_part = sort_by_part(
+        edges.size(), parts->count + 1,
+        [&](std::size_t c) -> std::size_t {
+          const std::size_t e = edges[c].edge;
+          return e < num_edges ? parts->of_edge[e] : kOutOfRange;
+        },
+        threads);
+    if (edges_by_part.out_of_range) {
+      for (const EdgeChange& change : edges) {
+        if (change.edge >= num_edges) {
+          throw std::out_of_range("DynamicMaxFlow::change_in_parts: edge " +
+                                  std::to_string(change.edge) + " of " + std::to_string(num_edges));
+        }
+      }
+    }
+    touched_by_part.clear();  // ordered below only when nothing was touched before
+    const bool ordered = touched.empty();
     std::vector<std::vector<Index>> listed(parts->count);
     parallel_for(
         parts->count,
         [&](std::size_t k) {
-          for (const TerminalChange& change : terminals)
-            if (part[change.node] == k) change_terminal(change.node, change.delta, listed[k]);
-          for (const EdgeChange& change : edges) {
-            const auto [from, to] = ends(change);
-            if (from == k && to == k)
-              change_edge(change.edge, change.delta_forward, change.delta_backward, listed[k]);
-          }
+          for (const std::uint32_t c : terminals_by_part.of(k))
+            change_terminal(terminals[c].node, terminals[c].delta, listed[k]);
+          for (const std::uint32_t c : edges_by_part.of(k))
+            change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, listed[k]);
         },
         threads);
-    for (const std::vector<Index>& list : listed)
+    if (ordered) touched_by_part.push_back(touched.size());
+    for (const std::vector<Index>& list : listed) {
       touched.insert(touched.end(), list.begin(), list.end());
-    for (const EdgeChange& change : edges) {
-      const auto [from, to] = ends(change);
-      if (from != to)
-        change_edge(change.edge, change.delta_forward, change.delta_backward, touched);
+      if (ordered) touched_by_part.push_back(touched.size());
     }
+    for (const std::uint32_t c : edges_by_part.of(between_parts))
+      change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, touched);
     stats.changed_nodes += terminals.size();
     stats.changed_edges += edges.size();
   }
@@ -719,6 +832,7 @@ struct DynamicMaxFlow::Impl {
     Search s = search();
     for (const Index i : touched) s.repair(i);
     touched.clear();
+    touched_by_part.clear();
   }
 
   /// The search with the graph's own queue, orphans and clock.
@@ -772,10 +886,24 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
   m.num_edges = edges.size();
   m.topology = std::move(topology);
   m.parts.reset();
-  m.nodes.assign(num_nodes, Node{});
-  m.residual.assign(2 * edges.size(), 0.0);
+  // Fresh states by chunks on the threads (a near move builds a graph per move).
+  m.nodes.resize(num_nodes);
+  m.residual.resize(2 * edges.size());
+  parallel_for_chunks(
+      num_nodes, kPassChunk,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        std::fill(m.nodes.begin() + first, m.nodes.begin() + last, Node{});
+      },
+      threads);
+  parallel_for_chunks(
+      m.residual.size(), kPassChunk,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        std::fill(m.residual.begin() + first, m.residual.begin() + last, 0.0);
+      },
+      threads);
   m.orphans.clear();
   m.touched.clear();
+  m.touched_by_part.clear();
   m.orphans.reserve(num_nodes);
   m.touched.reserve(num_nodes);
   m.has_flow = false;
@@ -818,12 +946,19 @@ void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part, int thre
   // The edges between parts, found by chunks and joined in order.
   const Topology& t = *m.topology;
   std::vector<std::vector<std::size_t>> found((m.num_edges + kPassChunk - 1) / kPassChunk);
+  parts->of_edge.resize(m.num_edges);
   parallel_for_chunks(
       m.num_edges, kPassChunk,
       [&](std::size_t c, std::size_t first, std::size_t last) {
         for (std::size_t e = first; e < last; ++e) {
           const Index forward = t.forward_arc[e];
-          if (part[t.head[forward]] != part[t.head[t.sister[forward]]]) found[c].push_back(e);
+          const std::uint8_t from = part[t.head[t.sister[forward]]];
+          if (part[t.head[forward]] == from) {
+            parts->of_edge[e] = from;
+          } else {
+            parts->of_edge[e] = static_cast<std::uint16_t>(parts->count);
+            found[c].push_back(e);
+          }
         }
       },
       threads);
@@ -866,6 +1001,11 @@ void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
                                      std::span<const EdgeChange> edges, int threads) {
   Impl& m = *impl_;
   if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_in_parts: solve() first");
+  if (num_parts() > 1) {
+    if (m.touched.empty()) m.stats = {};
+    m.change_in_parts(terminals, edges, threads);  // checks the changes as it sorts them
+    return;
+  }
   for (const TerminalChange& change : terminals) {
     if (change.node >= m.num_nodes) {
       throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
@@ -879,10 +1019,6 @@ void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
     }
   }
   if (m.touched.empty()) m.stats = {};
-  if (num_parts() > 1) {
-    m.change_in_parts(terminals, edges, threads);
-    return;
-  }
   for (const TerminalChange& change : terminals) m.change_terminal(change.node, change.delta);
   for (const EdgeChange& change : edges)
     m.change_edge(change.edge, change.delta_forward, change.delta_backward);

@@ -21,9 +21,12 @@ namespace c2f {
 [[nodiscard]] unsigned resolved_threads(int requested) noexcept;
 
 /// Calls task(i) for every i < count, each once, on min(resolved_threads(threads), count)
-/// threads (the calling thread among them; 1: all in the calling thread, in order). Tasks are
-/// handed out in index order. Rethrows the exception of the lowest index that threw, after
-/// every thread has ended (the other tasks still run).
+/// threads (the calling thread among them; 1: all in the calling thread, in order). Thread w of
+/// W starts on the w-th of W equal runs of indices, in order, and the calling thread is thread
+/// 0, so calls over the same ranges of data find each range on the thread (and in the caches)
+/// that last touched it; a thread done with its run takes what is left of the others'.
+/// Rethrows the exception of the lowest index that threw, after every thread has ended (the
+/// other tasks still run).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads);
 
 /// Calls task(c, first, last) for every chunk c = [first, last) of [0, count), cut into chunks

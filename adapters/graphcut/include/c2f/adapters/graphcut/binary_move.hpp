@@ -126,33 +126,45 @@ class BinaryMoveSolver {
       throw std::invalid_argument("BinaryMoveSolver::solve: a coefficient is not finite");
     const auto start = std::chrono::steady_clock::now();
     if (submodular) {
-      node_values_.assign(d.begin(), d.end());
+      copy_node_values(d);
       MoveGraph& graph = graph_for(key, GraphKind::plain, stats);
       solve_graph(graph, GraphKind::plain, p);
-      for (std::size_t i = 0; i < num_nodes_; ++i)
-        out[i] = in_source_[i] ? MoveLabel::zero : MoveLabel::one;
+      detail::for_each_band(
+          num_nodes_,
+          [&](std::size_t, std::size_t first, std::size_t last) {
+            for (std::size_t i = first; i < last; ++i)
+              out[i] = in_source_[i] ? MoveLabel::zero : MoveLabel::one;
+          },
+          parts_threads_);
     } else {
       stats.used_qpbo = true;
       // p (1 - b_u) b_v with p < 0 equals p (1 - b_u) + |p| (1 - b_u) (1 - b_v): the first part
       // moves |p| onto b_u's coefficient (plus a constant), the second is submodular in
       // (b_u, b'_v).
-      node_values_.assign(d.begin(), d.end());
+      copy_node_values(d);
       for (std::size_t e = 0; e < pairs_.size(); ++e) {
         if (p[e] < 0.0) node_values_[pairs_[e].from] -= p[e];
       }
       MoveGraph& graph = graph_for(key, GraphKind::qpbo, stats);
       solve_graph(graph, GraphKind::qpbo, p);
       const std::size_t n = num_nodes_;
-      for (std::size_t i = 0; i < n; ++i) {
-        const bool node_source = in_source_[i] != 0;
-        const bool complement_source = in_source_[n + i] != 0;
-        if (node_source == complement_source) {
-          out[i] = MoveLabel::unlabeled;
-          ++stats.unlabeled;
-        } else {
-          out[i] = node_source ? MoveLabel::zero : MoveLabel::one;
-        }
-      }
+      band_counts_.assign(detail::band_count(n), 0);
+      detail::for_each_band(
+          n,
+          [&](std::size_t b, std::size_t first, std::size_t last) {
+            for (std::size_t i = first; i < last; ++i) {
+              const bool node_source = in_source_[i] != 0;
+              const bool complement_source = in_source_[n + i] != 0;
+              if (node_source == complement_source) {
+                out[i] = MoveLabel::unlabeled;
+                ++band_counts_[b];
+              } else {
+                out[i] = node_source ? MoveLabel::zero : MoveLabel::one;
+              }
+            }
+          },
+          parts_threads_);
+      for (const std::size_t count : band_counts_) stats.unlabeled += count;
     }
     stats.flow_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -163,6 +175,17 @@ class BinaryMoveSolver {
   static constexpr std::size_t kNoKey = detail::MoveGraphs<Backend>::kNoKey;
   using GraphKind = detail::GraphKind;
   using MoveGraph = detail::MoveGraph<Backend>;
+
+  /// node_values_ = d, by bands on the threads the parts are solved on.
+  void copy_node_values(std::span<const double> d) {
+    node_values_.resize(d.size());
+    detail::for_each_band(
+        d.size(),
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          std::copy(d.begin() + first, d.begin() + last, node_values_.begin() + first);
+        },
+        parts_threads_);
+  }
 
   /// Whether every p[e] >= 0, and whether every d[i] and p[e] is finite; by bands on the
   /// threads the parts are solved on.
@@ -445,6 +468,7 @@ class BinaryMoveSolver {
   FlowCapacities qpbo_caps_;
   std::vector<char> in_source_;           // the last solve's source set
   std::vector<std::uint8_t> band_flags_;  // scan_coefficients' findings per band
+  std::vector<std::size_t> band_counts_;  // unlabelled variables per band of a QPBO move
   // change_graph's changes, per band and then joined.
   std::vector<std::vector<TerminalChange>> band_terminals_;
   std::vector<std::vector<EdgeChange>> band_edges_;

@@ -61,9 +61,10 @@ class DynamicMaxFlow {
   /// need only the cut.
   void solve_cut(const FlowCapacities& caps);
   /// Cuts the nodes into parts for the solves in parts: node i in part[i] (parts 0, 1, ... up
-  /// to 255). Kept, with the list of edges between parts, until the next build(); copies share
-  /// it. Throws std::invalid_argument when part does not have one entry per node,
-  /// std::logic_error before build(). Finds the edges between parts on up to `threads` threads.
+  /// to 255). Kept, with each edge's part and the list of edges between parts, until the next
+  /// build(); copies share it. Throws std::invalid_argument when part does not have one entry
+  /// per node, std::logic_error before build(). Finds the edges' parts on up to `threads`
+  /// threads.
   void cut_into_parts(std::span<const std::uint8_t> part, int threads = 1);
   /// The parts cut_into_parts made (1 before it).
   [[nodiscard]] std::size_t num_parts() const noexcept;
@@ -82,8 +83,9 @@ class DynamicMaxFlow {
   void change_edge(std::size_t edge, double delta_forward, double delta_backward);
   /// After a solve: every change of `terminals` (change_terminal), then of `edges`
   /// (change_edge). With one part, one at a time in that order. Cut into parts, on up to
-  /// `threads` threads: each part's terminal changes and the edge changes inside it on one
-  /// thread, in their order, then the edge changes between parts in theirs. The changed graph
+  /// `threads` threads: the changes sorted by part (by chunks), then each part's terminal
+  /// changes and the edge changes inside it on one thread, in their order, then the edge
+  /// changes between parts in theirs. The changed graph
   /// and the next resolve_in_parts depend on the parts, never on `threads`. Throws
   /// std::out_of_range for a node or edge the graph does not have (nothing changed then).
   void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,

@@ -10,29 +10,32 @@
 
 namespace c2f::detail {
 
-/// The indices of one band: [0, count) is cut into bands of this many (the last shorter).
+/// The indices of one band: [0, count) is cut into bands of this many (the last shorter),
+/// unless a pass asks for another size.
 inline constexpr std::size_t kBandSize = 8192;
 
-/// The number of bands of [0, count).
-[[nodiscard]] constexpr std::size_t band_count(std::size_t count) noexcept {
-  return (count + kBandSize - 1) / kBandSize;
+/// The number of bands of `band` indices in [0, count).
+[[nodiscard]] constexpr std::size_t band_count(std::size_t count,
+                                               std::size_t band = kBandSize) noexcept {
+  return (count + band - 1) / band;
 }
 
-/// Calls task(b, first, last) for every band b = [first, last) of [0, count), each once, on up
-/// to `threads` threads (0: the machine's cores); a single band or one thread runs in order on
-/// the calling thread (parallel_for_chunks). Rethrows the exception of the lowest band that
-/// threw after all have ended.
+/// Calls task(b, first, last) for every band b = [first, last) of `band` indices of [0, count),
+/// each once, on up to `threads` threads (0: the machine's cores); a single band or one thread
+/// runs in order on the calling thread (parallel_for_chunks). Rethrows the exception of the
+/// lowest band that threw after all have ended.
 void for_each_band(std::size_t count,
                    const std::function<void(std::size_t, std::size_t, std::size_t)>& task,
-                   int threads);
+                   int threads, std::size_t band = kBandSize);
 
-/// Runs list(first, last, out) for every band [first, last) of [0, count) by for_each_band,
-/// each band into a list of its own (`lists`, kept between calls for their memory), then
-/// appends the lists to `joined` in band order: the same result for every thread count.
+/// Runs list(first, last, out) for every band [first, last) of `band` indices of [0, count) by
+/// for_each_band, each band into a list of its own (`lists`, kept between calls for their
+/// memory), then appends the lists to `joined` in band order: the same result for every thread
+/// count.
 template <class T, class List>
 void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std::vector<T>& joined,
-                     const List& list, int threads) {
-  const std::size_t bands = band_count(count);
+                     const List& list, int threads, std::size_t band = kBandSize) {
+  const std::size_t bands = band_count(count, band);
   if (lists.size() < bands) lists.resize(bands);
   for_each_band(
       count,
@@ -40,7 +43,7 @@ void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std:
         lists[b].clear();
         list(first, last, lists[b]);
       },
-      threads);
+      threads, band);
   for (std::size_t b = 0; b < bands; ++b)
     joined.insert(joined.end(), lists[b].begin(), lists[b].end());
 }

@@ -169,12 +169,13 @@ class NearMoves {
     std::size_t level_begin = 0;  // reached_[level_begin, end): the last level reached
     for (int depth = 1; depth <= radius_; ++depth) {
       const std::size_t level_end = reached_.size();
-      gather(level_end - level_begin,
-             [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
-               for (std::size_t k = level_begin + first; k < level_begin + last; ++k)
-                 for (const Incidence& inc : incidence_->of(reached_[k]))
-                   claim(inc.other, depth, out);
-             });
+      gather(
+          level_end - level_begin,
+          [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
+            for (std::size_t k = level_begin + first; k < level_begin + last; ++k)
+              for (const Incidence& inc : incidence_->of(reached_[k])) claim(inc.other, depth, out);
+          },
+          kLevelBand);
       level_begin = level_end;
     }
     free_.clear();
@@ -214,6 +215,9 @@ class NearMoves {
 
  private:
   static constexpr int kUnreached = -1;
+  /// Variables of one breadth-first level per band: a level is often a few thousand variables,
+  /// which bands of kBandSize would leave to one thread.
+  static constexpr std::size_t kLevelBand = 1024;
   /// order_free sorts when fewer than one variable in this many is free.
   static constexpr std::size_t kSortBelow = 16;
 
@@ -227,11 +231,11 @@ class NearMoves {
       out.push_back(v);
   }
 
-  /// Runs visit(first, last, out) for the bands of [0, count) on the threads and appends what
-  /// they list to reached_ (append_by_bands).
+  /// Runs visit(first, last, out) for the bands of `band` indices of [0, count) on the threads
+  /// and appends what they list to reached_ (append_by_bands).
   template <class Visit>
-  void gather(std::size_t count, const Visit& visit) {
-    append_by_bands(count, band_lists_, reached_, visit, threads_);
+  void gather(std::size_t count, const Visit& visit, std::size_t band = kBandSize) {
+    append_by_bands(count, band_lists_, reached_, visit, threads_, band);
   }
 
   const PairwiseEnergy* energy_ = nullptr;
