@@ -492,12 +492,14 @@ TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on 
   dynamic.cut_into_parts(node_parts(rng, problem.num_nodes, 3, false));
   dynamic.solve_cut_in_parts(problem.caps, 2);
   const std::vector<char> solved = source_set(dynamic);
+  const std::size_t augmentations = dynamic.last_solve().augmentations;
   const std::vector<TerminalChange> good_then_bad{{0, 5.0}, {10, 1.0}};
   const std::vector<EdgeChange> good_edge{{0, 1.0, 0.0}};
   CHECK_THROWS_WITH(dynamic.change_in_parts(good_then_bad, good_edge, 2),
                     Catch::Contains("node 10 of 10"));
   CHECK_THROWS_WITH(dynamic.change_in_parts(std::span(good_then_bad).first(1), bad_edge, 2),
                     Catch::Contains("edge 20 of 20"));
+  CHECK(dynamic.last_solve().augmentations == augmentations);  // the solve's, still
   dynamic.resolve_in_parts(2);
   CHECK(dynamic.last_solve().changed_nodes == 0);
   CHECK(dynamic.last_solve().changed_edges == 0);

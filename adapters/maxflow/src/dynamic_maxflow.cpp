@@ -804,7 +804,8 @@ struct DynamicMaxFlow::Impl {
         }
       }
     }
-    touched_by_part.clear();  // ordered below only when nothing was touched before
+    if (touched.empty()) stats = {};  // the first change since the last solve
+    touched_by_part.clear();          // ordered below only when nothing was touched before
     const bool ordered = touched.empty();
     std::vector<std::vector<Index>> listed(parts->count);
     parallel_for(
@@ -1002,7 +1003,6 @@ void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
   Impl& m = *impl_;
   if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_in_parts: solve() first");
   if (num_parts() > 1) {
-    if (m.touched.empty()) m.stats = {};
     m.change_in_parts(terminals, edges, threads);  // checks the changes as it sorts them
     return;
   }
