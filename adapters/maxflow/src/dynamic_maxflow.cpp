@@ -936,14 +936,11 @@ void DynamicMaxFlow::cut_into_parts(std::span<const std::uint8_t> part, int thre
   auto parts = std::make_shared<Parts>();
   parts->of_node.assign(part.begin(), part.end());
   parts->count = part.empty() ? 1 : std::size_t{*std::max_element(part.begin(), part.end())} + 1;
-  parts->first_member.assign(parts->count + 1, 0);
-  for (const std::uint8_t k : part) ++parts->first_member[std::size_t{k} + 1];
-  for (std::size_t k = 0; k < parts->count; ++k)
-    parts->first_member[k + 1] += parts->first_member[k];
-  parts->members.resize(part.size());
-  std::vector<std::size_t> next(parts->first_member.begin(), parts->first_member.end() - 1);
-  for (std::size_t i = 0; i < part.size(); ++i)
-    parts->members[next[part[i]]++] = static_cast<std::uint32_t>(i);
+  // Each part's nodes, ascending: the nodes sorted by part, by chunks on the threads.
+  ByPart members = sort_by_part(
+      part.size(), parts->count, [&](std::size_t i) -> std::size_t { return part[i]; }, threads);
+  parts->members = std::move(members.positions);
+  parts->first_member = std::move(members.first);
   // The edges between parts, found by chunks and joined in order.
   const Topology& t = *m.topology;
   std::vector<std::vector<std::size_t>> found((m.num_edges + kPassChunk - 1) / kPassChunk);

@@ -245,8 +245,13 @@ class BinaryMoveSolver {
   /// Each node's part for solve_in_parts: node i in part i * parts / n, node n + i (QPBO) with i.
   [[nodiscard]] std::vector<std::uint8_t> node_parts(GraphKind kind) const {
     std::vector<std::uint8_t> part(graph_nodes(kind));
-    for (std::size_t i = 0; i < num_nodes_; ++i)
-      part[i] = static_cast<std::uint8_t>(i * parts_ / num_nodes_);
+    detail::for_each_band(
+        num_nodes_,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t i = first; i < last; ++i)
+            part[i] = static_cast<std::uint8_t>(i * parts_ / num_nodes_);
+        },
+        parts_threads_);
     if (kind == GraphKind::qpbo)
       std::copy(part.begin(), part.begin() + num_nodes_, part.begin() + num_nodes_);
     return part;
