@@ -765,6 +765,24 @@ struct DynamicMaxFlow::Impl {
     ++stats.changed_edges;
   }
 
+  /// Throws std::out_of_range naming the first terminal change, then the first edge change, that
+  /// names a node or edge the graph does not have.
+  void check_changes(std::span<const TerminalChange> terminals,
+                     std::span<const EdgeChange> edges) const {
+    for (const TerminalChange& change : terminals) {
+      if (change.node >= num_nodes) {
+        throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
+                                std::to_string(change.node) + " of " + std::to_string(num_nodes));
+      }
+    }
+    for (const EdgeChange& change : edges) {
+      if (change.edge >= num_edges) {
+        throw std::out_of_range("DynamicMaxFlow::change_in_parts: edge " +
+                                std::to_string(change.edge) + " of " + std::to_string(num_edges));
+      }
+    }
+  }
+
   /// DynamicMaxFlow::change_in_parts with more than one part. The changes are sorted by part
   /// first (by chunks on the threads, each part's in their order); then part k's changes are
   /// made on one thread, its touched nodes listed apart and joined in part order, and then the
@@ -781,14 +799,7 @@ struct DynamicMaxFlow::Impl {
           return node < num_nodes ? part[node] : kOutOfRange;
         },
         threads);
-    if (terminals_by_part.out_of_range) {
-      for (const TerminalChange& change : terminals) {
-        if (change.node >= num_nodes) {
-          throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
-                                  std::to_string(change.node) + " of " + std::to_string(num_nodes));
-        }
-      }
-    }
+    if (terminals_by_part.out_of_range) check_changes(terminals, {});
     const ByPart edges_by_part = sort_by_part(
         edges.size(), parts->count + 1,
         [&](std::size_t c) -> std::size_t {
@@ -796,14 +807,7 @@ struct DynamicMaxFlow::Impl {
           return e < num_edges ? parts->of_edge[e] : kOutOfRange;
         },
         threads);
-    if (edges_by_part.out_of_range) {
-      for (const EdgeChange& change : edges) {
-        if (change.edge >= num_edges) {
-          throw std::out_of_range("DynamicMaxFlow::change_in_parts: edge " +
-                                  std::to_string(change.edge) + " of " + std::to_string(num_edges));
-        }
-      }
-    }
+    if (edges_by_part.out_of_range) check_changes({}, edges);
     if (touched.empty()) stats = {};  // the first change since the last solve
     touched_by_part.clear();          // ordered below only when nothing was touched before
     const bool ordered = touched.empty();
@@ -1003,18 +1007,7 @@ void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
     m.change_in_parts(terminals, edges, threads);  // checks the changes as it sorts them
     return;
   }
-  for (const TerminalChange& change : terminals) {
-    if (change.node >= m.num_nodes) {
-      throw std::out_of_range("DynamicMaxFlow::change_in_parts: node " +
-                              std::to_string(change.node) + " of " + std::to_string(m.num_nodes));
-    }
-  }
-  for (const EdgeChange& change : edges) {
-    if (change.edge >= m.num_edges) {
-      throw std::out_of_range("DynamicMaxFlow::change_in_parts: edge " +
-                              std::to_string(change.edge) + " of " + std::to_string(m.num_edges));
-    }
-  }
+  m.check_changes(terminals, edges);
   if (m.touched.empty()) m.stats = {};
   for (const TerminalChange& change : terminals) m.change_terminal(change.node, change.delta);
   for (const EdgeChange& change : edges)
