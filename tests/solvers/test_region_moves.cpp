@@ -323,3 +323,46 @@ TEST_CASE("the default solves in parts only where few edges join different parts
     CHECK(traces[0] == traces[1]);
   }
 }
+
+TEST_CASE("the default takes the most parts that keep few edges between them",
+          "[expansion][flow-parts]") {
+  Rng rng(8);
+  // A 130 x 128 grid (4 parts: bands of 32 rows) with 3000 more edges, each from the first
+  // band to the second: with 4 parts they join different parts, with 2 parts (bands of 64
+  // rows) the same one, as the neighbours of a coarse level's large groups do.
+  const PairwiseEnergy grid = random_grid_energy(rng, 130, 128, 3);
+  std::vector<Edge> edges(grid.edges().begin(), grid.edges().end());
+  std::uniform_int_distribution<VariableIndex> first_band(0, 32 * 130 - 1);
+  std::uniform_real_distribution<double> weight(0.0, 3.0);
+  for (int k = 0; k < 3000; ++k) {
+    const VariableIndex u = first_band(rng);
+    edges.push_back(Edge{u, u + 32 * 130, weight(rng), 0});
+  }
+  const std::size_t n = grid.num_variables();
+  std::vector<double> unaries(n * 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (Label l = 0; l < 3; ++l) unaries[i * 3 + static_cast<std::size_t>(l)] = grid.unary(i, l);
+  }
+  const PairwiseEnergy crossed(n, 3, std::move(unaries),
+                               std::vector<PairwiseTerm>(grid.terms().begin(), grid.terms().end()),
+                               std::move(edges));
+  REQUIRE(share_of_edges_between_parts(crossed, 4) > kMaxShareBetweenParts);
+  REQUIRE(share_of_edges_between_parts(crossed, 3) > kMaxShareBetweenParts);
+  REQUIRE(share_of_edges_between_parts(crossed, 2) <= kMaxShareBetweenParts);
+  const ExpansionSolver<> by_default{ExpansionOptions{}};
+  CHECK(by_default.flow_parts(crossed) == 2);
+  CHECK(by_default.flow_parts(grid) == 4);
+  // The default's run is the run asked for 2 parts, bit for bit.
+  const Labeling start = random_labeling(rng, n, 3);
+  std::vector<std::vector<double>> traces;
+  for (const int parts : {0, 2}) {
+    ExpansionOptions options;
+    options.flow_parts = parts;
+    ExpansionSolver<> solver(options);
+    solver.bind(crossed, start);
+    std::vector<double> trace;
+    for (int step = 0; step < 9; ++step) trace.push_back(solver.step());
+    traces.push_back(trace);
+  }
+  CHECK(traces[0] == traces[1]);
+}

@@ -188,17 +188,38 @@ void place_arcs(Topology& t, std::size_t num_nodes, std::span<const FlowEdge> ed
         }
       },
       threads);
-  t.first_arc.assign(num_nodes + 1, 0);
-  Index offset = 0;
-  for (std::size_t i = 0; i < num_nodes; ++i) {
-    t.first_arc[i] = offset;
-    for (std::size_t r = 0; r < ranges; ++r) {
-      const Index count = next[r][i];
-      next[r][i] = offset;
-      offset += count;
-    }
-  }
-  t.first_arc[num_nodes] = offset;
+  // Node i's arcs begin after those of the nodes before it; range r's after those of ranges
+  // before r at i. By chunks of nodes: each chunk's arc count, then the counts summed in chunk
+  // order, then each chunk's offsets from its own start.
+  t.first_arc.resize(num_nodes + 1);
+  const std::size_t chunks = (num_nodes + kPassChunk - 1) / kPassChunk;
+  std::vector<Index> chunk_start(chunks + 1, 0);
+  parallel_for_chunks(
+      num_nodes, kPassChunk,
+      [&](std::size_t c, std::size_t first, std::size_t last) {
+        Index count = 0;
+        for (std::size_t i = first; i < last; ++i) {
+          for (std::size_t r = 0; r < ranges; ++r) count += next[r][i];
+        }
+        chunk_start[c + 1] = count;
+      },
+      threads);
+  for (std::size_t c = 0; c < chunks; ++c) chunk_start[c + 1] += chunk_start[c];
+  parallel_for_chunks(
+      num_nodes, kPassChunk,
+      [&](std::size_t c, std::size_t first, std::size_t last) {
+        Index offset = chunk_start[c];
+        for (std::size_t i = first; i < last; ++i) {
+          t.first_arc[i] = offset;
+          for (std::size_t r = 0; r < ranges; ++r) {
+            const Index count = next[r][i];
+            next[r][i] = offset;
+            offset += count;
+          }
+        }
+      },
+      threads);
+  t.first_arc[num_nodes] = chunk_start[chunks];
   t.head.resize(2 * edges.size());
   t.sister.resize(2 * edges.size());
   t.forward_arc.resize(edges.size());
@@ -653,7 +674,7 @@ struct DynamicMaxFlow::Impl {
       set_aside.push_back(residual[backward]);
       residual[forward] = residual[backward] = 0.0;
     }
-    struct PartSearch {
+    struct alignas(kCacheLineBytes) PartSearch {  // written by its part's thread only
       Index time = 0, first_active = kNone, last_active = kNone;
       std::vector<Index> orphans;
       std::size_t augmentations = 0;
@@ -811,18 +832,20 @@ struct DynamicMaxFlow::Impl {
     if (touched.empty()) stats = {};  // the first change since the last solve
     touched_by_part.clear();          // ordered below only when nothing was touched before
     const bool ordered = touched.empty();
-    std::vector<std::vector<Index>> listed(parts->count);
+    std::vector<OnOwnLine<std::vector<Index>>> listed(parts->count);
     parallel_for(
         parts->count,
         [&](std::size_t k) {
+          std::vector<Index>& list = listed[k].value;
           for (const std::uint32_t c : terminals_by_part.of(k))
-            change_terminal(terminals[c].node, terminals[c].delta, listed[k]);
+            change_terminal(terminals[c].node, terminals[c].delta, list);
           for (const std::uint32_t c : edges_by_part.of(k))
-            change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, listed[k]);
+            change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, list);
         },
         threads);
     if (ordered) touched_by_part.push_back(touched.size());
-    for (const std::vector<Index>& list : listed) {
+    for (const OnOwnLine<std::vector<Index>>& own : listed) {
+      const std::vector<Index>& list = own.value;
       touched.insert(touched.end(), list.begin(), list.end());
       if (ordered) touched_by_part.push_back(touched.size());
     }

@@ -148,7 +148,7 @@ void run_with_helpers(std::size_t helpers, const std::function<void(std::size_t)
 
 /// The indices one worker of parallel_for owns, [next, end), taken from the front by it and,
 /// once their own are done, by the others. A cache line each, so claims do not collide.
-struct alignas(64) OwnedIndices {
+struct alignas(kCacheLineBytes) OwnedIndices {
   std::atomic<std::size_t> next;
   std::size_t end;
 };

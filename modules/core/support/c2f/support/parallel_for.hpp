@@ -20,6 +20,18 @@ namespace c2f {
 /// (std::thread::hardware_concurrency, at least 1).
 [[nodiscard]] unsigned resolved_threads(int requested) noexcept;
 
+/// The bytes of a cache line on the machines c2f targets (x86-64, AArch64's common cores).
+inline constexpr std::size_t kCacheLineBytes = 64;
+
+/// A value on cache lines of its own. Tasks running at once that each write their own element
+/// of an array (a max-flow part's search state, a part's list of touched nodes) would otherwise
+/// write the same line when the elements are small, and each write would take the line from
+/// the other core.
+template <class T>
+struct alignas(kCacheLineBytes) OnOwnLine {
+  T value{};
+};
+
 /// Calls task(i) for every i < count, each once, on min(resolved_threads(threads), count)
 /// threads (the calling thread among them; 1: all in the calling thread, in order). Thread w of
 /// W starts on the w-th of W equal runs of indices, in order, and the calling thread is thread

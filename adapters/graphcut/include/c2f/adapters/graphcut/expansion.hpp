@@ -96,9 +96,8 @@ class ExpansionSolver {
     state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
     state_.tally_changes(incidences.get(), options_.threads);
     incidence_ = shift_moves_ ? incidences.get() : nullptr;
-    const std::size_t parts = flow_parts(energy);
-    parts_pay_ = parts > 1;
-    state_.moves.solve_in_parts(parts, options_.threads);
+    parts_ = flow_parts(energy);
+    state_.moves.solve_in_parts(parts_, options_.threads);
     std::vector<Label> labels(static_cast<std::size_t>(energy.num_labels()));
     for (std::size_t l = 0; l < labels.size(); ++l) labels[l] = static_cast<Label>(l);
     if (options_.order == VisitOrder::frequency) {
@@ -174,15 +173,19 @@ class ExpansionSolver {
   }
 
   /// The parts the max-flow of a move over every variable of `energy` is solved in:
-  /// flow_parts(n), except that by default (ExpansionOptions::flow_parts = 0) it is one part
-  /// when more than kMaxShareBetweenParts of the energy's edges join variables of different
-  /// parts (on a graph without locality in its variable order the parts' flows leave nearly all
-  /// the work to the stage that joins them). Near moves follow this choice. O(E).
+  /// flow_parts(n), except that by default (ExpansionOptions::flow_parts = 0) it is the most
+  /// parts up to flow_parts(n) for which at most kMaxShareBetweenParts of the energy's edges join
+  /// variables of different parts, one when there are none (on a graph without locality in its
+  /// variable order the parts' flows leave nearly all the work to the stage that joins them; a
+  /// coarse level, whose large groups have neighbours in many rows, often passes with 2 parts
+  /// and not with 4). Near moves use at most as many. O(E) per count tried.
   [[nodiscard]] std::size_t flow_parts(const PairwiseEnergy& energy) const {
     const std::size_t parts = flow_parts(energy.num_variables());
     if (parts < 2 || options_.flow_parts != 0) return parts;
-    const double between = share_of_edges_between_parts(energy, parts);
-    return between <= kMaxShareBetweenParts ? parts : 1;
+    for (std::size_t count = parts; count >= 2; --count) {
+      if (share_of_edges_between_parts(energy, count) <= kMaxShareBetweenParts) return count;
+    }
+    return 1;
   }
 
  private:
@@ -292,7 +295,7 @@ class ExpansionSolver {
     moved_.clear();
     if (free.empty()) return;
     near_solver_.bind(free.size(), near_.pairs());
-    near_solver_.solve_in_parts(parts_pay_ ? flow_parts(free.size()) : 1, options_.threads);
+    near_solver_.solve_in_parts(std::min(parts_, flow_parts(free.size())), options_.threads);
     near_out_.resize(free.size());
     const BinaryMoveStats stats = near_solver_.solve(near_.d(), near_.p(), near_out_);
     last_.unlabeled = stats.unlabeled;
@@ -373,7 +376,7 @@ class ExpansionSolver {
 
   ExpansionOptions options_;
   bool shift_moves_ = false;  // this binding makes shift moves (makes_shift_moves)
-  bool parts_pay_ = false;    // this binding's moves over every variable are solved in parts
+  std::size_t parts_ = 1;     // the parts of this binding's moves over every variable
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
   std::vector<VariableIndex> moved_;  // the variables the last move proposed to change

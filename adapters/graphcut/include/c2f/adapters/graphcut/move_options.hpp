@@ -95,9 +95,9 @@ struct ExpansionOptions : MoveOptions {
   /// from the serial one in floating-point rounding, so results depend on this number, never
   /// on `threads`. At most 255, and at least 4096 variables per part (fewer parts on smaller
   /// problems); only our max-flow (MaxFlowKind::dynamic) solves in parts. 0 (the default):
-  /// kDefaultFlowParts with our max-flow, but one part on an energy where more than
-  /// kMaxShareBetweenParts of the edges would join different parts (the choice depends on the
-  /// energy only), and one part with any other backend. 1: one part.
+  /// with our max-flow, the most parts up to kDefaultFlowParts for which at most
+  /// kMaxShareBetweenParts of the energy's edges join different parts, else one (the choice
+  /// depends on the energy only), and one part with any other backend. 1: one part.
   int flow_parts = 0;
 
   /// Empty when usable, else a message naming the field.

@@ -4,6 +4,7 @@
 // writes only its own outputs, so results are the same for every thread count. Installed only
 // because the solver templates include it.
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -30,8 +31,8 @@ void for_each_band(std::size_t count,
 
 /// Runs list(first, last, out) for every band [first, last) of `band` indices of [0, count) by
 /// for_each_band, each band into a list of its own (`lists`, kept between calls for their
-/// memory), then appends the lists to `joined` in band order: the same result for every thread
-/// count.
+/// memory), then appends the lists to `joined` in band order (copied on the threads when they
+/// hold kBandSize entries or more): the same result for every thread count.
 template <class T, class List>
 void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std::vector<T>& joined,
                      const List& list, int threads, std::size_t band = kBandSize) {
@@ -44,8 +45,26 @@ void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std:
         list(first, last, lists[b]);
       },
       threads, band);
-  for (std::size_t b = 0; b < bands; ++b)
-    joined.insert(joined.end(), lists[b].begin(), lists[b].end());
+  // Each band's list copied to its place on the threads when there is much to copy.
+  std::size_t total = joined.size();
+  std::vector<std::size_t> place(bands);
+  for (std::size_t b = 0; b < bands; ++b) {
+    place[b] = total;
+    total += lists[b].size();
+  }
+  if (total - joined.size() < kBandSize) {
+    for (std::size_t b = 0; b < bands; ++b)
+      joined.insert(joined.end(), lists[b].begin(), lists[b].end());
+    return;
+  }
+  joined.resize(total);
+  for_each_band(
+      bands,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b)
+          std::copy(lists[b].begin(), lists[b].end(), joined.begin() + place[b]);
+      },
+      threads, 1);
 }
 
 }  // namespace c2f::detail
