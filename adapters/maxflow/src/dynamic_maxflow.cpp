@@ -10,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -25,27 +26,58 @@ constexpr Index kTerminal = kNone - 1;                      // parent is the tre
 
 enum Tree : std::uint8_t { kFree = 0, kSourceTree = 1, kSinkTree = 2 };
 
+/// The allocator of Buffer: construct() without a value default-initialises, so resize() leaves
+/// trivial elements unwritten.
+template <class T>
+struct DefaultInitAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInitAllocator<U>;
+  };
+  DefaultInitAllocator() = default;
+  template <class U>
+  explicit DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* at) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(at)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* at, Args&&... args) {
+    ::new (static_cast<void*>(at)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// An array of trivial elements that resize() does not write: the graph's arrays are sized on
+/// one thread and then written by chunks on several (a serial zeroing first would double the
+/// writes and run on one thread).
+template <class T>
+using Buffer = std::vector<T, DefaultInitAllocator<T>>;
+
 /// One node's flow state. `excess` is the residual terminal capacity: > 0 from the source,
 /// < 0 to the sink. `parent` is the arc from the node to its parent in its search tree.
+/// Trivial, so that a Buffer of nodes is sized without writing them; kFreshNode is a node of a
+/// graph just built.
 struct Node {
-  double excess = 0.0;
-  Index parent = kNone;
-  Index next_active = kNone;  ///< kNone: not in the active queue; the last one points to itself
-  Index stamp = 0;            ///< when `distance` was last known to be exact
-  Index distance = 0;         ///< arcs to the terminal at time `stamp`
-  Tree tree = kFree;
-  bool touched = false;  ///< in the list of nodes a dynamic update changed
+  double excess;
+  Index parent;
+  Index next_active;  ///< kNone: not in the active queue; the last one points to itself
+  Index stamp;        ///< when `distance` was last known to be exact
+  Index distance;     ///< arcs to the terminal at time `stamp`
+  Tree tree;
+  bool touched;  ///< in the list of nodes a dynamic update changed
 };
+static_assert(std::is_trivially_default_constructible_v<Node>);
+constexpr Node kFreshNode{0.0, kNone, kNone, 0, 0, kFree, false};
 
 /// What never changes after build(): the arcs sorted by tail, each with its head and its
 /// reverse. Copies of a graph (recycled per-label graphs) share one Topology and own only their
 /// flow state (nodes and residuals): a TSGO QPBO move graph at 171k pixels (342k nodes, 1.37M
 /// edges) costs 33 MB per copy instead of 60 MB.
 struct Topology {
-  std::vector<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
-  std::vector<Index> head;         ///< per arc
-  std::vector<Index> sister;       ///< per arc: the reverse arc
-  std::vector<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
+  Buffer<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
+  Buffer<Index> head;         ///< per arc
+  Buffer<Index> sister;       ///< per arc: the reverse arc
+  Buffer<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
 };
 
 /// A cut of a graph's nodes into parts (DynamicMaxFlow::cut_into_parts): each node's part and
@@ -57,7 +89,7 @@ struct Parts {
   std::vector<std::size_t> between;
   std::size_t count = 1;
   /// The nodes of part k, ascending: members[first_member[k] .. first_member[k + 1]).
-  std::vector<std::uint32_t> members;
+  Buffer<std::uint32_t> members;
   std::vector<std::size_t> first_member;
 };
 
@@ -69,7 +101,7 @@ constexpr std::size_t kOutOfRange = std::numeric_limits<std::size_t>::max();
 
 /// The positions of a list's entries sorted by bucket, each bucket's in list order.
 struct ByPart {
-  std::vector<std::uint32_t> positions;  ///< bucket b's: [first[b], first[b + 1])
+  Buffer<std::uint32_t> positions;  ///< bucket b's: [first[b], first[b + 1])
   std::vector<std::size_t> first;
   bool out_of_range = false;  ///< some entry's bucket was kOutOfRange (then nothing is sorted)
 
@@ -86,7 +118,7 @@ template <class BucketOf>
 ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucket_of, int threads) {
   ByPart sorted;
   const std::size_t chunks = (size + kPassChunk - 1) / kPassChunk;
-  std::vector<std::uint16_t> bucket(size);           // up to 256 parts and the bucket between them
+  Buffer<std::uint16_t> bucket(size);                // up to 256 parts and the bucket between them
   std::vector<std::size_t> at(chunks * buckets, 0);  // chunk c's count, then its next place, of b
   std::vector<std::uint8_t> bad(chunks, 0);
   parallel_for_chunks(
@@ -129,14 +161,15 @@ ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucke
   return sorted;
 }
 
-/// Fills `to` with `from`. When the block is large, asks the kernel for transparent huge pages
-/// and, on up to `threads` threads at once, for the pages themselves (MADV_POPULATE_WRITE, by
-/// ranges of 2 MiB): a graph of many megabytes otherwise costs a page fault per page as one
-/// thread first writes it, and the kernel's zeroing of those pages dominates copying it (22% of
-/// a flat whole-move run on a 480x640 grid of 32 labels). Both are requests: pages the kernel
-/// does not give ahead are faulted in by the copy, as without them.
+/// Fills `to` with `from`, by chunks on up to `threads` threads. When the block is large, asks
+/// the kernel for transparent huge pages and, on up to `threads` threads at once, for the pages
+/// themselves (MADV_POPULATE_WRITE, by ranges of 2 MiB): a graph of many megabytes otherwise
+/// costs a page fault per page as one thread first writes it, and the kernel's zeroing of those
+/// pages dominates copying it (22% of a flat whole-move run on a 480x640 grid of 32 labels).
+/// Both are requests: pages the kernel does not give ahead are faulted in by the copy, as
+/// without them.
 template <class T>
-void assign_huge(std::vector<T>& to, const std::vector<T>& from, int threads) {
+void assign_huge(Buffer<T>& to, const Buffer<T>& from, int threads) {
   to.clear();
   to.shrink_to_fit();
   to.reserve(from.size());
@@ -162,7 +195,13 @@ void assign_huge(std::vector<T>& to, const std::vector<T>& from, int threads) {
     }
   }
 #endif
-  to.assign(from.begin(), from.end());
+  to.resize(from.size());  // unwritten: copied by chunks below
+  parallel_for_chunks(
+      from.size(), kPassChunk,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        std::copy(from.begin() + first, from.begin() + last, to.begin() + first);
+      },
+      threads);
 }
 
 /// Edges per task when build() places arcs on several threads.
@@ -509,8 +548,8 @@ struct DynamicMaxFlow::Impl {
   std::size_t num_edges = 0;
   std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
   std::shared_ptr<const Parts> parts;        // cut_into_parts; null: one part
-  std::vector<Node> nodes;                   // num_nodes
-  std::vector<double> residual;              // per arc
+  Buffer<Node> nodes;                        // num_nodes
+  Buffer<double> residual;                   // per arc
   bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
   Index time = 0;
   Index first_active = kNone, last_active = kNone;
@@ -920,7 +959,7 @@ void DynamicMaxFlow::build(std::size_t num_nodes, std::span<const FlowEdge> edge
   parallel_for_chunks(
       num_nodes, kPassChunk,
       [&](std::size_t, std::size_t first, std::size_t last) {
-        std::fill(m.nodes.begin() + first, m.nodes.begin() + last, Node{});
+        std::fill(m.nodes.begin() + first, m.nodes.begin() + last, kFreshNode);
       },
       threads);
   parallel_for_chunks(
