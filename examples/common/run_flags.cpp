@@ -39,8 +39,9 @@ void RunFlags::declare(ToolOptions& options) {
                "bands of its variables (at least 4096 each) at once on --threads threads, then "
                "over the whole graph from their flows; exact moves, the same output for every "
                "thread count (the bits may differ from 1 part's by floating-point rounding); 0: "
-               "4 parts with --maxflow dynamic (1 where over 5% of the energy's edges would join "
-               "different parts, e.g. a random graph), 1 with another; 1: one part "
+               "with --maxflow dynamic the most parts up to 4 that keep at most 5% of the "
+               "energy's edges between parts, else 1 (e.g. a random graph), 1 with another; 1: "
+               "one part "
                "(docs/performance.md, \"The solve\")")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "

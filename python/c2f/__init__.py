@@ -122,8 +122,9 @@ def solve(
           (True, False, or 'auto': only on an energy where some expansion move is not
           submodular, e.g. truncated quadratic; the pairwise defaults' choice), ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
           16; 1, the default: none), ``flow_parts`` (each move's max-flow in this many bands
-          at once; 0, the default: 4 with maxflow 'dynamic', but 1 where over 5% of the energy's
-          edges would join different parts, e.g. a random graph; 1 with another),
+          at once; 0, the default: with maxflow 'dynamic' the most parts up to 4 that keep at
+          most 5% of the energy's edges between parts, else 1, e.g. a random graph; 1 with
+          another),
           ``threads`` (that solve them, 0: all cores; the result is the same for every count),
           ``near_levels`` ('original': near and shift moves on the original problem only, the
           default; 'all'), ``maxflow`` ('dynamic', ours with recycled graphs, the default;
