@@ -21,7 +21,7 @@
 // Each move's binary problem goes straight into the max-flow graph when all its pairwise
 // terms are submodular; otherwise it is solved with QPBO on the doubled graph and variables
 // QPBO leaves unlabelled keep their label. The max-flow is solved in parts at once on several
-// threads (ExpansionOptions::flow_parts, 4 by default with our max-flow), and the passes
+// threads (ExpansionOptions::flow_parts, up to 4 by default with our max-flow), and the passes
 // over a move's variables and edges run by bands (detail/bands.hpp); results never depend on
 // the thread count. The move is accepted only when the exact double energy of the new
 // labeling, re-summed where the move changed it (EnergyTally), is lower than the current one

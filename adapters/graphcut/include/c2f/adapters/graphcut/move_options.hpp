@@ -105,7 +105,7 @@ struct ExpansionOptions : MoveOptions {
   bool operator==(const ExpansionOptions&) const = default;
 };
 
-/// The parts ExpansionOptions::flow_parts = 0 stands for with our max-flow. On 2 threads 4
+/// The most parts ExpansionOptions::flow_parts = 0 stands for with our max-flow. On 2 threads 4
 /// parts measured 1.26-1.33x faster to converge than one part on one thread on Recycle (2014
 /// Q) and KITTI, with the stereo defaults; on one thread they cost 2-10% (docs/performance.md,
 /// "The solve").
