@@ -66,6 +66,16 @@ double expected_after_phase(const PairwiseEnergy& energy, const Labeling& x,
   return expected;
 }
 
+/// The energies after each of the first `steps` steps of expansion with `options` from `start`.
+std::vector<double> expansion_trace(const PairwiseEnergy& energy, const Labeling& start,
+                                    const ExpansionOptions& options, int steps) {
+  ExpansionSolver<> solver(options);
+  solver.bind(energy, start);
+  std::vector<double> trace;
+  for (int step = 0; step < steps; ++step) trace.push_back(solver.step());
+  return trace;
+}
+
 }  // namespace
 
 TEST_CASE("a region layout keeps every edge within one region or two adjacent ones",
@@ -313,11 +323,7 @@ TEST_CASE("the default solves in parts only where few edges join different parts
       ExpansionOptions run_options;
       run_options.flow_parts = parts;
       run_options.near_radius = radius;
-      ExpansionSolver<> solver(run_options);
-      solver.bind(random, start);
-      std::vector<double> trace;
-      for (int step = 0; step < 12; ++step) trace.push_back(solver.step());
-      traces.push_back(trace);
+      traces.push_back(expansion_trace(random, start, run_options, 12));
     }
     INFO("near radius " << radius);
     CHECK(traces[0] == traces[1]);
@@ -354,15 +360,8 @@ TEST_CASE("the default takes the most parts that keep few edges between them",
   CHECK(by_default.flow_parts(grid) == 4);
   // The default's run is the run asked for 2 parts, bit for bit.
   const Labeling start = random_labeling(rng, n, 3);
-  std::vector<std::vector<double>> traces;
-  for (const int parts : {0, 2}) {
-    ExpansionOptions options;
-    options.flow_parts = parts;
-    ExpansionSolver<> solver(options);
-    solver.bind(crossed, start);
-    std::vector<double> trace;
-    for (int step = 0; step < 9; ++step) trace.push_back(solver.step());
-    traces.push_back(trace);
-  }
-  CHECK(traces[0] == traces[1]);
+  ExpansionOptions asked_for_two;
+  asked_for_two.flow_parts = 2;
+  CHECK(expansion_trace(crossed, start, ExpansionOptions{}, 9) ==
+        expansion_trace(crossed, start, asked_for_two, 9));
 }

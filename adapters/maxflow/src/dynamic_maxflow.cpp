@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/support/parallel_for.hpp"
 
 namespace c2f {
@@ -26,37 +27,11 @@ constexpr Index kTerminal = kNone - 1;                      // parent is the tre
 
 enum Tree : std::uint8_t { kFree = 0, kSourceTree = 1, kSinkTree = 2 };
 
-/// The allocator of Buffer: construct() without a value default-initialises, so resize() leaves
-/// trivial elements unwritten.
-template <class T>
-struct DefaultInitAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = DefaultInitAllocator<U>;
-  };
-  DefaultInitAllocator() = default;
-  template <class U>
-  explicit DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* at) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(at)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* at, Args&&... args) {
-    ::new (static_cast<void*>(at)) U(std::forward<Args>(args)...);
-  }
-};
-
-/// An array of trivial elements that resize() does not write: the graph's arrays are sized on
-/// one thread and then written by chunks on several (a serial zeroing first would double the
-/// writes and run on one thread).
-template <class T>
-using Buffer = std::vector<T, DefaultInitAllocator<T>>;
-
 /// One node's flow state. `excess` is the residual terminal capacity: > 0 from the source,
 /// < 0 to the sink. `parent` is the arc from the node to its parent in its search tree.
-/// Trivial, so that a Buffer of nodes is sized without writing them; kFreshNode is a node of a
-/// graph just built.
+/// Trivial, so that a DefaultInitVector of nodes is sized without writing them: the graph's
+/// arrays are written once, by chunks on the threads, after they are sized. kFreshNode is a
+/// node of a graph just built.
 struct Node {
   double excess;
   Index parent;
@@ -74,10 +49,10 @@ constexpr Node kFreshNode{0.0, kNone, kNone, 0, 0, kFree, false};
 /// flow state (nodes and residuals): a TSGO QPBO move graph at 171k pixels (342k nodes, 1.37M
 /// edges) costs 33 MB per copy instead of 60 MB.
 struct Topology {
-  Buffer<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
-  Buffer<Index> head;         ///< per arc
-  Buffer<Index> sister;       ///< per arc: the reverse arc
-  Buffer<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
+  DefaultInitVector<Index> first_arc;    ///< arcs of node i: [first_arc[i], first_arc[i + 1])
+  DefaultInitVector<Index> head;         ///< per arc
+  DefaultInitVector<Index> sister;       ///< per arc: the reverse arc
+  DefaultInitVector<Index> forward_arc;  ///< per edge: its from -> to arc; the sister is to -> from
 };
 
 /// A cut of a graph's nodes into parts (DynamicMaxFlow::cut_into_parts): each node's part and
@@ -89,7 +64,7 @@ struct Parts {
   std::vector<std::size_t> between;
   std::size_t count = 1;
   /// The nodes of part k, ascending: members[first_member[k] .. first_member[k + 1]).
-  Buffer<std::uint32_t> members;
+  DefaultInitVector<std::uint32_t> members;
   std::vector<std::size_t> first_member;
 };
 
@@ -101,7 +76,7 @@ constexpr std::size_t kOutOfRange = std::numeric_limits<std::size_t>::max();
 
 /// The positions of a list's entries sorted by bucket, each bucket's in list order.
 struct ByPart {
-  Buffer<std::uint32_t> positions;  ///< bucket b's: [first[b], first[b + 1])
+  DefaultInitVector<std::uint32_t> positions;  ///< bucket b's: [first[b], first[b + 1])
   std::vector<std::size_t> first;
   bool out_of_range = false;  ///< some entry's bucket was kOutOfRange (then nothing is sorted)
 
@@ -118,7 +93,7 @@ template <class BucketOf>
 ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucket_of, int threads) {
   ByPart sorted;
   const std::size_t chunks = (size + kPassChunk - 1) / kPassChunk;
-  Buffer<std::uint16_t> bucket(size);                // up to 256 parts and the bucket between them
+  DefaultInitVector<std::uint16_t> bucket(size);     // up to 256 parts and the bucket between them
   std::vector<std::size_t> at(chunks * buckets, 0);  // chunk c's count, then its next place, of b
   std::vector<std::uint8_t> bad(chunks, 0);
   parallel_for_chunks(
@@ -169,7 +144,7 @@ ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucke
 /// Both are requests: pages the kernel does not give ahead are faulted in by the copy, as
 /// without them.
 template <class T>
-void assign_huge(Buffer<T>& to, const Buffer<T>& from, int threads) {
+void assign_huge(DefaultInitVector<T>& to, const DefaultInitVector<T>& from, int threads) {
   to.clear();
   to.shrink_to_fit();
   to.reserve(from.size());
@@ -548,8 +523,8 @@ struct DynamicMaxFlow::Impl {
   std::size_t num_edges = 0;
   std::shared_ptr<const Topology> topology;  // shared with copies; null before build()
   std::shared_ptr<const Parts> parts;        // cut_into_parts; null: one part
-  Buffer<Node> nodes;                        // num_nodes
-  Buffer<double> residual;                   // per arc
+  DefaultInitVector<Node> nodes;             // num_nodes
+  DefaultInitVector<double> residual;        // per arc
   bool has_flow = false;                     // solve() ran since build(): the dynamic changes apply
   Index time = 0;
   Index first_active = kNone, last_active = kNone;

@@ -46,18 +46,20 @@ void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std:
       },
       threads, band);
   // Each band's list copied to its place on the threads when there is much to copy.
-  std::size_t total = joined.size();
-  std::vector<std::size_t> place(bands);
-  for (std::size_t b = 0; b < bands; ++b) {
-    place[b] = total;
-    total += lists[b].size();
-  }
-  if (total - joined.size() < kBandSize) {
+  std::size_t added = 0;
+  for (std::size_t b = 0; b < bands; ++b) added += lists[b].size();
+  if (added < kBandSize) {
     for (std::size_t b = 0; b < bands; ++b)
       joined.insert(joined.end(), lists[b].begin(), lists[b].end());
     return;
   }
-  joined.resize(total);
+  std::vector<std::size_t> place(bands);
+  std::size_t end = joined.size();
+  for (std::size_t b = 0; b < bands; ++b) {
+    place[b] = end;
+    end += lists[b].size();
+  }
+  joined.resize(end);
   for_each_band(
       bands,
       [&](std::size_t, std::size_t first, std::size_t last) {
