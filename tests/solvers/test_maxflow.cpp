@@ -249,6 +249,36 @@ TEST_CASE(
   CHECK_THROWS_WITH(unsolved.resolve(), Catch::Contains("solve() first"));
 }
 
+TEST_CASE("dynamic max-flow: a hub's arcs are scanned a bounded number of times per solve",
+          "[maxflow][dynamic]") {
+  // A hub with k leaves, each leaf joined to the sink: every leaf takes an augmentation of its
+  // own through the hub. Scanning the hub again from its first arc after each would examine
+  // about k^2 / 2 arcs; going on from the arc where the trees met examines each about once.
+  const std::size_t leaves = 2000;
+  std::vector<FlowEdge> edges;
+  for (std::size_t leaf = 1; leaf <= leaves; ++leaf)
+    edges.push_back({0, static_cast<FlowNode>(leaf)});
+  FlowCapacities caps;
+  caps.resize(leaves + 1, leaves);
+  caps.source[0] = 2.0 * static_cast<double>(leaves);
+  for (std::size_t leaf = 1; leaf <= leaves; ++leaf) {
+    caps.sink[leaf] = 1.0;
+    caps.forward[leaf - 1] = leaf % 2 == 0 ? 1.0 : 2.0;  // the edge or the sink arc saturates
+  }
+  const std::size_t bound = 4 * (2 * leaves + 1);  // each arc (both directions) a few times
+  DynamicMaxFlow dynamic;
+  dynamic.build(leaves + 1, edges);
+  CHECK(dynamic.solve(caps) == static_cast<double>(leaves));
+  CHECK(dynamic.last_solve().augmentations == leaves);
+  CHECK(dynamic.last_solve().arcs_scanned <= bound);
+  // A re-solve after every leaf's sink arc doubled: the hub's scan again, from its first arc.
+  const FlowCapacities before = caps;
+  for (std::size_t leaf = 1; leaf <= leaves; ++leaf) caps.sink[leaf] = 2.0;
+  resolve_with(dynamic, before, caps);
+  CHECK(cut_capacity(caps, edges, source_set(dynamic)) == 1.5 * static_cast<double>(leaves));
+  CHECK(dynamic.last_solve().arcs_scanned <= bound);
+}
+
 TEST_CASE("dynamic max-flow: a large copy made on several threads resumes like one made on one",
           "[maxflow][dynamic][threads]") {
   // 270k edges: 4.3 MB of residuals, so the copy asks for some of its pages ahead.

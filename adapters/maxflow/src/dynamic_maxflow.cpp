@@ -271,6 +271,7 @@ struct Search {
   Index& last_active;
   std::vector<Index>& orphans;
   std::size_t& augmentations;
+  std::size_t& arcs_scanned;
   const std::uint8_t* part = nullptr;  ///< parallel: each node's part (null: one search)
   std::uint8_t mine = 0;               ///< parallel: this search's part
 
@@ -474,12 +475,13 @@ struct Search {
     ++augmentations;
   }
 
-  /// Grows the tree of node i by one scan of its arcs; the arc from the source side to the sink
-  /// side when the trees meet there, else kNone.
-  Index grow(Index i) {
+  /// Grows the tree of node i by a scan of its arcs from arc `from` on; the arc from the source
+  /// side to the sink side when the trees meet there, else kNone.
+  Index grow(Index i, Index from) {
     Node& node = nodes[i];
     const bool source_side = node.tree == kSourceTree;
-    for (Index a = t.first_arc[i]; a < t.first_arc[i + 1]; ++a) {
+    const Index end = t.first_arc[i + 1];
+    for (Index a = from; a < end; ++a) {
       // Source tree: grow along i -> j; sink tree: along j -> i.
       const Index sister = t.sister[a];
       const double open = source_side ? residual[a] : residual[sister];
@@ -493,24 +495,35 @@ struct Search {
         neighbour.distance = node.distance + 1;
         activate(j);
       } else if (neighbour.tree != node.tree) {
+        arcs_scanned += a - from + 1;
         return source_side ? a : sister;
       }
     }
+    arcs_scanned += end - from;
     return kNone;
   }
 
+  /// Grows the trees from the active nodes and augments where they meet, until no active node
+  /// is left. A node whose scan met the other tree goes on, after the augmentation, from the arc
+  /// where they met: scanning it again from its first arc would cost a node of degree d up to
+  /// d scans of its d arcs (a coarse level's large group has thousands of neighbours).
   void run() {
     Index current = kNone;
+    Index from = 0;  // the arc of `current` its scan goes on from
     while (true) {
       if (current == kNone || nodes[current].tree == kFree) {
         current = pop_active();
         if (current == kNone) break;
+        from = t.first_arc[current];
       }
-      const Index middle = grow(current);
+      const Index middle = grow(current, from);
       if (middle == kNone) {
         current = kNone;
         continue;
       }
+      // The arcs before the meeting arc led into the node's own tree and still do, or lead to
+      // nodes that left it since, and leave_tree() queued this node again for those.
+      from = nodes[current].tree == kSourceTree ? middle : t.sister[middle];
       ++time;
       augment(middle);
       adopt_orphans();
@@ -691,7 +704,7 @@ struct DynamicMaxFlow::Impl {
     struct alignas(kCacheLineBytes) PartSearch {  // written by its part's thread only
       Index time = 0, first_active = kNone, last_active = kNone;
       std::vector<Index> orphans;
-      std::size_t augmentations = 0;
+      std::size_t augmentations = 0, arcs_scanned = 0;
     };
     std::vector<PartSearch> searches(parts->count);
     const Index start = time + 1;  // later than every stamp
@@ -708,6 +721,7 @@ struct DynamicMaxFlow::Impl {
                    own.last_active,
                    own.orphans,
                    own.augmentations,
+                   own.arcs_scanned,
                    part.data(),
                    static_cast<std::uint8_t>(k)};
           for (const std::size_t e : between) {
@@ -728,6 +742,7 @@ struct DynamicMaxFlow::Impl {
     for (const PartSearch& own : searches) {
       time = std::max(time, own.time);
       stats.augmentations += own.augmentations;
+      stats.arcs_scanned += own.arcs_scanned;
     }
     touched.clear();  // the parts repaired them
     touched_by_part.clear();
@@ -879,8 +894,8 @@ struct DynamicMaxFlow::Impl {
 
   /// The search with the graph's own queue, orphans and clock.
   Search search() {
-    return {nodes.data(), residual.data(), *topology, time,
-            first_active, last_active,     orphans,   stats.augmentations};
+    return {nodes.data(), residual.data(),     *topology,         time, first_active, last_active,
+            orphans,      stats.augmentations, stats.arcs_scanned};
   }
   void adopt_orphans() { search().adopt_orphans(); }
   void run() { search().run(); }

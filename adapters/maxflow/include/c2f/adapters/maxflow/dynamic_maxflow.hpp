@@ -19,6 +19,7 @@ struct DynamicSolveStats {
   std::size_t changed_nodes = 0;  ///< nodes whose terminal capacities changed (when reused)
   std::size_t changed_edges = 0;  ///< edges whose capacities changed (when reused)
   std::size_t augmentations = 0;  ///< augmenting paths found
+  std::size_t arcs_scanned = 0;   ///< arcs the trees' growth examined
 };
 
 /// Boykov-Kolmogorov max-flow on flat arrays (nodes; arcs sorted by tail, each with its
