@@ -20,6 +20,32 @@ cv::Mat quadrants() {
 }
 }  // namespace
 
+TEST_CASE("lab_of_bgr is OpenCV's 8-bit Lab within rounding", "[vision][slic]") {
+  // Every 8-bit colour on a 4-step lattice of the cube, and the cube's corners. OpenCV's 8-bit
+  // path interpolates a table: in dark colours its a* and b* are up to 2 off (BGR (0, 4, 0):
+  // a* = -1.6 exactly, so 126.4 scaled; OpenCV gives 128, this 126).
+  cv::Mat colours(1, 64 * 64 * 64 + 8, CV_8UC3);
+  int k = 0;
+  for (int b = 0; b < 256; b += 4)
+    for (int g = 0; g < 256; g += 4)
+      for (int r = 0; r < 256; r += 4) colours.at<cv::Vec3b>(0, k++) = cv::Vec3b(b, g, r);
+  for (int corner = 0; corner < 8; ++corner) {
+    colours.at<cv::Vec3b>(0, k++) =
+        cv::Vec3b(corner & 1 ? 255 : 0, corner & 2 ? 255 : 0, corner & 4 ? 255 : 0);
+  }
+  cv::Mat reference;
+  cv::cvtColor(colours, reference, cv::COLOR_BGR2Lab);
+  const cv::Mat ours = lab_of_bgr(colours);
+  cv::Mat difference;
+  cv::absdiff(ours, reference, difference);
+  double largest = 0.0;
+  cv::minMaxLoc(difference.reshape(1), nullptr, &largest);
+  CHECK(largest <= 2.0);
+  const cv::Mat off_by_two = difference.reshape(1) >= 2;
+  CHECK(static_cast<std::size_t>(cv::countNonZero(off_by_two)) <= difference.total() * 3 / 1000);
+  CHECK_THROWS_AS(lab_of_bgr(cv::Mat(4, 4, CV_8UC1)), std::invalid_argument);
+}
+
 TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[vision][slic]") {
   const cv::Mat image = quadrants();
   const DensePartition superpixels = slic_partition(image, 8);

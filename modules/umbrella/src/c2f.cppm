@@ -270,6 +270,7 @@ using c2f::vision::kOpencvDocAloeLabels;
 using c2f::vision::kOpencvDocData;
 using c2f::vision::kTsgoWeightBounds;
 using c2f::vision::kTsgoWeights;
+using c2f::vision::lab_of_bgr;
 using c2f::vision::label_count;
 using c2f::vision::label_image;
 using c2f::vision::labels_by_colour;

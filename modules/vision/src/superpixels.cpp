@@ -2,12 +2,48 @@
 #include "c2f/support/enum_names.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/slic.hpp>
 #include <stdexcept>
 #include <string>
 
 namespace c2f::vision {
+
+cv::Mat lab_of_bgr(const cv::Mat& bgr) {
+  if (bgr.empty() || bgr.type() != CV_8UC3)
+    throw std::invalid_argument("lab_of_bgr: the image must be non-empty 8-bit 3-channel");
+  static const std::array<float, 256> linear = [] {
+    std::array<float, 256> table{};
+    for (int v = 0; v < 256; ++v) {
+      const double c = v / 255.0;
+      table[static_cast<std::size_t>(v)] =
+          static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return table;
+  }();
+  constexpr float kEpsilon = 0.008856F;  // (6/29)^3
+  const auto f = [](float t) { return t > kEpsilon ? std::cbrt(t) : 7.787F * t + 16.0F / 116.0F; };
+  const auto to_byte = [](float value) { return cv::saturate_cast<std::uint8_t>(value); };
+  cv::Mat lab(bgr.size(), CV_8UC3);
+  for (int y = 0; y < bgr.rows; ++y) {
+    const cv::Vec3b* in = bgr.ptr<cv::Vec3b>(y);
+    cv::Vec3b* out = lab.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; ++x) {
+      const float b = linear[in[x][0]], g = linear[in[x][1]], r = linear[in[x][2]];
+      const float fx = f((0.412453F * r + 0.357580F * g + 0.180423F * b) / 0.950456F);
+      const float yy = 0.212671F * r + 0.715160F * g + 0.072169F * b;
+      const float fy = f(yy);
+      const float fz = f((0.019334F * r + 0.119193F * g + 0.950227F * b) / 1.088754F);
+      const float lightness = yy > kEpsilon ? 116.0F * fy - 16.0F : 903.3F * yy;
+      out[x] = {to_byte(lightness * 255.0F / 100.0F), to_byte(500.0F * (fx - fy) + 128.0F),
+                to_byte(200.0F * (fy - fz) + 128.0F)};
+    }
+  }
+  return lab;
+}
 
 DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
   if (image.empty() || image.type() != CV_8UC3) {
@@ -21,8 +57,7 @@ DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicO
                                 " is larger than the " + std::to_string(image.cols) + "x" +
                                 std::to_string(image.rows) + " image's shorter side");
   }
-  cv::Mat lab;
-  cv::cvtColor(image, lab, cv::COLOR_BGR2Lab);
+  const cv::Mat lab = lab_of_bgr(image);
   const int algorithm =
       options.algorithm == SlicAlgorithm::slic ? cv::ximgproc::SLIC : cv::ximgproc::SLICO;
   auto slic = cv::ximgproc::createSuperpixelSLIC(lab, algorithm, region_size, options.ruler);
