@@ -107,7 +107,8 @@ void write_summary(const std::filesystem::path& out, const examples::SegmentComm
          << command.preparation.gmm_kmeans.seed << " (GMMs) and "
          << command.preparation.edge_kmeans.seed << " (edge classes)\n"
          << "data preparation: " << built.seconds << " s (not on the run clock)\n"
-         << run.memory_line() << "\n";
+         << run.memory_line() << "\n"
+         << run.threads_line() << "\n";
   examples::write_run_report(report, levels.reports(), summary, interrupts);
   report << "cooperative-cut energy of the result: "
          << built.problem.coop.evaluate(summary.labeling)

@@ -74,8 +74,9 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
             "cooperative cut is not pairwise) as a UAI MARKOV model, for c2f-solve or toulbar2")
       .flag("save-partitions", &command.save_partitions, "write pictures of each level's partition")
       .integer("threads", &preparation.threads, {0, 1024},
-               "threads preparing the data: the labels' colour models and the edge classes' "
-               "k-means (0: the machine's cores); the result is the same for every count")
+               "threads of the run (0: the machine's cores): preparing the data (the labels' "
+               "colour models and the edge classes' k-means) and the solve (each step's "
+               "max-flow in parts); the result is the same for every count")
       .real("memory", &memory_gib, {0.0, 65536.0},
             "GiB the whole run may take (0: a quarter of this machine's memory, growing to "
             "the run's needs up to half, at most what is available); the Potts method's recycled "
@@ -102,6 +103,7 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
   if (labels_from_gt && command.files.gt.empty())
     throw std::invalid_argument("--labels-from-gt needs --gt");
   command.preparation = preparation.resolved();
+  command.run.threads = preparation.threads;
   command.run.method =
       with_flag("--method", [&] { return vision::segmentation_method_from_string(method); });
   command.run.coop.strategy = with_flag("--aux", [&] { return aux_strategy_from_string(aux); });

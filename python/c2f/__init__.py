@@ -276,8 +276,8 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     classes, kmeans, gmm_seed, edge_seed : int, str, int, int
         The data preparation's clustering.
     threads : int, default 0
-        The cores the data preparation runs on (0: all; the result is the same for every
-        count).
+        The cores the data preparation and the solve run on (0: all; the result is the same
+        for every count).
     time_limit, max_steps : float, int, optional
         Limits of the run (None: none).
     plateau : None, 'sweep' or int

@@ -159,6 +159,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     return kmeans_options;
   };
   const vision::DataPreparation preparation{classes, clustering(gmm_seed), clustering(edge_seed)};
+  config.threads = threads;
 
   const int num_labels = scene.num_labels();
   Schedule schedule;
@@ -178,18 +179,18 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
                             std::to_string(num_labels) + " labels",
                         vision::segmentation_memory_estimate(scene.image.total(), num_labels));
   StepRecord record(callback, {scene.image.rows, scene.image.cols});
-  Summary summary;
+  RunReport report;
   try {
     const ReleasedGil free;
     const vision::SegmentationProblem problem =
         vision::segmentation_problem(scene, parameters, preparation);
     ScheduleProvider levels(schedule, scene.shape(), vision::slic_source(scene.image));
     // As in c2f-segment: the recycled move graphs get what the budget leaves.
-    summary = vision::run_segmentation(problem, levels, config, std::ref(record)).summary;
+    report = vision::run_segmentation(problem, levels, config, std::ref(record));
   } catch (const RunConfigError& error) {
     raise_run_error(error);
   }
-  return record.result(summary, summary.report());
+  return record.result(report.summary, report.summary.report() + report.threads_line() + "\n");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 import os
 import pathlib
+import re
 import subprocess
 
 import numpy as np
@@ -55,6 +56,8 @@ def test_segment_methods_and_schedules(fruits):
 def test_segment_is_the_same_on_any_number_of_threads(fruits):
     image, seeds = fruits["image"], fruits["seeds"]
     one = c2f.segment(image, seeds, max_steps=10, threads=1)
+    assert re.search(r"^solve: every move over every variable(, max-flow in \d+ parts on 1 thread| "
+                     r"on one thread)$", one.summary, re.MULTILINE)
     for threads in (2, 0):
         many = c2f.segment(image, seeds, max_steps=10, threads=threads)
         np.testing.assert_array_equal(many.labeling, one.labeling)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
@@ -206,6 +207,44 @@ TEST_CASE("the segmentation recipe runs either method within the budget, as buil
   ScheduleProvider levels(schedule, scene.shape());
   CHECK_THROWS_WITH(vision::run_segmentation(problem, levels, bad),
                     Catch::StartsWith("plateau: expected -1"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the segmentation run gives the same bits on 1, 2 and 3 threads, either method",
+          "[run][segmentation][threads]") {
+  // 128 x 96 pixels: each move's max-flow in 3 parts (at least 4096 variables per part).
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-threads";
+  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, 128, 96, 4);
+  const vision::SegmentationScene scene = vision::load_segmentation_scene(
+      {files.image, files.seeds, "", vision::SeedConvention::colours});
+  const vision::SegmentationProblem problem =
+      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
+  const Schedule schedule = vision::parse_segmentation_schedule("paper", scene.num_labels());
+  for (const auto method : {vision::SegmentationMethod::coop, vision::SegmentationMethod::potts}) {
+    std::optional<RunReport> serial;
+    for (const int threads : {1, 2, 3}) {
+      INFO("method " << vision::to_string(method) << ", threads " << threads);
+      vision::SegmentationRunConfig config;
+      config.method = method;
+      config.threads = threads;
+      ScheduleProvider levels(schedule, scene.shape());
+      const RunReport report = vision::run_segmentation(problem, levels, config);
+      CHECK(report.flow_parts == 3);
+      CHECK(report.flow_threads == static_cast<unsigned>(threads));
+      if (!serial) {
+        serial = report;
+        continue;
+      }
+      CHECK(report.summary.labeling == serial->summary.labeling);
+      CHECK(report.summary.energy == serial->summary.energy);
+      CHECK(report.summary.total_steps == serial->summary.total_steps);
+    }
+  }
+  vision::SegmentationRunConfig bad;
+  bad.threads = -1;
+  ScheduleProvider levels(schedule, scene.shape());
+  CHECK_THROWS_WITH(vision::run_segmentation(problem, levels, bad),
+                    Catch::StartsWith("threads: expected >= 0"));
   std::filesystem::remove_all(dir);
 }
 

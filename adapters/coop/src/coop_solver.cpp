@@ -45,6 +45,7 @@ std::string RelaxationOptions::validate() const {
 
 std::string CoopSolverOptions::validate() const {
   if (expansion_cycles < 1) return "expansion_cycles must be >= 1";
+  if (threads < 0) return "threads must be >= 0";
   return relaxation.validate();
 }
 
@@ -113,11 +114,20 @@ double CoopSolver::step() {
   return value_;
 }
 
+std::size_t CoopSolver::flow_parts(const CoopEnergy& energy) const {
+  ExpansionOptions expansion_options;
+  expansion_options.threads = options_.threads;
+  const ExpansionSolver<> expansion(expansion_options);
+  return expansion.flow_parts(
+      pairwise_energy(energy, CoopAuxiliary(energy.num_labels(), energy.num_classes())));
+}
+
 Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> start) {
   const PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
   // Of graph_memory_limit, a quarter may keep the move problems when all of them fit in it; the
   // recycled graphs get the rest.
   ExpansionOptions expansion_options;
+  expansion_options.threads = options_.threads;
   const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
                                    .value_or(static_cast<std::size_t>(-1));
   expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;

@@ -26,6 +26,7 @@ std::string SegmentationRunConfig::validate() const {
   if (!std::isfinite(time_limit_seconds) || time_limit_seconds < 0.0)
     return "time_limit_seconds: expected a finite number >= 0 (0: no limit)";
   if (max_total_steps < 0) return "max_total_steps: expected >= 0 (0: no limit)";
+  if (threads < 0) return "threads: expected >= 0 (0: the machine's cores)";
   return {};
 }
 
@@ -51,6 +52,7 @@ RunReport run_segmentation(const SegmentationProblem& problem, ScheduleProvider&
   const int num_labels = problem.coop.num_labels();
   if (config.method == SegmentationMethod::potts) {
     RunConfig run_config;
+    std::get<ExpansionOptions>(run_config.solver.original).threads = config.threads;
     run_config.memory = config.memory;
     run_config.energy_name = "the Potts energy";
     run_config.limits = limits(config, num_labels, sweep_steps(run_config.solver, problem.potts));
@@ -59,6 +61,7 @@ RunReport run_segmentation(const SegmentationProblem& problem, ScheduleProvider&
   // The cooperative energy, with the Potts one kept beside it.
   CoopRunConfig run_config;
   run_config.solver = config.coop;
+  run_config.solver.threads = config.threads;
   run_config.memory = config.memory;
   run_config.kept_bytes = energy_memory_bytes(problem.potts);
   run_config.limits = limits(config, num_labels, sweep_steps(config.coop, problem.coop));

@@ -29,7 +29,11 @@ SegmentationMethod segmentation_method_from_string(std::string_view text);
 
 struct SegmentationRunConfig {
   SegmentationMethod method = SegmentationMethod::coop;
-  CoopSolverOptions coop;  ///< the cooperative cut's solver (method coop)
+  CoopSolverOptions coop;  ///< the cooperative cut's solver (method coop; its threads: below)
+  /// Threads of the solve (0: the machine's cores): the cooperative cut's expansions (it
+  /// replaces coop.threads) or the Potts baseline's moves. The result is the same for every
+  /// count.
+  int threads = 0;
   /// Steps without decrease that end a coarse level: k > 0 that many; 0 the number of labels,
   /// or one sweep of the solver when that is shorter; -1 one sweep (coarse_plateau_steps).
   int plateau = 0;

@@ -68,6 +68,9 @@ struct CoopSolverOptions {
   /// (MoveOptions::graph_memory_limit); the run layer (c2f/run/coop_run.hpp) lowers it to what
   /// a run's memory budget leaves.
   std::size_t graph_memory_limit = MoveOptions{}.graph_memory_limit;
+  /// Threads each step's alpha-expansion solves its max-flow's parts on
+  /// (ExpansionOptions::threads; 0: the machine's cores). The result is the same for every count.
+  int threads = 0;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
@@ -94,6 +97,10 @@ class CoopSolver {
   /// greedy (num_labels * num_classes + 1), one step for mm (a fixed point), two for ceres (the
   /// warm-started relaxation may still move once).
   [[nodiscard]] std::size_t quiet_steps_to_converge(const CoopEnergy& energy) const noexcept;
+
+  /// The parts each step's alpha-expansion on `energy` solves its max-flow in
+  /// (ExpansionSolver::flow_parts of the energy's pairwise form, whose edges do not depend on h).
+  [[nodiscard]] std::size_t flow_parts(const CoopEnergy& energy) const;
 
   /// Starts from `start` (validated). h is kept from the previous binding when it has this
   /// energy's shape (labels, classes), else it starts all 1.
