@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "c2f/adapters/coop/coop_solver.hpp"
@@ -56,6 +57,25 @@ RunConfigError refusal(const Energy& energy, const Config& config) {
   }
   FAIL("the run was not refused");
   return RunConfigError("", "");
+}
+
+/// A synthetic segmentation (write_synthetic_segmentation in `dir`), its problem with the
+/// default parameters and preparation, and the `paper` schedule for its labels.
+struct SegmentationCase {
+  vision::SegmentationScene scene;
+  vision::SegmentationProblem problem;
+  Schedule schedule;
+};
+
+SegmentationCase segmentation_case(const std::filesystem::path& dir, int width, int height,
+                                   int labels) {
+  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, width, height, labels);
+  vision::SegmentationScene scene = vision::load_segmentation_scene(
+      {files.image, files.seeds, "", vision::SeedConvention::colours});
+  vision::SegmentationProblem problem =
+      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
+  Schedule schedule = vision::parse_segmentation_schedule("paper", scene.num_labels());
+  return {std::move(scene), std::move(problem), std::move(schedule)};
 }
 
 }  // namespace
@@ -168,12 +188,7 @@ TEST_CASE("every refusal of the run layer names its field", "[run][validation]")
 TEST_CASE("the segmentation recipe runs either method within the budget, as built by hand",
           "[run][segmentation]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-run";
-  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, 48, 36, 5);
-  const vision::SegmentationScene scene = vision::load_segmentation_scene(
-      {files.image, files.seeds, "", vision::SeedConvention::colours});
-  const vision::SegmentationProblem problem =
-      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
-  const Schedule schedule = vision::parse_segmentation_schedule("paper", scene.num_labels());
+  const auto [scene, problem, schedule] = segmentation_case(dir, 48, 36, 5);
 
   for (const auto method : {vision::SegmentationMethod::coop, vision::SegmentationMethod::potts}) {
     vision::SegmentationRunConfig config;
@@ -214,12 +229,7 @@ TEST_CASE("the segmentation run gives the same bits on 1, 2 and 3 threads, eithe
           "[run][segmentation][threads]") {
   // 128 x 96 pixels: each move's max-flow in 3 parts (at least 4096 variables per part).
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-threads";
-  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, 128, 96, 4);
-  const vision::SegmentationScene scene = vision::load_segmentation_scene(
-      {files.image, files.seeds, "", vision::SeedConvention::colours});
-  const vision::SegmentationProblem problem =
-      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
-  const Schedule schedule = vision::parse_segmentation_schedule("paper", scene.num_labels());
+  const auto [scene, problem, schedule] = segmentation_case(dir, 128, 96, 4);
   for (const auto method : {vision::SegmentationMethod::coop, vision::SegmentationMethod::potts}) {
     std::optional<RunReport> serial;
     for (const int threads : {1, 2, 3}) {

@@ -5,7 +5,6 @@
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/run/run_error.hpp"
 #include "c2f/support/memory_need.hpp"
-#include "c2f/support/parallel_for.hpp"
 
 namespace c2f {
 
@@ -16,15 +15,6 @@ namespace {
 constexpr std::size_t kRelaxationDoublesPerUnknown = 43;
 
 }  // namespace
-
-namespace detail {
-
-unsigned coop_flow_threads(const CoopSolverOptions& options, std::size_t parts) {
-  if (parts < 2) return 1;
-  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(options.threads), parts));
-}
-
-}  // namespace detail
 
 std::string CoopRunConfig::validate() const {
   if (std::string problem = solver.validate(); !problem.empty()) return "solver: " + problem;

@@ -15,10 +15,14 @@ unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
       std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
 }
 
+unsigned threads_on_parts(int threads, std::size_t parts) {
+  if (parts < 2) return 1;
+  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(threads), parts));
+}
+
 unsigned flow_threads(const SolverOptions& options, std::size_t parts) {
   const auto* expansion = std::get_if<ExpansionOptions>(&options);
-  if (expansion == nullptr || parts < 2) return 1;
-  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(expansion->threads), parts));
+  return expansion == nullptr ? 1 : threads_on_parts(expansion->threads, parts);
 }
 
 SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {

@@ -56,11 +56,6 @@ struct CoopRunConfig {
 /// (its quiet_steps_to_converge), for rules that scale with it.
 [[nodiscard]] std::size_t sweep_steps(const CoopSolverOptions& options, const CoopEnergy& energy);
 
-namespace detail {
-/// The threads that solve `parts` max-flow parts at once with `options` (1 for one part).
-[[nodiscard]] unsigned coop_flow_threads(const CoopSolverOptions& options, std::size_t parts);
-}  // namespace detail
-
 /// Minimises `energy` over the partitions `levels` provides (none: flat) with CoopSolver as
 /// `config` says (the report's flow_parts and flow_threads: what each step's expansion used).
 /// Throws as plan_run, and what coarse_to_fine throws.
@@ -79,7 +74,7 @@ RunReport run(const CoopEnergy& energy, P& levels, const CoopRunConfig& config,
   report.summary = coarse_to_fine(energy, levels, solver, config.limits, observer);
   report.optional_memory_used = solver.kept_bytes();
   report.flow_parts = solver.flow_parts(energy);
-  report.flow_threads = detail::coop_flow_threads(options, report.flow_parts);
+  report.flow_threads = detail::threads_on_parts(options.threads, report.flow_parts);
   return report;
 }
 

@@ -89,4 +89,10 @@ struct RunReport {
   [[nodiscard]] std::string threads_line() const;
 };
 
+namespace detail {
+/// The threads that solve `parts` max-flow parts at once on up to `threads` threads (0: the
+/// machine's cores): 1 for one part (RunReport::flow_threads).
+[[nodiscard]] unsigned threads_on_parts(int threads, std::size_t parts);
+}  // namespace detail
+
 }  // namespace c2f
