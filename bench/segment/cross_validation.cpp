@@ -87,8 +87,8 @@ Outcome segment(const RunCommand& command, const ImageData& image,
   CoopEnergy coop = coop_energy(image.unaries, L, image.edges, parameters);
   PairwiseEnergy potts = potts_energy(coop);
   const SegmentationProblem problem{std::move(coop), std::move(potts)};
-  ScheduleProvider levels(parse_segmentation_schedule(command.schedule, L), image.scene.shape(),
-                          slic_source(image.scene.image));
+  ScheduleProvider levels =
+      segmentation_levels(parse_segmentation_schedule(command.schedule, L), image.scene);
   SegmentationRunConfig config;
   if (command.method == "potts") {
     config.method = SegmentationMethod::potts;

@@ -97,7 +97,7 @@ const std::vector<Config>& configs() {
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
           double time_limit, const MemoryBudget& memory, const std::string& trace_path) {
   const Schedule schedule = parse_segmentation_schedule(config.schedule, scene.num_labels());
-  ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
+  ScheduleProvider levels = segmentation_levels(schedule, scene);
   // Coarse levels end after L steps without decrease (a whole sweep when the configuration
   // says so, or when a sweep is shorter); the original problem where the solver has converged.
   // As in c2f-segment, within the memory budget.

@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     if (!examples::export_uai(built.problem.potts, command.export_uai, record, interrupts))
       return interrupts.exit_code();
 
-    ScheduleProvider levels(schedule, scene.shape(), slic_source(scene.image));
+    ScheduleProvider levels = segmentation_levels(schedule, scene);
     LevelPartitionRecorder partitions(command.save_partitions);
     const RunReport run = solve(command, scene, built, levels, record, partitions, interrupts);
 

@@ -15,7 +15,6 @@
 #include "c2f/vision/segmentation/segmentation_energy.hpp"
 #include "c2f/vision/segmentation/segmentation_scene.hpp"
 #include "c2f/vision/segmentation/segmentation_schedules.hpp"
-#include "c2f/vision/superpixels.hpp"
 #include "image_arrays.hpp"
 #include "memory_argument.hpp"
 #include "numpy_input.hpp"
@@ -184,7 +183,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     const ReleasedGil free;
     const vision::SegmentationProblem problem =
         vision::segmentation_problem(scene, parameters, preparation);
-    ScheduleProvider levels(schedule, scene.shape(), vision::slic_source(scene.image));
+    ScheduleProvider levels = vision::segmentation_levels(schedule, scene);
     // As in c2f-segment: the recycled move graphs get what the budget leaves.
     report = vision::run_segmentation(problem, levels, config, std::ref(record));
   } catch (const RunConfigError& error) {

@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <variant>
+#include <vector>
 
 #include "c2f/adapters/graphcut/expansion.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
@@ -99,6 +101,36 @@ TEST_CASE("every schedule level refines the previous one", "[lift][schedule][pro
     CHECK(levels > 0);
     for (const LevelReport& report : provider.reports()) CHECK(report.num_groups > 0);
   }
+}
+
+TEST_CASE("levels keep classes apart and still refine each other", "[lift][schedule]") {
+  Rng rng(5);
+  const GridShape shape{14, 11};
+  std::vector<int> classes(shape.size());
+  for (int& c : classes) c = static_cast<int>(rng() % 3);
+  for (const char* text : {"blocks:8 blocks:4 cp:1,1", "local:1,1 local:2,2", "auto:0.05,0.3"}) {
+    INFO(text);
+    const PairwiseEnergy energy = random_grid_energy(rng, shape.width, shape.height, 4);
+    ScheduleProvider provider(Schedule::parse(text), shape);
+    provider.keep_apart(classes);
+    std::optional<DensePartition> previous;
+    while (auto partition = provider.next(energy)) {
+      for (std::size_t g = 0; g < partition->num_groups(); ++g) {
+        const auto members = partition->members(g);
+        for (const VariableIndex v : members) CHECK(classes[v] == classes[members[0]]);
+      }
+      if (previous) CHECK(partition->is_refinement_of(*previous));
+      CHECK(provider.reports().back().num_groups == partition->num_groups());
+      previous = std::move(partition);
+    }
+    CHECK(previous.has_value());
+  }
+  ScheduleProvider provider(Schedule::parse("blocks:4"), shape);
+  CHECK_THROWS_WITH(provider.keep_apart(std::vector<int>(shape.size() - 1, 0)),
+                    Catch::Contains("153 classes for a grid of 154 pixels"));
+  std::vector<int> negative(shape.size(), 0);
+  negative[7] = -1;
+  CHECK_THROWS_WITH(provider.keep_apart(negative), Catch::Contains("classes[7] = -1 is negative"));
 }
 
 TEST_CASE("auto schedules pick colour-passing levels in refining order", "[lift][schedule]") {

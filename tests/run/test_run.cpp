@@ -258,6 +258,65 @@ TEST_CASE("the segmentation run gives the same bits on 1, 2 and 3 threads, eithe
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("segmentation's levels keep seeds of two labels apart, so a stopped run keeps them",
+          "[run][segmentation]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-seeds-apart";
+  const int width = 96, height = 72;
+  auto [scene, problem, schedule] = segmentation_case(dir, width, height, 3);
+  // A second label's scribble two pixels beside the first label's, in the same flat region, so
+  // that a SLIC superpixel holds seeds of both.
+  const auto pixel = [&](int x, int y) { return static_cast<std::size_t>(y * width + x); };
+  const int first = scene.seeds[pixel(width / 8, height / 2)];
+  REQUIRE(first != vision::kNoLabel);
+  const int other = (first + 1) % scene.num_labels();
+  for (int y = height / 4; y <= height * 3 / 4; ++y) scene.seeds[pixel(width / 8 + 2, y)] = other;
+  const vision::SegmentationProblem seeded =
+      vision::segmentation_problem(scene, CoopParameters{}, vision::DataPreparation{});
+  const auto groups_mixing_seeds = [&](const DensePartition& level) {
+    std::size_t mixing = 0;
+    for (std::size_t g = 0; g < level.num_groups(); ++g) {
+      int label = vision::kNoLabel;
+      bool mixed = false;
+      for (const VariableIndex v : level.members(g)) {
+        const int seed = scene.seeds[v];
+        if (seed == vision::kNoLabel) continue;
+        mixed = mixed || (label != vision::kNoLabel && seed != label);
+        label = seed;
+      }
+      mixing += mixed ? 1 : 0;
+    }
+    return mixing;
+  };
+  const Schedule superpixels = vision::parse_segmentation_schedule("superpixels", 3);
+  ScheduleProvider plain(superpixels, scene.shape(), vision::slic_source(scene.image));
+  REQUIRE(groups_mixing_seeds(*plain.next(seeded.coop)) > 0);  // the case at hand
+
+  ScheduleProvider levels = vision::segmentation_levels(superpixels, scene);
+  const auto coarse = levels.next(seeded.coop);
+  const auto finer = levels.next(seeded.coop);
+  REQUIRE((coarse && finer));
+  CHECK(groups_mixing_seeds(*coarse) == 0);
+  CHECK(groups_mixing_seeds(*finer) == 0);
+  CHECK(finer->is_refinement_of(*coarse));
+
+  for (const auto method : {vision::SegmentationMethod::coop, vision::SegmentationMethod::potts}) {
+    INFO("method " << vision::to_string(method));
+    vision::SegmentationRunConfig config;
+    config.method = method;
+    config.max_total_steps = 1;
+    ScheduleProvider stopped = vision::segmentation_levels(superpixels, scene);
+    const RunReport report = vision::run_segmentation(seeded, stopped, config);
+    REQUIRE(report.summary.levels.size() == 1);  // stopped on the coarsest level
+    std::size_t broken = 0;
+    for (std::size_t v = 0; v < scene.seeds.size(); ++v) {
+      if (scene.seeds[v] != vision::kNoLabel && report.summary.labeling[v] != scene.seeds[v])
+        ++broken;
+    }
+    CHECK(broken == 0);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("the stereo recipe runs the TSGO energy over a stereo schedule, as built by hand",
           "[run][stereo]") {
   const SyntheticPair pair = synthetic_pair(64, 48, 3, 7, 11);

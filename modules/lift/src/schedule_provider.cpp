@@ -34,8 +34,28 @@ ScheduleProvider::~ScheduleProvider() = default;
 ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
 ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
 
+void ScheduleProvider::keep_apart(std::span<const int> classes) {
+  if (shape_ && classes.size() != shape_->size()) {
+    throw std::invalid_argument("ScheduleProvider::keep_apart: " + std::to_string(classes.size()) +
+                                " classes for a grid of " + std::to_string(shape_->size()) +
+                                " pixels");
+  }
+  for (std::size_t v = 0; v < classes.size(); ++v) {
+    if (classes[v] < 0) {
+      throw std::invalid_argument("ScheduleProvider::keep_apart: classes[" + std::to_string(v) +
+                                  "] = " + std::to_string(classes[v]) + " is negative");
+    }
+  }
+  apart_ = DensePartition::from_ids(classes);
+}
+
 std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) {
   if (shape_) require_grid_size(energy.num_variables, *shape_, "ScheduleProvider");
+  if (apart_ && apart_->num_variables() != energy.num_variables) {
+    throw std::invalid_argument(
+        "ScheduleProvider: keep_apart has " + std::to_string(apart_->num_variables()) +
+        " classes for an energy of " + std::to_string(energy.num_variables) + " variables");
+  }
   const auto start = std::chrono::steady_clock::now();
   if (!started_) {
     started_ = true;
@@ -47,6 +67,7 @@ std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) 
   if (position_ >= levels_.size()) return std::nullopt;
   const LevelSpec& spec = levels_[position_];
   DensePartition partition = builder_->build(spec, energy, previous_ ? &*previous_ : nullptr);
+  if (apart_) partition = intersect(partition, *apart_);
   ++position_;
   // A level that chose its own radius reports the one it chose, then its text.
   const LevelSpec& built = builder_->last_built();

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
+
+#include "c2f/vision/superpixels.hpp"
 
 namespace c2f::vision {
 
@@ -10,6 +13,17 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels) {
   return {{"paper", "cp:" + k + ",1 cp:" + k + ",2 flat"},
           {"paper-cc", "cp:" + k + ",1/cc cp:" + k + ",2/cc flat"},
           {"superpixels", "slic:16 slic:8 flat"}};
+}
+
+ScheduleProvider segmentation_levels(Schedule schedule, const SegmentationScene& scene) {
+  SlicOptions options;
+  options.iterations = kSegmentationSlicIterations;
+  ScheduleProvider levels(std::move(schedule), scene.shape(), slic_source(scene.image, options));
+  // Class 0 for unseeded pixels, 1 + l for the seeds of label l.
+  std::vector<int> classes(scene.seeds.size());
+  for (std::size_t v = 0; v < classes.size(); ++v) classes[v] = scene.seeds[v] + 1;
+  levels.keep_apart(classes);
+  return levels;
 }
 
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels) {

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,8 @@ class LevelBuilder;
 /// state (first raising N_L, then iterating), so consecutive cp levels with non-decreasing N_L
 /// and N_iter refine each other; a cp level that goes back starts a fresh state. SLIC levels
 /// are intersected with the previous level. Whether consecutive levels refine each other is the
-/// driver's check (coarse_to_fine, Options::level_transfer), not the provider's.
+/// driver's check (coarse_to_fine, Options::level_transfer), not the provider's. Variables
+/// of different classes (keep_apart) never share a group.
 class ScheduleProvider {
  public:
   /// Throws std::invalid_argument for an empty grid, or a slic level without a superpixel
@@ -54,6 +56,14 @@ class ScheduleProvider {
   ~ScheduleProvider();
   ScheduleProvider(ScheduleProvider&&) noexcept;
   ScheduleProvider& operator=(ScheduleProvider&&) noexcept;
+
+  /// From the next level on, every level is intersected with the partition of the variables by
+  /// `classes` (one non-negative value per variable), so variables of different classes never
+  /// share a group. Levels that refine each other still do, since both are intersected with the
+  /// same partition. Segmentation keeps the seeds of different labels apart with it, so a run
+  /// stopped on a coarse level keeps every seed. Throws std::invalid_argument for a negative
+  /// class or a size other than the grid's; next() checks the size against the energy.
+  void keep_apart(std::span<const int> classes);
 
   /// The next level's partition, or std::nullopt after the last coarse level, for an energy
   /// of any kind seen through its LiftingView (which must describe the same energy on every
@@ -99,6 +109,7 @@ class ScheduleProvider {
   std::vector<LevelSpec> levels_;
   std::size_t position_ = 0;
   std::optional<DensePartition> previous_;
+  std::optional<DensePartition> apart_;  ///< keep_apart's classes
   std::vector<LevelReport> reports_;
 };
 

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "c2f/lift/schedule.hpp"
+#include "c2f/lift/schedule_provider.hpp"
+#include "c2f/vision/segmentation/segmentation_scene.hpp"
 
 namespace c2f::vision {
 
@@ -18,6 +20,18 @@ namespace c2f::vision {
 ///            with finer ones (the levels our benchmark found fastest,
 ///            docs/history/results-2026-11.md)
 std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels);
+
+/// SLIC iterations of segmentation's superpixel levels. Five, not OpenCV's customary ten: the
+/// levels cost half as much and the suite's segmentation family reached flat's energy sooner
+/// with them, at no higher error at deadlines (docs/results.md, 2026-11-29).
+inline constexpr int kSegmentationSlicIterations = 5;
+
+/// The provider of `schedule`'s levels for `scene`, as c2f-segment, c2f.segment and the
+/// segmentation benchmarks build them: slic:S levels are SLICO superpixels of the image with
+/// kSegmentationSlicIterations iterations, and every level keeps seeded pixels apart from
+/// pixels with another seed or none (ScheduleProvider::keep_apart), so no group holds seeds
+/// of two labels and a run stopped on a coarse level keeps every seed.
+ScheduleProvider segmentation_levels(Schedule schedule, const SegmentationScene& scene);
 
 /// Schedule::parse with the segmentation presets for num_labels labels.
 Schedule parse_segmentation_schedule(std::string_view text, int num_labels);
