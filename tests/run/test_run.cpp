@@ -262,7 +262,8 @@ TEST_CASE("segmentation's levels keep seeds of two labels apart, so a stopped ru
           "[run][segmentation]") {
   const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-seeds-apart";
   const int width = 96, height = 72;
-  auto [scene, problem, schedule] = segmentation_case(dir, width, height, 3);
+  SegmentationCase built = segmentation_case(dir, width, height, 3);
+  vision::SegmentationScene& scene = built.scene;
   // A second label's scribble two pixels beside the first label's, in the same flat region, so
   // that a SLIC superpixel holds seeds of both.
   const auto pixel = [&](int x, int y) { return static_cast<std::size_t>(y * width + x); };
@@ -287,7 +288,8 @@ TEST_CASE("segmentation's levels keep seeds of two labels apart, so a stopped ru
     }
     return mixing;
   };
-  const Schedule superpixels = vision::parse_segmentation_schedule("superpixels", 3);
+  const Schedule superpixels =
+      vision::parse_segmentation_schedule("superpixels", scene.num_labels());
   ScheduleProvider plain(superpixels, scene.shape(), vision::slic_source(scene.image));
   REQUIRE(groups_mixing_seeds(*plain.next(seeded.coop)) > 0);  // the case at hand
 

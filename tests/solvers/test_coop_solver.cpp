@@ -88,7 +88,9 @@ TEST_CASE("every cooperative-cut strategy keeps the true energy exact and never 
         for (std::size_t v = 0; v < before.size(); ++v)
           changed += before[v] != solver.labeling()[v];
         CHECK(solver.last_step().changed == changed);
-        CHECK(solver.last_step().expansion_moves > 0);
+        // A majorise-minimise step known to change nothing is not solved.
+        CHECK((solver.last_step().expansion_moves > 0 || solver.last_step().known_quiet));
+        if (solver.last_step().known_quiet) CHECK_FALSE(solver.last_step().improved);
         improving += solver.last_step().improved;
         previous = now;
       }
@@ -116,6 +118,33 @@ TEST_CASE("majorise-minimise ends at a minimiser of its own E_h (two labels: exa
     CHECK(brute_force_minimum(pairwise).energy + aux_constant(energy, h) >=
           energy.evaluate(x) - 1e-9);
   }
+}
+
+TEST_CASE("majorise-minimise skips only steps that solving would leave quiet", "[coop][solver]") {
+  Rng rng(13);
+  std::size_t skipped = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    const CoopEnergy energy = region_coop(rng, 9, 7, 2 + trial % 3, 3);
+    CoopSolver solver(options_for(AuxStrategy::mm, ExpansionStart::zero));
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
+    for (int step = 0; step < 30; ++step) {
+      const Labeling before(solver.labeling().begin(), solver.labeling().end());
+      solver.step();
+      if (!solver.last_step().known_quiet) continue;
+      ++skipped;
+      CHECK(Labeling(solver.labeling().begin(), solver.labeling().end()) == before);
+      // A fresh solver from the same labeling solves the step: it must find nothing either.
+      CoopSolver fresh(options_for(AuxStrategy::mm, ExpansionStart::zero));
+      fresh.bind(energy, before);
+      fresh.step();
+      CHECK_FALSE(fresh.last_step().known_quiet);
+      CHECK(fresh.last_step().expansion_moves > 0);
+      CHECK_FALSE(fresh.last_step().improved);
+      CHECK(Labeling(fresh.labeling().begin(), fresh.labeling().end()) == before);
+      break;
+    }
+  }
+  CHECK(skipped > 0);
 }
 
 TEST_CASE("the auxiliary variables carry over when the solver moves to another level",

@@ -89,6 +89,7 @@ void CoopSolver::bind(const CoopEnergy& energy, std::span<const Label> start) {
   const auto flips = static_cast<std::size_t>(energy.num_labels() * energy.num_classes());
   next_flip_ = last_kept_flip_ < 0 ? 0 : (static_cast<std::size_t>(last_kept_flip_) + 1) % flips;
   tried_unchanged_ = false;
+  quiet_for_.reset();
   last_ = {};
   if (options_.strategy == AuxStrategy::ceres) {
     relaxation_ = std::make_unique<Relaxation>();
@@ -137,6 +138,7 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
   ExpansionSolver<> expansion(expansion_options);
   expansion.bind(pairwise, start);
   const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);
+  expansion_ended_quiet_ = false;
   for (int cycle = 0; cycle < options_.expansion_cycles; ++cycle) {
     bool improved = false;
     for (std::size_t m = 0; m < moves; ++m) {
@@ -144,7 +146,10 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
       improved = improved || expansion.last_step().improved;
       ++last_.expansion_moves;
     }
-    if (!improved) break;
+    if (!improved) {
+      expansion_ended_quiet_ = true;
+      break;
+    }
   }
   kept_bytes_ = std::max(kept_bytes_, expansion.kept_bytes());
   return Labeling(expansion.labeling().begin(), expansion.labeling().end());
@@ -184,7 +189,20 @@ void CoopSolver::greedy_step() {
 
 void CoopSolver::mm_step() {
   const CoopAuxiliary h = CoopAuxiliary::optimal_for(*energy_, labeling_);
+  if (quiet_for_ && *quiet_for_ == h) {
+    last_.known_quiet = true;
+    return;
+  }
   keep_if_lower(expand_for(h, labeling_), h);
+  // The step is a function of (labeling, h). Not kept, the labeling is the same and so is the
+  // next h: the next step would repeat this one. Kept from an expansion whose last cycle moved
+  // nothing, the labeling is a fixed point of E_h's expansion, so a next step with the same h
+  // would keep it (no move lowers E_h by more than rounding). Either way it can be skipped.
+  if (!last_.improved || expansion_ended_quiet_) {
+    quiet_for_ = h;
+  } else {
+    quiet_for_.reset();
+  }
 }
 
 namespace {

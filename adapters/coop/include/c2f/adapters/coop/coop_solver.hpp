@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -83,6 +84,11 @@ struct CoopStep : StepOutcome {
   std::size_t aux_changes = 0;  ///< entries of h the step changed and kept
   std::size_t expansion_moves = 0;
   double relaxation_seconds = 0.0;  ///< ceres: time in the relaxation
+  /// mm: the step was known to change nothing and was not solved. Its h = optimal_for(x) is
+  /// the h of the step before, which either kept nothing (the step would repeat it) or kept x
+  /// from an expansion of E_h whose last cycle moved nothing (x is that expansion's fixed
+  /// point). Reset by bind().
+  bool known_quiet = false;
 };
 
 class CoopSolver {
@@ -138,6 +144,10 @@ class CoopSolver {
   std::ptrdiff_t last_kept_flip_ = -1;
   std::unique_ptr<Relaxation> relaxation_;
   std::size_t kept_bytes_ = 0;
+  bool expansion_ended_quiet_ = false;  ///< expand_for's last cycle lowered nothing
+  /// mm: an h whose step from the current labeling is known to change nothing (CoopStep::
+  /// known_quiet); empty after bind() and after a step that kept a labeling still moving.
+  std::optional<CoopAuxiliary> quiet_for_;
 };
 
 static_assert(AnytimeSolver<CoopSolver, CoopEnergy>);
