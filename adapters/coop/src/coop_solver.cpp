@@ -197,7 +197,8 @@ void CoopSolver::mm_step() {
   // The step is a function of (labeling, h). Not kept, the labeling is the same and so is the
   // next h: the next step would repeat this one. Kept from an expansion whose last cycle moved
   // nothing, the labeling is a fixed point of E_h's expansion, so a next step with the same h
-  // would keep it (no move lowers E_h by more than rounding). Either way it can be skipped.
+  // would leave it as it is (no move lowers E_h by more than rounding). Either way it can be
+  // skipped.
   if (!last_.improved || expansion_ended_quiet_) {
     quiet_for_ = h;
   } else {

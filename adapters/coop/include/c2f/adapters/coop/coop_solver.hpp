@@ -10,6 +10,7 @@
 //           energy decreases. The first step of every binding tries h unchanged.
 //   mm      majorise-minimise: h := the optimum for the current labeling (closed form, so
 //           E_h(x) + const = E(x)), then alpha-expansion of E_h from x; E cannot increase.
+//           A step known to change nothing is not solved (CoopStep::known_quiet).
 //   ceres   a continuous relaxation: label probabilities per pixel (softmax of free logits),
 //           relaxed directed cut sizes per (label, class), a smooth concave surrogate of F
 //           (soft minimum of its two branches); minimised with Ceres' L-BFGS, warm-started from
