@@ -189,16 +189,33 @@ LiftingView lifting_view(const CoopEnergy& energy) {
   view.num_variables = energy.num_variables();
   view.num_labels = energy.num_labels();
   view.unaries = UnaryCosts(energy.unaries(), energy.num_labels());
+  // Colours are numbered in the order their signatures (u-side classes, then v-side classes)
+  // first occur. An edge with one class on each side, as every edge of the original problem,
+  // finds its colour in a table by its class pair; any other signature in a map.
+  std::uint32_t colour_count = 0;
+  constexpr std::uint32_t kUnseen = ~0U;
+  const auto classes = static_cast<std::size_t>(energy.num_classes()) + 1;  // K: the linear one
+  std::vector<std::uint32_t> pair_colours(classes * classes, kUnseen);
   std::map<std::vector<std::uint32_t>, std::uint32_t> colours;
   std::vector<std::uint32_t> signature;
   view.factors.reserve(energy.edges().size());
   for (const CoopEdge& edge : energy.edges()) {
-    signature.clear();
-    for (const ClassWeight& entry : energy.u_side(edge)) signature.push_back(entry.edge_class);
-    signature.push_back(~0U);  // separates the sides
-    for (const ClassWeight& entry : energy.v_side(edge)) signature.push_back(entry.edge_class);
-    const auto colour =
-        colours.try_emplace(signature, static_cast<std::uint32_t>(colours.size())).first->second;
+    const std::span<const ClassWeight> u_side = energy.u_side(edge);
+    const std::span<const ClassWeight> v_side = energy.v_side(edge);
+    std::uint32_t colour;
+    if (u_side.size() == 1 && v_side.size() == 1) {
+      std::uint32_t& known = pair_colours[u_side[0].edge_class * classes + v_side[0].edge_class];
+      if (known == kUnseen) known = colour_count++;
+      colour = known;
+    } else {
+      signature.clear();
+      for (const ClassWeight& entry : u_side) signature.push_back(entry.edge_class);
+      signature.push_back(~0U);  // separates the sides
+      for (const ClassWeight& entry : v_side) signature.push_back(entry.edge_class);
+      const auto [it, inserted] = colours.try_emplace(signature, colour_count);
+      if (inserted) ++colour_count;
+      colour = it->second;
+    }
     view.factors.push_back({edge.u, edge.v, colour, false});
   }
   return view;
@@ -258,16 +275,32 @@ PairwiseEnergy pairwise_energy(const CoopEnergy& energy, const CoopAuxiliary& h)
   std::vector<double> side_u(static_cast<std::size_t>(L)), side_v(static_cast<std::size_t>(L));
   std::vector<double> table(static_cast<std::size_t>(L * L));
   std::string key;
+  // An edge with one entry of equal weight on each side, as every edge of the original problem,
+  // has the term of its class pair: found once per pair, then read from this table.
+  constexpr std::uint32_t kUnseen = ~0U;
+  const auto classes = static_cast<std::size_t>(K) + 1;
+  std::vector<std::uint32_t> pair_terms(classes * classes, kUnseen);
   for (const CoopEdge& edge : energy.edges()) {
+    const std::span<const ClassWeight> u_entries = energy.u_side(edge);
+    const std::span<const ClassWeight> v_entries = energy.v_side(edge);
     double total = 0.0;
-    for (const ClassWeight& entry : energy.u_side(edge)) total += entry.weight;
-    for (const ClassWeight& entry : energy.v_side(edge)) total += entry.weight;
+    for (const ClassWeight& entry : u_entries) total += entry.weight;
+    for (const ClassWeight& entry : v_entries) total += entry.weight;
     if (!(total > 0.0)) continue;
+    std::uint32_t* pair_term = nullptr;
+    if (u_entries.size() == 1 && v_entries.size() == 1 &&
+        u_entries[0].weight == v_entries[0].weight) {
+      pair_term = &pair_terms[u_entries[0].edge_class * classes + v_entries[0].edge_class];
+      if (*pair_term != kUnseen) {
+        edges.push_back({edge.u, edge.v, total, *pair_term});
+        continue;
+      }
+    }
     for (int l = 0; l < L; ++l) {
       double u_sum = 0.0, v_sum = 0.0;
-      for (const ClassWeight& entry : energy.u_side(edge))
+      for (const ClassWeight& entry : u_entries)
         u_sum += (entry.weight / total) * slope(l, entry.edge_class);
-      for (const ClassWeight& entry : energy.v_side(edge))
+      for (const ClassWeight& entry : v_entries)
         v_sum += (entry.weight / total) * slope(l, entry.edge_class);
       side_u[static_cast<std::size_t>(l)] = 0.5 * lambda * u_sum;
       side_v[static_cast<std::size_t>(l)] = 0.5 * lambda * v_sum;
@@ -285,6 +318,7 @@ PairwiseEnergy pairwise_energy(const CoopEnergy& energy, const CoopAuxiliary& h)
       }
       terms.push_back(PairwiseTerm::table(L, table));
     }
+    if (pair_term != nullptr) *pair_term = it->second;
     edges.push_back({edge.u, edge.v, total, it->second});
   }
   if (terms.empty()) terms.push_back(PairwiseTerm::potts());

@@ -94,10 +94,16 @@ void PairwiseEnergy::validate() const {
     }
   });
   for (std::size_t t = 0; t < terms_.size(); ++t) {
-    terms_[t].validate_for(num_labels_, "PairwiseEnergy: terms[" + std::to_string(t) + "]");
+    if (!terms_[t].fits(num_labels_))
+      terms_[t].validate_for(num_labels_, "PairwiseEnergy: terms[" + std::to_string(t) + "]");
   }
+  // One branch-light pass over the edges; only an edge that fails is named (building a name
+  // per edge cost a tenth of a segmentation step's E_h).
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     const Edge& e = edges_[i];
+    const bool valid = e.u < num_variables_ && e.v < num_variables_ && e.u != e.v &&
+                       std::isfinite(e.weight) && e.term < terms_.size();
+    if (valid) continue;
     const std::string name = "PairwiseEnergy: edges[" + std::to_string(i) + "]";
     if (e.u >= num_variables_ || e.v >= num_variables_) {
       throw std::invalid_argument(

@@ -73,7 +73,7 @@ bool PairwiseTerm::is_symmetric() const noexcept {
 }
 
 void PairwiseTerm::validate_for(int num_labels, std::string_view what) const {
-  if (kind_ == TermKind::table && table_labels_ != num_labels) {
+  if (!fits(num_labels)) {
     throw std::invalid_argument(std::string(what) + ": table term has " +
                                 std::to_string(table_labels_) + " labels, the energy has " +
                                 std::to_string(num_labels));

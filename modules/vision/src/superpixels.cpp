@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/slic.hpp>
 #include <stdexcept>
@@ -45,19 +46,25 @@ cv::Mat lab_of_bgr(const cv::Mat& bgr) {
   return lab;
 }
 
-DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
+namespace {
+
+void require_colour_image(const cv::Mat& image) {
   if (image.empty() || image.type() != CV_8UC3) {
     throw std::invalid_argument("slic_partition: the image must be non-empty 8-bit 3-channel");
   }
+}
+
+/// slic_partition of the image whose CIE Lab (lab_of_bgr) is `lab`.
+DensePartition slic_partition_of_lab(const cv::Mat& lab, int region_size,
+                                     const SlicOptions& options) {
   if (region_size < 2) throw std::invalid_argument("slic_partition: region size must be >= 2");
   // OpenCV's SLIC reads out of bounds for regions much larger than the image; a region larger
   // than the image's shorter side is refused.
-  if (region_size > std::min(image.cols, image.rows)) {
+  if (region_size > std::min(lab.cols, lab.rows)) {
     throw std::invalid_argument("slic_partition: region size " + std::to_string(region_size) +
-                                " is larger than the " + std::to_string(image.cols) + "x" +
-                                std::to_string(image.rows) + " image's shorter side");
+                                " is larger than the " + std::to_string(lab.cols) + "x" +
+                                std::to_string(lab.rows) + " image's shorter side");
   }
-  const cv::Mat lab = lab_of_bgr(image);
   const int algorithm =
       options.algorithm == SlicAlgorithm::slic ? cv::ximgproc::SLIC : cv::ximgproc::SLICO;
   auto slic = cv::ximgproc::createSuperpixelSLIC(lab, algorithm, region_size, options.ruler);
@@ -74,6 +81,13 @@ DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicO
   return DensePartition::from_ids(ids);
 }
 
+}  // namespace
+
+DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
+  require_colour_image(image);
+  return slic_partition_of_lab(lab_of_bgr(image), region_size, options);
+}
+
 std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
                                            const std::vector<int>& region_sizes,
                                            const SlicOptions& options) {
@@ -85,9 +99,11 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
           std::to_string(region_sizes[i - 1]) + " then " + std::to_string(region_sizes[i]));
     }
   }
+  require_colour_image(image);
+  const cv::Mat lab = lab_of_bgr(image);
   std::vector<DensePartition> levels;
   for (const int size : region_sizes) {
-    DensePartition superpixels = slic_partition(image, size, options);
+    DensePartition superpixels = slic_partition_of_lab(lab, size, options);
     if (levels.empty()) {
       levels.push_back(std::move(superpixels));
       continue;
@@ -98,8 +114,14 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
 }
 
 SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
-  return [image = image.clone(), options](int region_size) {
-    return slic_partition(image, region_size, options);
+  // The Lab image is converted on the first level that asks (on the run's clock) and kept
+  // for the next ones.
+  return [image = image.clone(), lab = std::make_shared<cv::Mat>(), options](int region_size) {
+    if (lab->empty()) {
+      require_colour_image(image);
+      *lab = lab_of_bgr(image);
+    }
+    return slic_partition_of_lab(*lab, region_size, options);
   };
 }
 

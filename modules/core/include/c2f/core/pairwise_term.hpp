@@ -62,8 +62,12 @@ class PairwiseTerm {
   /// True when cost(a, b) == cost(b, a) for all labels.
   [[nodiscard]] bool is_symmetric() const noexcept;
 
-  /// Throws std::invalid_argument (naming `what`) unless the term can be used with num_labels
-  /// labels: a table term must have exactly num_labels labels.
+  /// Whether the term can be used with num_labels labels: a table term must have exactly
+  /// num_labels labels.
+  [[nodiscard]] bool fits(int num_labels) const noexcept {
+    return kind_ != TermKind::table || table_labels_ == num_labels;
+  }
+  /// Throws std::invalid_argument (naming `what`) unless the term fits num_labels labels.
   void validate_for(int num_labels, std::string_view what) const;
 
   friend bool operator==(const PairwiseTerm&, const PairwiseTerm&) = default;
