@@ -4,11 +4,13 @@
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
 //                     [--configs A,B,...] [--lambda X] [--theta X] [--alpha X]
 //                     [--classes K] [--kmeans reference|plusplus] [--gmm-seed S] [--edge-seed S]
-//                     [--memory GIB]
+//                     [--memory GIB] [--expansion-cycles N]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
-//       and reductions on it), and prints one tab-separated row per configuration. Traces go to
+//       and reductions on it), and prints one tab-separated row per configuration (the
+//       cooperative cut's steps make at most --expansion-cycles alpha-expansion cycles, 0: the
+//       strategy's own, CoopSolverOptions::cycles()). Traces go to
 //       OUT/NAME-CONFIG.csv. The memory budget (--memory, default as c2f-segment's) must hold
 //       the data preparation, and the Potts runs' recycled move graphs get what it leaves.
 //   c2f-bench-segment summarize ROWS.tsv
@@ -96,7 +98,8 @@ const std::vector<Config>& configs() {
 }
 
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
-          double time_limit, const MemoryBudget& memory, const std::string& trace_path) {
+          double time_limit, int expansion_cycles, const MemoryBudget& memory,
+          const std::string& trace_path) {
   const Schedule schedule = parse_segmentation_schedule(config.schedule, scene.num_labels());
   ScheduleProvider levels = segmentation_levels(schedule, scene);
   // Coarse levels end after L steps without decrease (a whole sweep when the configuration
@@ -106,6 +109,7 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   run_config.method = config.potts ? SegmentationMethod::potts : SegmentationMethod::coop;
   run_config.coop.strategy = config.strategy;
   run_config.coop.start = config.start;
+  run_config.coop.expansion_cycles = expansion_cycles;
   run_config.plateau = config.sweep_plateau ? -1 : 0;
   run_config.time_limit_seconds = time_limit;
   run_config.memory = memory;
@@ -143,7 +147,8 @@ const char* kColumns[] = {"image",
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
               const std::vector<std::string>& selected, const CoopParameters& parameters,
-              const DataPreparation& preparation, const MemoryBudget& memory) {
+              const DataPreparation& preparation, int expansion_cycles,
+              const MemoryBudget& memory) {
   const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
   memory.require("segmenting " + set + "/" + name,
                  segmentation_memory_estimate(scene.image.total(), scene.num_labels()));
@@ -173,7 +178,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
                                   ", which is not in the list");
     }
     std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
-    Run run = solve(config, scene, problem, time_limit, memory,
+    Run run = solve(config, scene, problem, time_limit, expansion_cycles, memory,
                     (output.staging() / (name + "-" + config.name + ".csv")).string());
     double reach = std::nan(""), ratio = std::nan(""), flat_error = std::nan(""),
            c2f_error = std::nan("");
@@ -284,6 +289,7 @@ int main(int argc, char** argv) {
     double time_limit = 600;
     bool header = false;
     double memory_gib = 0.0;  // 0: default_memory_budget()
+    int expansion_cycles = CoopSolverOptions{}.expansion_cycles;
     CoopParameters parameters;
     c2f::examples::PreparationFlags preparation;
     c2f::examples::ToolOptions options(
@@ -297,6 +303,9 @@ int main(int argc, char** argv) {
         .real("memory", &memory_gib, {0.0, 1e6, false},
               "the memory budget in GiB, as c2f-segment --memory (0, the default: a quarter of "
               "this machine's memory, growing to a run's needs up to half)")
+        .integer("expansion-cycles", &expansion_cycles, {0, 1000},
+                 "most alpha-expansion cycles of E_h per step of the cooperative cut (0: the "
+                 "strategy's own, CoopSolverOptions::cycles())")
         .flag("header", &header, "print the TSV header first");
     c2f::examples::declare_coop_parameters(options, parameters);
     c2f::examples::declare_data_preparation(options, preparation);
@@ -321,7 +330,7 @@ int main(int argc, char** argv) {
             ? memory_budget_of_gib(memory_gib, "--memory " + c2f::format_real(memory_gib))
             : default_memory_budget();
     return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected,
-                     parameters, preparation.resolved(), memory);
+                     parameters, preparation.resolved(), expansion_cycles, memory);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

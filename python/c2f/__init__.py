@@ -270,7 +270,8 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
     options : dict, optional
         The cooperative cut's solver: ``aux``, how its auxiliary variables are found ('mm',
         majorise-minimise, the default; 'greedy'; 'ceres', a continuous relaxation),
-        ``start`` (greedy's expansion start: 'zero' or 'current'), ``expansion_cycles``.
+        ``start`` (greedy's expansion start: 'zero' or 'current'), ``expansion_cycles`` (the
+        most alpha-expansion cycles of a step; by default 1 for 'mm', 10 for the others).
     lambda_, theta, alpha : float
         The cooperative cut's weight, threshold and ratio (docs/segmentation.md).
     classes, kmeans, gmm_seed, edge_seed : int, str, int, int

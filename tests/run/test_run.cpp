@@ -197,7 +197,7 @@ TEST_CASE("every refusal of the run layer names its field", "[run][validation]")
              Catch::StartsWith("the test energy needs ") && Catch::EndsWith("(a tiny budget)"));
 
   CoopRunConfig coop;
-  coop.solver.expansion_cycles = 0;
+  coop.solver.expansion_cycles = -1;
   CHECK(refusal(random_coop_energy(rng, 6, 5, 3, 2), coop).field() == "solver");
 }
 

@@ -43,8 +43,13 @@ std::string RelaxationOptions::validate() const {
   return {};
 }
 
+int CoopSolverOptions::cycles() const noexcept {
+  if (expansion_cycles > 0) return expansion_cycles;
+  return strategy == AuxStrategy::mm ? 1 : 10;
+}
+
 std::string CoopSolverOptions::validate() const {
-  if (expansion_cycles < 1) return "expansion_cycles must be >= 1";
+  if (expansion_cycles < 0) return "expansion_cycles must be >= 0 (0: the strategy's own)";
   if (threads < 0) return "threads must be >= 0";
   return relaxation.validate();
 }
@@ -52,6 +57,13 @@ std::string CoopSolverOptions::validate() const {
 /// The ceres strategy's work array: the logits of the relaxation.
 struct CoopSolver::Relaxation {
   std::vector<double> logits;
+};
+
+/// An alpha-expansion of E_h, with the energy it is bound to.
+struct CoopSolver::KeptExpansion {
+  CoopAuxiliary h;
+  PairwiseEnergy pairwise;
+  ExpansionSolver<> solver;
 };
 
 CoopSolver::CoopSolver(CoopSolverOptions options) : options_(options) {
@@ -90,6 +102,7 @@ void CoopSolver::bind(const CoopEnergy& energy, std::span<const Label> start) {
   next_flip_ = last_kept_flip_ < 0 ? 0 : (static_cast<std::size_t>(last_kept_flip_) + 1) % flips;
   tried_unchanged_ = false;
   quiet_for_.reset();
+  expansion_.reset();
   last_ = {};
   if (options_.strategy == AuxStrategy::ceres) {
     relaxation_ = std::make_unique<Relaxation>();
@@ -124,22 +137,29 @@ std::size_t CoopSolver::flow_parts(const CoopEnergy& energy) const {
 }
 
 Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> start) {
-  const PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
-  // Of graph_memory_limit, a quarter may keep the move problems when all of them fit in it; the
-  // recycled graphs get the rest.
-  ExpansionOptions expansion_options;
-  expansion_options.threads = options_.threads;
-  const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
-                                   .value_or(static_cast<std::size_t>(-1));
-  expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;
-  expansion_options.graph_memory_limit =
-      options_.graph_memory_limit -
-      (problems <= expansion_options.problem_memory_limit ? problems : 0);
-  ExpansionSolver<> expansion(expansion_options);
-  expansion.bind(pairwise, start);
-  const std::size_t moves = expansion.quiet_steps_to_converge(pairwise);
+  const bool goes_on = expansion_ != nullptr && expansion_->h == h &&
+                       std::ranges::equal(expansion_->solver.labeling(), start);
+  if (!goes_on) {
+    expansion_.reset();  // its graphs are freed before the next ones are built
+    PairwiseEnergy pairwise = pairwise_energy(*energy_, h);
+    // Of graph_memory_limit, a quarter may keep the move problems when all of them fit in it;
+    // the recycled graphs get the rest.
+    ExpansionOptions expansion_options;
+    expansion_options.threads = options_.threads;
+    const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
+                                     .value_or(static_cast<std::size_t>(-1));
+    expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;
+    expansion_options.graph_memory_limit =
+        options_.graph_memory_limit -
+        (problems <= expansion_options.problem_memory_limit ? problems : 0);
+    expansion_ = std::make_unique<KeptExpansion>(
+        KeptExpansion{h, std::move(pairwise), ExpansionSolver<>(expansion_options)});
+    expansion_->solver.bind(expansion_->pairwise, start);
+  }
+  ExpansionSolver<>& expansion = expansion_->solver;
+  const std::size_t moves = expansion.quiet_steps_to_converge(expansion_->pairwise);
   expansion_ended_quiet_ = false;
-  for (int cycle = 0; cycle < options_.expansion_cycles; ++cycle) {
+  for (int cycle = 0; cycle < options_.cycles(); ++cycle) {
     bool improved = false;
     for (std::size_t m = 0; m < moves; ++m) {
       expansion.step();

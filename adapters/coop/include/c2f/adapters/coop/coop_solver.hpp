@@ -9,8 +9,9 @@
 //           labeling (the reference) or from the current one, and keeps both only when the true
 //           energy decreases. The first step of every binding tries h unchanged.
 //   mm      majorise-minimise: h := the optimum for the current labeling (closed form, so
-//           E_h(x) + const = E(x)), then alpha-expansion of E_h from x; E cannot increase.
-//           A step known to change nothing is not solved (CoopStep::known_quiet).
+//           E_h(x) + const = E(x)), then one cycle of alpha-expansion of E_h from x; E cannot
+//           increase. A step whose h is the last step's goes on with the same expansion; a
+//           step known to change nothing is not solved (CoopStep::known_quiet).
 //   ceres   a continuous relaxation: label probabilities per pixel (softmax of free logits),
 //           relaxed directed cut sizes per (label, class), a smooth concave surrogate of F
 //           (soft minimum of its two branches); minimised with Ceres' L-BFGS, warm-started from
@@ -62,9 +63,9 @@ struct RelaxationOptions {
 struct CoopSolverOptions {
   AuxStrategy strategy = AuxStrategy::mm;
   ExpansionStart start = ExpansionStart::zero;  ///< greedy only
-  /// Cycles over all labels of one alpha-expansion run (it stops earlier after a cycle that
-  /// does not lower E_h), as the reference's expansion(10).
-  int expansion_cycles = 10;
+  /// Cycles over all labels of one step's alpha-expansion of E_h (it stops earlier after a
+  /// cycle that does not lower E_h); 0: the strategy's own, cycles().
+  int expansion_cycles = 0;
   RelaxationOptions relaxation;  ///< ceres only
   /// Bytes each step's alpha-expansion may keep in recycled move graphs
   /// (MoveOptions::graph_memory_limit); the run layer (c2f/run/coop_run.hpp) lowers it to what
@@ -74,6 +75,12 @@ struct CoopSolverOptions {
   /// (ExpansionOptions::threads; 0: the machine's cores). The result is the same for every count.
   int threads = 0;
 
+  /// The cycles each step's alpha-expansion makes at most: expansion_cycles, or by default 10
+  /// for greedy and ceres (the reference's expansion(10)) and 1 for mm, whose next step then
+  /// starts from a fresh h = optimal_for(x) (E_h is tighter there); when that h is the same,
+  /// the step goes on with the same alpha-expansion, so a fixed point is still confirmed by a
+  /// cycle that lowers nothing.
+  [[nodiscard]] int cycles() const noexcept;
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
 };
@@ -126,7 +133,11 @@ class CoopSolver {
 
  private:
   struct Relaxation;
-  /// Alpha-expansion of E_h from `start`; the labeling it ends with.
+  struct KeptExpansion;
+  /// Alpha-expansion of E_h from `start` (options.cycles() cycles at most); the labeling it
+  /// ends with. The expansion is kept after the step, and the next call with the same h from
+  /// the labeling it ended with goes on with it (its recycled graphs, its kept move problems)
+  /// instead of building E_h and its graphs again.
   Labeling expand_for(const CoopAuxiliary& h, std::span<const Label> start);
   /// Keeps `candidate` (and h) when its true energy is lower; fills last_.
   void keep_if_lower(Labeling candidate, const CoopAuxiliary& h);
@@ -144,6 +155,7 @@ class CoopSolver {
   std::size_t next_flip_ = 0;     ///< greedy: index l * K + g of the next entry to flip
   std::ptrdiff_t last_kept_flip_ = -1;
   std::unique_ptr<Relaxation> relaxation_;
+  std::unique_ptr<KeptExpansion> expansion_;  ///< the last step's, for this binding
   std::size_t kept_bytes_ = 0;
   bool expansion_ended_quiet_ = false;  ///< expand_for's last cycle lowered nothing
   /// mm: an h whose step from the current labeling is known to change nothing (CoopStep::
