@@ -48,7 +48,8 @@ ScheduleProvider schedule_provider(const Schedule& schedule, const ModelEnergy& 
         "(c2f.stereo_energy)");
   }
   return ScheduleProvider(
-      schedule, shape, model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide));
+      schedule, shape,
+      model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide, {}, schedule));
 }
 
 DensePartition partition_from(const py::handle& object, const std::string& name,

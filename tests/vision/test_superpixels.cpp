@@ -81,6 +81,27 @@ TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[visio
   CHECK(slic_partition(image, 48).num_variables() == 64 * 48);
 }
 
+TEST_CASE("a schedule's superpixel levels computed at once are those computed one by one",
+          "[vision][slic]") {
+  cv::Mat image = quadrants();
+  cv::RNG noise(3);
+  cv::Mat speckle(image.size(), CV_8UC3);
+  noise.fill(speckle, cv::RNG::UNIFORM, 0, 40);
+  image += speckle;
+  const Schedule schedule = Schedule::parse("slic:16 slic:8 slic:4");
+  const SuperpixelSource together = slic_source(image, {}, schedule);
+  for (const int size : {16, 8, 4}) CHECK(together(size) == slic_partition(image, size));
+  // A size asked again, or one the schedule does not name, is computed on its own.
+  CHECK(together(8) == slic_partition(image, 8));
+  CHECK(together(12) == slic_partition(image, 12));
+  // A size that cannot be computed throws when its level asks for it, not before.
+  const SuperpixelSource too_large = slic_source(image, {}, Schedule::parse("slic:8 slic:49"));
+  CHECK(too_large(8) == slic_partition(image, 8));
+  CHECK_THROWS_WITH(too_large(49), Catch::Contains("region size 49 is larger than the 64x48"));
+  CHECK_THROWS_WITH(slic_source(cv::Mat(4, 4, CV_8UC1), {}, schedule)(16),
+                    Catch::Contains("non-empty 8-bit 3-channel"));
+}
+
 TEST_CASE("partition pictures colour the largest groups and group means", "[vision][render]") {
   // Groups: 0 has 3 pixels, 1 has 2, 2 has 1 (a 3x2 grid).
   const DensePartition partition({0, 0, 1, 0, 1, 2}, 3);

@@ -5,11 +5,16 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <exception>
+#include <map>
 #include <memory>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/slic.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace c2f::vision {
 
@@ -113,16 +118,94 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
   return levels;
 }
 
-SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
-  // The Lab image is converted on the first level that asks (on the run's clock) and kept
-  // for the next ones.
-  return [image = image.clone(), lab = std::make_shared<cv::Mat>(), options](int region_size) {
-    if (lab->empty()) {
+namespace {
+
+/// What a slic_source keeps between its calls.
+struct SlicCache {
+  cv::Mat image;
+  SlicOptions options;
+  std::vector<int> together;  ///< sizes computed at once on the first call for one of them
+  bool together_done = false;
+  cv::Mat lab;  ///< converted on the first call (on the run's clock) and kept
+  std::map<int, DensePartition> ready;
+  std::map<int, std::exception_ptr> failed;
+
+  DensePartition superpixels(int region_size) {
+    if (lab.empty()) {
       require_colour_image(image);
-      *lab = lab_of_bgr(image);
+      lab = lab_of_bgr(image);
     }
-    return slic_partition_of_lab(*lab, region_size, options);
-  };
+    if (!together_done && std::ranges::find(together, region_size) != together.end()) {
+      together_done = true;
+      compute_together();
+    }
+    if (const auto error = failed.find(region_size); error != failed.end()) {
+      const std::exception_ptr thrown = error->second;
+      failed.erase(error);
+      std::rethrow_exception(thrown);
+    }
+    if (const auto done = ready.find(region_size); done != ready.end()) {
+      DensePartition partition = std::move(done->second);
+      ready.erase(done);
+      return partition;
+    }
+    return slic_partition_of_lab(lab, region_size, options);
+  }
+
+  /// One size per task of OpenCV's own parallel loop: OpenCV runs a parallel loop nested in
+  /// another serially, so each size's SLIC runs on the thread of its task.
+  void compute_together() {
+    const auto count = static_cast<int>(together.size());
+    std::vector<std::optional<DensePartition>> results(together.size());
+    std::vector<std::exception_ptr> errors(together.size());
+    cv::parallel_for_(
+        cv::Range(0, count),
+        [&](const cv::Range& range) {
+          for (int i = range.start; i < range.end; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            try {
+              results[k] = slic_partition_of_lab(lab, together[k], options);
+            } catch (...) {
+              errors[k] = std::current_exception();
+            }
+          }
+        },
+        count);
+    for (std::size_t k = 0; k < together.size(); ++k) {
+      if (errors[k]) {
+        failed.emplace(together[k], errors[k]);
+      } else {
+        ready.emplace(together[k], std::move(*results[k]));
+      }
+    }
+  }
+};
+
+SuperpixelSource source_of(std::shared_ptr<SlicCache> cache) {
+  return [cache = std::move(cache)](int region_size) { return cache->superpixels(region_size); };
+}
+
+}  // namespace
+
+SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
+  auto cache = std::make_shared<SlicCache>();
+  cache->image = image.clone();
+  cache->options = options;
+  return source_of(std::move(cache));
+}
+
+SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options, const Schedule& schedule) {
+  auto cache = std::make_shared<SlicCache>();
+  cache->image = image.clone();
+  cache->options = options;
+  for (const LevelSpec& level : schedule.levels) {
+    if (const auto* slic = std::get_if<SlicLevel>(&level.partition);
+        slic != nullptr &&
+        std::ranges::find(cache->together, slic->region_size) == cache->together.end())
+      cache->together.push_back(slic->region_size);
+  }
+  if (cache->together.size() < 2) cache->together.clear();  // nothing to compute at once
+  return source_of(std::move(cache));
 }
 
 }  // namespace c2f::vision

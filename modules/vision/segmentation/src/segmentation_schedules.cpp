@@ -18,7 +18,8 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels) {
 ScheduleProvider segmentation_levels(Schedule schedule, const SegmentationScene& scene) {
   SlicOptions options;
   options.iterations = kSegmentationSlicIterations;
-  ScheduleProvider levels(std::move(schedule), scene.shape(), slic_source(scene.image, options));
+  SuperpixelSource superpixels = slic_source(scene.image, options, schedule);
+  ScheduleProvider levels(std::move(schedule), scene.shape(), std::move(superpixels));
   // Class 0 for unseeded pixels, 1 + l for the seeds of label l.
   std::vector<int> classes(scene.seeds.size());
   for (std::size_t v = 0; v < classes.size(); ++v) classes[v] = scene.seeds[v] + 1;

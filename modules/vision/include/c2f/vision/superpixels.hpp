@@ -41,7 +41,16 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
                                            const std::vector<int>& region_sizes,
                                            const SlicOptions& options = {});
 
-/// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied.
+/// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied
+/// and converted to Lab once, on the first call.
 SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options = {});
+
+/// The same for the slic:S levels of `schedule`: the first call for one of their sizes computes
+/// the superpixels of all of them at once, each size on a thread of its own (OpenCV's SLIC
+/// gains nothing from a second thread here: 001_oct's slic:8 took 76 ms on one and 100 ms on
+/// two), and keeps the others for their levels. The partitions are those slic_partition gives
+/// (OpenCV's SLIC does not depend on its threads); a size that cannot be computed throws when
+/// its level asks for it, as with the source above.
+SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options, const Schedule& schedule);
 
 }  // namespace c2f::vision
