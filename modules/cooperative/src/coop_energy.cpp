@@ -134,15 +134,25 @@ CoopEnergy reduce(const CoopEnergy& energy, const GroupIds& partition) {
     for (std::size_t l = 0; l < L; ++l) unaries[g * L + l] += energy.unaries()[v * L + l];
   }
   // Entries of edges between groups as (smaller group, larger group, side, class, weight),
-  // sorted, then merged: one edge per group pair, one entry per (side, class).
+  // put in order of (a, b, side, class) and merged: one edge per group pair, one entry per
+  // (side, class). Equal keys keep the order of the energy's edges and entries, so a merged
+  // weight is summed in that order. The order: by a in buckets (a counting pass over the edges),
+  // then each bucket (a group's boundary, small) sorted by (b, side, class, position).
   struct Item {
     VariableIndex a, b;
     std::uint8_t side;  // 0: a's side, 1: b's side
     std::uint32_t edge_class;
     double weight;
   };
-  std::vector<Item> items;
-  items.reserve(energy.entries().size());
+  std::vector<std::size_t> bucket_start(groups + 1, 0);
+  for (const CoopEdge& edge : energy.edges()) {
+    const VariableIndex gu = partition[edge.u];
+    const VariableIndex gv = partition[edge.v];
+    if (gu != gv) bucket_start[std::min(gu, gv) + 1] += edge.last - edge.first;
+  }
+  for (std::size_t g = 0; g < groups; ++g) bucket_start[g + 1] += bucket_start[g];
+  std::vector<Item> items(bucket_start[groups]);
+  std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
   for (const CoopEdge& edge : energy.edges()) {
     const VariableIndex gu = partition[edge.u];
     const VariableIndex gv = partition[edge.v];
@@ -150,16 +160,22 @@ CoopEnergy reduce(const CoopEnergy& energy, const GroupIds& partition) {
     const bool flipped = gv < gu;
     const VariableIndex a = flipped ? gv : gu;
     const VariableIndex b = flipped ? gu : gv;
+    std::size_t& slot = next[a];
     for (const ClassWeight& entry : energy.u_side(edge))
-      items.push_back(
-          {a, b, static_cast<std::uint8_t>(flipped ? 1 : 0), entry.edge_class, entry.weight});
+      items[slot++] = {a, b, static_cast<std::uint8_t>(flipped ? 1 : 0), entry.edge_class,
+                       entry.weight};
     for (const ClassWeight& entry : energy.v_side(edge))
-      items.push_back(
-          {a, b, static_cast<std::uint8_t>(flipped ? 0 : 1), entry.edge_class, entry.weight});
+      items[slot++] = {a, b, static_cast<std::uint8_t>(flipped ? 0 : 1), entry.edge_class,
+                       entry.weight};
   }
-  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) {
-    return std::tie(x.a, x.b, x.side, x.edge_class) < std::tie(y.a, y.b, y.side, y.edge_class);
-  });
+  for (std::size_t g = 0; g < groups; ++g) {
+    std::stable_sort(items.begin() + static_cast<std::ptrdiff_t>(bucket_start[g]),
+                     items.begin() + static_cast<std::ptrdiff_t>(bucket_start[g + 1]),
+                     [](const Item& x, const Item& y) {
+                       return std::tie(x.b, x.side, x.edge_class) <
+                              std::tie(y.b, y.side, y.edge_class);
+                     });
+  }
   std::vector<CoopEdge> edges;
   std::vector<ClassWeight> entries;
   for (std::size_t i = 0; i < items.size();) {
