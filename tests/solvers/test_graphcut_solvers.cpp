@@ -174,11 +174,13 @@ PairwiseEnergy integral_grid_energy(Rng& rng, std::size_t side, int num_labels, 
 /// Runs `steps` steps of a solver and returns every labeling it passed through. Counts the
 /// steps that were solved on their move's own graph (recycled) and those that could have been:
 /// a move (label or pair) gets its own graph (plain or QPBO) on its second visit of that graph,
-/// so every visit from the third on.
+/// so every visit from the third on (from the second on with `from_second`:
+/// MoveOptions::first_move_own_graph).
 template <class Solver>
 std::vector<Labeling> labelings_of_run(Solver& solver, const PairwiseEnergy& energy, int steps,
                                        std::size_t* recycled_steps = nullptr,
-                                       std::size_t* repeated_moves = nullptr) {
+                                       std::size_t* repeated_moves = nullptr,
+                                       bool from_second = false) {
   solver.bind(energy, Labeling(energy.num_variables(), 0));
   std::vector<Labeling> labelings;
   std::map<std::tuple<Label, Label, bool>, int> visits;
@@ -187,7 +189,7 @@ std::vector<Labeling> labelings_of_run(Solver& solver, const PairwiseEnergy& ene
     const MoveStep& step = solver.last_step();
     if (recycled_steps != nullptr) *recycled_steps += step.recycled;
     if (repeated_moves != nullptr)
-      *repeated_moves += ++visits[{step.alpha, step.beta, step.used_qpbo}] >= 3;
+      *repeated_moves += ++visits[{step.alpha, step.beta, step.used_qpbo}] >= (from_second ? 2 : 3);
     labelings.emplace_back(solver.labeling().begin(), solver.labeling().end());
   }
   return labelings;
@@ -232,6 +234,15 @@ TEST_CASE("recycled and shared move graphs make exactly the moves of graphs solv
     CHECK(recycled == repeated);
     CHECK(repeated >= static_cast<std::size_t>(steps - 4 * num_labels));
     CHECK(recycled_with_shared == 0);
+    // A label's graph its own from its first move: recycled from its second move on.
+    ExpansionOptions own_first;
+    own_first.first_move_own_graph = true;
+    ExpansionSolver<DynamicMaxFlow> with_own_first(own_first);
+    std::size_t own_recycled = 0, own_repeated = 0;
+    CHECK(recycled_run ==
+          labelings_of_run(with_own_first, energy, steps, &own_recycled, &own_repeated, true));
+    CHECK(own_recycled == own_repeated);
+    CHECK(own_recycled > recycled);
     if (trial % 3 != 2) {  // swap needs a semi-metric
       std::size_t swap_recycled = 0, swap_repeated = 0;
       SwapSolver<DynamicMaxFlow> swap_recycling;  // the default: every pair has its own graphs
@@ -304,6 +315,19 @@ TEST_CASE("a full graph budget evicts only graphs idle since the requesting key'
   CHECK(graphs.evictions() == 2);
   CHECK(owns(1, GraphKind::qpbo));
   CHECK(owns(2));
+
+  // A key's graph its own from its first move (MoveOptions::first_move_own_graph), while it
+  // fits without evicting anything; else from its second move, evicting idle graphs.
+  graphs.clear();
+  graphs.recycle(4, 200, true);
+  CHECK_FALSE(owns(0));  // its own, new: solved from zero flow
+  CHECK_FALSE(owns(1));
+  CHECK_FALSE(owns(2));  // no room: shared
+  CHECK(graphs.owned_bytes() == 200);
+  CHECK(owns(0));
+  CHECK(owns(1));
+  CHECK_FALSE(owns(2));  // both graphs were used since key 2's last move
+  CHECK(graphs.evictions() == 0);
 }
 
 TEST_CASE("patched expansion problems are bitwise the problems computed in full",

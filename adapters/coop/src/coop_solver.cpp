@@ -146,6 +146,10 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
     // the recycled graphs get the rest.
     ExpansionOptions expansion_options;
     expansion_options.threads = options_.threads;
+    // A step's expansion makes one cycle, or goes on for the next step: each label's move
+    // solved on a graph of its own from zero flow, then resumed from it, beats re-solving the
+    // other labels' graph (whose moves freed other variables).
+    expansion_options.first_move_own_graph = true;
     const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
                                      .value_or(static_cast<std::size_t>(-1));
     expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;

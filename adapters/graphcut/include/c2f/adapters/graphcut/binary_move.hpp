@@ -20,7 +20,8 @@
 // flow even for another label); from its second move on it has a graph of its own (a copy of
 // the graph solved last) while such graphs fit in a memory limit; when one does not, graphs
 // idle since before that key's previous move are evicted, least recently used first
-// (detail::MoveGraphs). Other backends solve every move from zero flow.
+// (detail::MoveGraphs). With MoveOptions::first_move_own_graph a key's graph is its own from
+// its first move, solved from zero flow. Other backends solve every move from zero flow.
 
 #include <algorithm>
 #include <chrono>
@@ -85,9 +86,10 @@ class BinaryMoveSolver {
 
   /// Lets moves with keys 0..num_keys-1 keep graphs of their own (recycling) while all such
   /// graphs stay within memory_limit bytes. Only backends that resume from their flow
-  /// (ReusingMaxFlow) recycle. Call after bind(); a later bind() ends recycling.
-  void recycle(std::size_t num_keys, std::size_t memory_limit) {
-    graphs_.recycle(num_keys, memory_limit);
+  /// (ReusingMaxFlow) recycle; with first_move_own a key's graph is its own from its first
+  /// move (MoveOptions::first_move_own_graph). Call after bind(); a later bind() ends recycling.
+  void recycle(std::size_t num_keys, std::size_t memory_limit, bool first_move_own = false) {
+    graphs_.recycle(num_keys, memory_limit, first_move_own);
   }
 
   /// Solves every move's max-flow in `parts` parts at once on up to `threads` threads, when the

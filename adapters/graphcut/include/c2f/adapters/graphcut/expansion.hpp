@@ -93,7 +93,8 @@ class ExpansionSolver {
     }
     // Region and whole sweeps never hold their graphs at once (end_sweep), so each may recycle
     // within the whole limit.
-    state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit);
+    state_.bind(energy, start, "ExpansionSolver::bind: start", keys, graph_limit,
+                options_.first_move_own_graph);
     state_.tally_changes(incidences.get(), options_.threads);
     incidence_ = shift_moves_ ? incidences.get() : nullptr;
     parts_ = flow_parts(energy);

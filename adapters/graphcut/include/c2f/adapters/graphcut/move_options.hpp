@@ -30,6 +30,15 @@ struct MoveOptions {
   /// arithmetic results do not depend on it; with rounding, ties between minimum cuts may break
   /// differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
+  /// With recycling, false (the default): a key's first move re-solves one shared graph from
+  /// whatever move it solved before, and the key gets a graph of its own, a copy of the graph
+  /// solved last, on its second move. true: a key's first move builds a graph of its own and
+  /// solves it from zero flow, so its second move changes only what moved since its first. That
+  /// pays where consecutive keys' moves have little in common, as the two labels' moves of a
+  /// binary problem: CoopSolver sets it for E_h (docs/segmentation.md). From a labeling near
+  /// its minimum, as on the original level of a coarse-to-fine grid run, re-solving the shared
+  /// graph is faster (docs/history/results-2026-12.md).
+  bool first_move_own_graph = false;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;

@@ -49,7 +49,7 @@ class SwapSolver {
     require_semi_metric(energy, "SwapSolver::bind");
     const auto num_labels = static_cast<std::size_t>(energy.num_labels());
     state_.bind(energy, start, "SwapSolver::bind: start", num_labels * num_labels,
-                options_.graph_memory_limit);
+                options_.graph_memory_limit, options_.first_move_own_graph);
     std::vector<std::pair<Label, Label>> label_pairs;
     for (Label a = 0; a < energy.num_labels(); ++a) {
       for (Label b = a + 1; b < energy.num_labels(); ++b) label_pairs.emplace_back(a, b);

@@ -73,11 +73,15 @@ class MoveGraphs {
     own_.resize(keys);
   }
 
-  /// Keys 0..num_keys-1 may own graphs while all owned graphs take at most memory_limit bytes.
-  void recycle(std::size_t num_keys, std::size_t memory_limit) {
+  /// Keys 0..num_keys-1 may own graphs while all owned graphs take at most memory_limit bytes:
+  /// from their second move on, a copy of the graph solved last; with first_move_own, from
+  /// their first move on, a graph of their own solved from zero flow
+  /// (MoveOptions::first_move_own_graph).
+  void recycle(std::size_t num_keys, std::size_t memory_limit, bool first_move_own = false) {
     own_.clear();
     own_.resize(num_keys);
     memory_limit_ = memory_limit;
+    first_move_own_ = first_move_own;
     owned_bytes_ = 0;
     evictions_ = 0;
   }
@@ -106,8 +110,8 @@ class MoveGraphs {
         own.last_use[k] = clock_;
         if (mine) {
           recycled = true;
-        } else if (previous_use > 0 && make_room(graph_bytes, previous_use)) {
-          const MoveGraph<Backend>* last = last_graph(kind);
+        } else if ((first_move_own_ || previous_use > 0) && make_room(graph_bytes, previous_use)) {
+          const MoveGraph<Backend>* last = first_move_own_ ? nullptr : last_graph(kind);
           mine = last != nullptr ? copy_of(*last, threads) : std::make_unique<MoveGraph<Backend>>();
           own.bytes[k] = graph_bytes;
           owned_bytes_ += graph_bytes;
@@ -169,6 +173,7 @@ class MoveGraphs {
   std::vector<Owned> own_;                      // per key
   std::size_t last_key_[2] = {kNoKey, kNoKey};  // whose graph of each kind solved last
   std::size_t memory_limit_ = 0;
+  bool first_move_own_ = false;  // recycle()'s first_move_own
   std::size_t owned_bytes_ = 0;
   std::uint64_t clock_ = 0;  // acquire() calls since clear()
   std::size_t evictions_ = 0;

@@ -46,15 +46,16 @@ struct MoveState {
 
   /// Validates `start` against the energy (messages begin with `context`), takes it as the
   /// current labeling and fixes the move graphs' topology; moves with keys 0..num_keys-1 may
-  /// recycle their graphs within graph_memory_limit bytes (BinaryMoveSolver::recycle).
+  /// recycle their graphs within graph_memory_limit bytes (BinaryMoveSolver::recycle, which
+  /// takes first_move_own).
   void bind(const PairwiseEnergy& e, std::span<const Label> start, std::string_view context,
-            std::size_t num_keys, std::size_t graph_memory_limit) {
+            std::size_t num_keys, std::size_t graph_memory_limit, bool first_move_own = false) {
     validate_labeling(start, e.num_variables(), e.num_labels(), context);
     energy = &e;
     labeling.assign(start.begin(), start.end());
     candidate.resize(labeling.size());
     moves.bind(e);
-    moves.recycle(num_keys, graph_memory_limit);
+    moves.recycle(num_keys, graph_memory_limit, first_move_own);
     d.resize(e.num_variables());
     p.resize(e.edges().size());
     out.resize(e.num_variables());
