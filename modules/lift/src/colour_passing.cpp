@@ -49,14 +49,26 @@ LiftingView lifting_view(const PairwiseEnergy& energy) {
   SignatureColours pair_colours(16);
   std::u32string signature;
   view.factors.resize(edges.size());
+  // An edge of the same term and weight as the edge before (every edge of a grid of one
+  // weight) has its colour: the maps are asked only when either changes.
+  std::uint32_t last_term = 0;
+  std::uint64_t last_bits = 0;
+  ColourFactor last{};
+  bool have_last = false;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const double weight = edges[e].weight == 0.0 ? 0.0 : edges[e].weight;  // -0 == +0
     const auto bits = std::bit_cast<std::uint64_t>(weight);
-    const auto weight_id =
-        weight_ids.try_emplace(bits, static_cast<std::uint32_t>(weight_ids.size())).first->second;
-    signature = {static_cast<char32_t>(edges[e].term), static_cast<char32_t>(weight_id)};
-    view.factors[e] = {edges[e].u, edges[e].v, pair_colours.colour_of(signature),
-                       energy.terms()[edges[e].term].is_symmetric()};
+    if (!have_last || edges[e].term != last_term || bits != last_bits) {
+      const auto weight_id =
+          weight_ids.try_emplace(bits, static_cast<std::uint32_t>(weight_ids.size())).first->second;
+      signature = {static_cast<char32_t>(edges[e].term), static_cast<char32_t>(weight_id)};
+      last = {0, 0, pair_colours.colour_of(signature),
+              energy.terms()[edges[e].term].is_symmetric()};
+      last_term = edges[e].term;
+      last_bits = bits;
+      have_last = true;
+    }
+    view.factors[e] = {edges[e].u, edges[e].v, last.colour, last.symmetric};
   }
   return view;
 }
