@@ -97,8 +97,8 @@ void PairwiseEnergy::validate() const {
     if (!terms_[t].fits(num_labels_))
       terms_[t].validate_for(num_labels_, "PairwiseEnergy: terms[" + std::to_string(t) + "]");
   }
-  // One branch-light pass over the edges; only an edge that fails is named (building a name
-  // per edge cost a tenth of a segmentation step's E_h).
+  // One branch-light pass over the edges; a name is built only for an edge that fails (an
+  // energy is validated on every construction, e.g. each cooperative-cut step's E_h).
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     const Edge& e = edges_[i];
     const bool valid = e.u < num_variables_ && e.v < num_variables_ && e.u != e.v &&
