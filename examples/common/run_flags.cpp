@@ -45,9 +45,15 @@ void RunFlags::declare(ToolOptions& options) {
                "(docs/performance.md, \"The solve\")")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
-               "only the variables within r edges of that label or of a pixel whose cheapest "
-               "cost it is, with a sweep of whole moves whenever a sweep of such moves gains at "
-               "most 1e-4 of the energy (convergence: three sweeps without decrease)")
+               "only the variables within r edges of that label (or, with --near-seeds "
+               "label_and_cheapest, of a pixel whose cheapest cost it is), with a sweep of whole "
+               "moves whenever a sweep of such moves gains at most 1e-4 of the energy "
+               "(convergence: three sweeps without decrease)")
+      .text("near-seeds", &near_seeds_,
+            "where --near-radius's moves start: label_and_cheapest (the variables of that label "
+            "and those whose cheapest cost it is) or label (the variables of that label only: "
+            "the edges of its regions, what is left to do after a coarse level on noisy "
+            "unaries)")
       .on_off_auto("shift-moves", &shift_moves_,
                    "expansion: every sweep begins with two moves in which every variable may step "
                    "one label up, then down, at once (moves regions that are off by one label, "
@@ -96,6 +102,10 @@ SolverSpec RunFlags::solver_spec() const {
   // Near and shift moves are expansion's: other solvers leave the defaults aside, and refuse
   // values that differ from them.
   const bool near_radius_given = near_radius_ != defaults_.near_radius;
+  const NearSeeds seeds =
+      with_flag("--near-seeds", [&] { return near_seeds_from_string(near_seeds_); });
+  if (near_radius_ == 0 && seeds != defaults_.near_seeds)
+    throw std::invalid_argument("--near-seeds: has no effect without --near-radius");
   const bool shift_moves_given = shift_moves_ != shift_moves_value(defaults_);
   const auto refuse = [&](const std::string& problem) {
     std::string flags = near_radius_given ? "--near-radius" : "";
@@ -135,6 +145,7 @@ SolverSpec RunFlags::solver_spec() const {
       ExpansionOptions options;
       options.order = order;
       options.near_radius = near_radius_;
+      options.near_seeds = seeds;
       options.shift_moves = shift_moves_ == "on";
       options.shift_moves_unless_submodular = shift_moves_ == "auto";
       options.regions = regions_;
@@ -210,7 +221,8 @@ std::string near_and_shift_moves_text(const SolverSpec& spec) {
   if (options == nullptr) return {};
   std::string moves;
   if (options->near_radius > 0)
-    moves = "near moves of radius " + std::to_string(options->near_radius);
+    moves = "near moves of radius " + std::to_string(options->near_radius) +
+            (options->near_seeds == NearSeeds::label ? " from their label" : "");
   if (options->shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
   if (moves.empty()) return {};
   return ", " + moves + (spec.coarse ? " on the original problem only" : " on every level");

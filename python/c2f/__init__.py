@@ -110,7 +110,8 @@ def solve(
         variable (equal ids: one group), each refining the one before.
     defaults : {'pairwise', 'stereo'}, default 'pairwise'
         Which of the library's measured defaults (``defaults(name)``) fill the arguments left
-        None and expansion's ``near_radius`` and ``shift_moves`` not in ``options``.
+        None and expansion's ``near_radius``, ``near_seeds`` and ``shift_moves`` not in
+        ``options``.
     method : {'expansion', 'swap', 'lbp', 'icm'}, default 'expansion'
         The solver: alpha-expansion with QPBO moves, alpha-beta swap, loopy belief propagation
         or iterated conditional modes.
@@ -118,7 +119,9 @@ def solve(
         The method's own options (unknown names are refused):
 
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
-          ``tolerance``, ``near_radius`` (near moves), ``near_sweep_gain``, ``shift_moves``
+          ``tolerance``, ``near_radius`` (near moves), ``near_seeds`` ('label_and_cheapest':
+          a move to a label starts from its variables and those whose cheapest unary it is;
+          'label': from its variables only), ``near_sweep_gain``, ``shift_moves``
           (True, False, or 'auto': only on an energy where some expansion move is not
           submodular, e.g. truncated quadratic; the pairwise defaults' choice), ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
           16; 1, the default: none), ``flow_parts`` (each move's max-flow in this many bands

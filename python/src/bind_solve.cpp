@@ -137,6 +137,7 @@ py::dict defaults_dict(const std::string& name) {
   out["grid_schedule"] = defaults.grid_schedule;
   out["general_schedule"] = defaults.general_schedule;
   out["near_radius"] = defaults.near_radius;
+  out["near_seeds"] = std::string(to_string(defaults.near_seeds));
   out["shift_moves"] = defaults.shift_moves                     ? py::object(py::bool_(true))
                        : defaults.shift_moves_unless_submodular ? py::object(py::str("auto"))
                                                                 : py::object(py::bool_(false));

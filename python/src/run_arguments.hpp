@@ -20,10 +20,11 @@
 namespace c2f::python {
 
 /// The solver `method` names ('expansion', 'swap', 'lbp', 'icm') with `options` (None or a dict
-/// of that solver's option names: order, seed, tolerance, near_radius, near_sweep_gain,
-/// shift_moves, near_levels, maxflow, regions and threads for expansion; order, seed, tolerance and
-/// maxflow for swap; schedule and damping for lbp; order, seed and tolerance for icm); expansion's
-/// near_radius and shift_moves not named are `defaults`'. ValueError naming
+/// of that solver's option names: order, seed, tolerance, near_radius, near_seeds,
+/// near_sweep_gain, shift_moves, near_levels, maxflow, regions, threads and flow_parts for
+/// expansion; order, seed, tolerance and maxflow for swap; schedule and damping for lbp; order,
+/// seed and tolerance for icm); expansion's near_radius, near_seeds and shift_moves not named are
+/// `defaults`'. ValueError naming
 /// `method` or `options['name']` for an unknown name or value, TypeError for a value of the
 /// wrong type.
 SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& options,

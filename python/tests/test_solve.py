@@ -141,13 +141,14 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     """c2f.solve with nothing named runs c2f.defaults(): the same run as naming every value,
     and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
     defaults = c2f.defaults()
-    assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "shift_moves",
-                             "plateau", "plateau_tolerance"}
+    assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "near_seeds",
+                             "shift_moves", "plateau", "plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
     explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
                          plateau_tolerance=defaults["plateau_tolerance"],
                          options={"near_radius": defaults["near_radius"],
+                                  "near_seeds": defaults["near_seeds"],
                                   "shift_moves": defaults["shift_moves"]})
     np.testing.assert_array_equal(implicit.trace["energy"], explicit.trace["energy"])
     assert implicit.trace["level"].max() > 0  # coarse to fine, not flat
@@ -184,6 +185,19 @@ def test_the_defaults_make_shift_moves_where_an_expansion_move_is_not_submodular
             assert automatic.summary.rstrip().endswith("with shift moves") == shifts
     with pytest.raises(TypeError, match=r"options\['shift_moves'\]: expected True, False or 'auto'"):
         c2f.solve(linear, options={"shift_moves": "on"})
+
+
+def test_near_moves_from_their_label_end_where_no_whole_move_helps(rng):
+    energy = c2f.Energy.grid(rng.random((40, 50, 5)), c2f.Term.truncated_linear(2.0), weight=0.6)
+    near = c2f.solve(energy, "flat", options={"near_radius": 2, "near_seeds": "label"})
+    assert near.reason == "converged"
+    assert np.all(np.diff(near.trace["energy"]) <= 0.0)
+    # Converged means a sweep of whole moves found nothing: a whole-move run from there agrees.
+    whole = c2f.solve(energy, "flat", start=near.labeling)
+    assert whole.energy == pytest.approx(near.energy, rel=1e-12)
+    assert c2f.defaults()["near_seeds"] == "label_and_cheapest"
+    with pytest.raises(ValueError, match=r"options\['near_seeds'\]"):
+        c2f.solve(energy, options={"near_radius": 2, "near_seeds": "cheapest"})
 
 
 def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
@@ -235,7 +249,7 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     with pytest.raises(ValueError, match="regions"):
         c2f.solve(energy, options={"regions": 0})
     with pytest.raises(ValueError, match="no effect without near_radius"):
-        c2f.solve(energy, options={"regions": 16})
+        c2f.solve(energy, options={"regions": 16, "near_radius": 0})
     with pytest.raises(ValueError, match="threads"):
         c2f.solve(energy, options={"threads": -1})
 

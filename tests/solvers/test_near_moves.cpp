@@ -28,7 +28,8 @@ TEST_CASE("a near move's problem is the whole energy over the labelings that kee
     const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
     const Label alpha = static_cast<Label>(trial % num_labels);
     detail::NearMoves near;
-    near.bind(energy, 1 + trial % 3);
+    near.bind(energy, 1 + trial % 3,
+              trial % 2 == 0 ? NearSeeds::label_and_cheapest : NearSeeds::label);
     near.build(alpha, x);
     const auto free = near.free();
     const auto pairs = near.pairs();
@@ -67,55 +68,75 @@ TEST_CASE("a near move frees exactly the variables near its label", "[expansion]
   //                   0  1  2  3  4  5  6  7  8
   const Labeling x = {0, 0, 2, 0, 1, 1, 1, 1, 1};
   detail::NearMoves near;
-  near.bind(energy, 1);
+  near.bind(energy, 1, NearSeeds::label_and_cheapest);
   near.build(2, x);
   // Within one edge of variable 2 (labelled 2) or of variable 7 (cheapest 2), not labelled 2.
   std::set<VariableIndex> expected = {1, 3, 6, 7, 8};
   CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
-  near.bind(energy, 2);
+  near.bind(energy, 2, NearSeeds::label_and_cheapest);
   near.build(2, x);
   expected = {0, 1, 3, 4, 5, 6, 7, 8};
   CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  // Seeded by the label only: variable 7's cheap unary frees nothing around it.
+  near.bind(energy, 1, NearSeeds::label);
+  near.build(2, x);
+  expected = {1, 3};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  near.bind(energy, 2, NearSeeds::label);
+  near.build(2, x);
+  expected = {0, 1, 3, 4};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  // A label no variable has frees nothing when seeded by the label only.
+  const Labeling no_two = {0, 0, 0, 0, 1, 1, 1, 1, 1};
+  near.build(2, no_two);
+  CHECK(near.free().empty());
 }
 
 TEST_CASE("near moves free the same variables on 1, 2 and 3 threads, as far as the radius says",
           "[expansion][near][threads]") {
   // 200 x 150 pixels, 3 labels: each breadth-first level spans several bands of 8192, so bands
   // on different threads race for the variables they reach. The free variables must be those
-  // within `radius` grid steps of a variable labelled alpha or cheapest at alpha.
+  // within `radius` grid steps of a variable labelled alpha or (label_and_cheapest) cheapest at
+  // alpha.
   Rng rng(5);
   const PairwiseEnergy energy = random_grid_energy(rng, 200, 150, 3);
   const Labeling x = random_labeling(rng, energy.num_variables(), 3);
   const std::size_t n = energy.num_variables();
   for (const int radius : {1, 3}) {
-    // Brute force: each variable's grid distance to the nearest seed, by relaxation.
-    std::vector<std::vector<VariableIndex>> expected(3);
-    for (Label alpha = 0; alpha < 3; ++alpha) {
-      std::vector<int> distance(n, 1 << 20);
-      for (std::size_t v = 0; v < n; ++v)
-        if (x[v] == alpha || cheapest_label(energy, v) == alpha) distance[v] = 0;
-      for (int round = 0; round < radius; ++round) {
-        std::vector<int> next = distance;
-        for (const Edge& edge : energy.edges()) {
-          next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
-          next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+    for (const NearSeeds seeds : {NearSeeds::label_and_cheapest, NearSeeds::label}) {
+      // Brute force: each variable's grid distance to the nearest seed, by relaxation.
+      std::vector<std::vector<VariableIndex>> expected(3);
+      for (Label alpha = 0; alpha < 3; ++alpha) {
+        std::vector<int> distance(n, 1 << 20);
+        for (std::size_t v = 0; v < n; ++v) {
+          const bool cheapest =
+              seeds == NearSeeds::label_and_cheapest && cheapest_label(energy, v) == alpha;
+          if (x[v] == alpha || cheapest) distance[v] = 0;
         }
-        distance = next;
+        for (int round = 0; round < radius; ++round) {
+          std::vector<int> next = distance;
+          for (const Edge& edge : energy.edges()) {
+            next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
+            next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+          }
+          distance = next;
+        }
+        for (std::size_t v = 0; v < n; ++v)
+          if (distance[v] <= radius && x[v] != alpha)
+            expected[alpha].push_back(static_cast<VariableIndex>(v));
+        REQUIRE(expected[alpha].size() > detail::kBandSize);
       }
-      for (std::size_t v = 0; v < n; ++v)
-        if (distance[v] <= radius && x[v] != alpha)
-          expected[alpha].push_back(static_cast<VariableIndex>(v));
-      REQUIRE(expected[alpha].size() > 2 * detail::kBandSize);
-    }
-    for (int threads = 1; threads <= 3; ++threads) {
-      detail::NearMoves near;
-      near.bind(energy, radius, nullptr, threads);
-      // Each label twice, in turn: a move's marks must not leak into the next.
-      for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
-        near.build(alpha, x);
-        INFO("radius " << radius << ", alpha " << alpha << ", " << threads << " threads");
-        CHECK(std::vector<VariableIndex>(near.free().begin(), near.free().end()) ==
-              expected[alpha]);
+      for (int threads = 1; threads <= 3; ++threads) {
+        detail::NearMoves near;
+        near.bind(energy, radius, seeds, nullptr, threads);
+        // Each label twice, in turn: a move's marks must not leak into the next.
+        for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
+          near.build(alpha, x);
+          INFO("radius " << radius << ", seeds " << to_string(seeds) << ", alpha " << alpha << ", "
+                         << threads << " threads");
+          CHECK(std::vector<VariableIndex>(near.free().begin(), near.free().end()) ==
+                expected[alpha]);
+        }
       }
     }
   }
@@ -134,6 +155,7 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
     ExpansionOptions options;
     options.near_radius = 1 + trial % 3;
     options.near_sweep_gain = trial % 3 == 0 ? 0.0 : 1e-3;
+    options.near_seeds = trial % 5 < 2 ? NearSeeds::label : NearSeeds::label_and_cheapest;
     options.order = trial % 4 == 1 ? VisitOrder::random : VisitOrder::sequential;
     options.seed = static_cast<std::uint64_t>(trial);
     ExpansionSolver<TestType> solver(options);
@@ -161,6 +183,10 @@ TEST_CASE("near moves are validated and belong to expansion", "[expansion][near]
   options.near_radius = 2;
   options.near_sweep_gain = -1.0;
   CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("near_sweep_gain"));
+  CHECK(near_seeds_from_string("label") == NearSeeds::label);
+  CHECK(near_seeds_from_string(to_string(NearSeeds::label_and_cheapest)) ==
+        NearSeeds::label_and_cheapest);
+  CHECK_THROWS_WITH(near_seeds_from_string("cheapest"), Catch::Contains("cheapest"));
   Rng rng(3);
   CHECK(ExpansionSolver<>().quiet_steps_to_converge(random_grid_energy(rng, 3, 2, 7)) == 7);
 }

@@ -150,7 +150,7 @@ TEST_CASE("a phase of region moves makes each region's exact move",
     } else {
       // A near move to alpha over the variables NearMoves frees.
       detail::NearMoves near;
-      near.bind(energy, 1);
+      near.bind(energy, 1, NearSeeds::label_and_cheapest);
       near.select(alpha, start);
       regions.near_phase(colour, alpha, near, 0.0, labeling, candidate, value, moved, step);
       const double expected =

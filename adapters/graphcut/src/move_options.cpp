@@ -5,9 +5,25 @@
 #include <span>
 
 #include "c2f/core/edge_incidence.hpp"
+#include "c2f/support/enum_names.hpp"
 #include "c2f/support/memory_need.hpp"
 
 namespace c2f {
+
+std::string_view to_string(NearSeeds seeds) {
+  switch (seeds) {
+    case NearSeeds::label_and_cheapest:
+      return "label_and_cheapest";
+    case NearSeeds::label:
+      return "label";
+  }
+  return "unknown";
+}
+
+NearSeeds near_seeds_from_string(std::string_view text) {
+  constexpr NearSeeds kAll[] = {NearSeeds::label_and_cheapest, NearSeeds::label};
+  return enum_from_string(text, kAll, "near-move seeds");
+}
 
 std::string MoveOptions::validate() const {
   if (!std::isfinite(tolerance) || tolerance < 0.0) return "tolerance must be finite and >= 0";

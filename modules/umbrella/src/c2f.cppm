@@ -137,6 +137,8 @@ using c2f::MoveOptions;
 using c2f::MoveStep;
 using c2f::near_levels_from_string;
 using c2f::NearLevels;
+using c2f::near_seeds_from_string;
+using c2f::NearSeeds;
 using c2f::no_decrease;
 using c2f::observe_all;
 using c2f::Observer;

@@ -14,6 +14,8 @@ struct RunDefaults {
   std::string grid_schedule;     ///< schedule text on a pixel grid (application presets apply)
   std::string general_schedule;  ///< schedule text on any other graph
   int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
+  /// Where those near moves start (ExpansionOptions::near_seeds).
+  NearSeeds near_seeds = NearSeeds::label_and_cheapest;
   bool shift_moves = false;      ///< expansion's shift moves, original problem only
   /// Shift moves also on an energy where some expansion move is not submodular
   /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.

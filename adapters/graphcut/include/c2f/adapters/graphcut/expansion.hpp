@@ -108,7 +108,7 @@ class ExpansionSolver {
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
     if (options_.near_radius > 0)
-      near_.bind(energy, options_.near_radius, &incidences, options_.threads);
+      near_.bind(energy, options_.near_radius, options_.near_seeds, &incidences, options_.threads);
     sweep_steps_done_ = 0;
     sweep_ = first_sweep();
   }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/labeling.hpp"
@@ -50,17 +51,38 @@ struct SwapOptions : MoveOptions {
   bool operator==(const SwapOptions&) const = default;
 };
 
+/// Where a near move's search for its free variables starts (ExpansionOptions::near_seeds).
+enum class NearSeeds {
+  /// The variables labelled alpha and those whose cheapest unary label is alpha: a label no
+  /// variable has yet can still spread from where its unaries favour it.
+  label_and_cheapest,
+  /// The variables labelled alpha only: a move to alpha moves the edges of alpha's regions. From
+  /// a labeling handed down by a coarse level, where what is left to do lies along the regions'
+  /// edges, it frees far fewer variables than label_and_cheapest on noisy unaries (whose
+  /// cheapest labels are scattered everywhere); a label no variable has is left to the sweeps of
+  /// whole moves.
+  label,
+};
+
+std::string_view to_string(NearSeeds seeds);
+/// Parses the names to_string produces ("label_and_cheapest", "label"); throws
+/// std::invalid_argument naming the text.
+NearSeeds near_seeds_from_string(std::string_view text);
+
 /// Alpha-expansion's options: those every graph-cut solver has, and its own kinds of move.
 struct ExpansionOptions : MoveOptions {
   /// 0: every move may change every variable. r > 0: a move to alpha frees only the variables
-  /// within r edges of a variable labelled alpha or of one whose cheapest unary label is alpha
-  /// (the others keep their labels: an exact move on a smaller graph of its own). When a sweep
+  /// within r edges of a variable labelled alpha or, with NearSeeds::label_and_cheapest, of one
+  /// whose cheapest unary label is alpha (the others keep their labels: an exact move on a
+  /// smaller graph of its own). When a sweep
   /// of such moves lowers the energy by at most near_sweep_gain of it, one sweep of whole moves
   /// follows, then near moves again. Convergence therefore takes three sweeps without decrease
   /// (ExpansionSolver::sweep_steps).
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;
+  /// Where near moves start (NearSeeds); only with near_radius > 0.
+  NearSeeds near_seeds = NearSeeds::label_and_cheapest;
   /// Bytes the kept move problems may take: every label's move problem (d, p) is kept for
   /// patching when all of them fit (detail/expansion_problems.hpp), so a move's problem costs
   /// in proportion to what changed since that label's last move. 0 turns it off; results never

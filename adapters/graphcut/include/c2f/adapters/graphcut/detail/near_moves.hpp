@@ -16,6 +16,7 @@
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/detail/bands.hpp"
 #include "c2f/adapters/graphcut/detail/shared_incidence.hpp"
+#include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/labeling.hpp"
@@ -85,23 +86,25 @@ inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence
 }
 
 /// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
-/// lies within `radius` edges of a variable labelled alpha or of a variable whose cheapest
-/// unary label is alpha (itself included). The problem has binary_move.hpp's form over them,
-/// with the free variables numbered in the order of `free()` (ascending).
+/// lies within `radius` edges of a variable labelled alpha or, with NearSeeds::label_and_cheapest,
+/// of a variable whose cheapest unary label is alpha (itself included). The problem has
+/// binary_move.hpp's form over them, with the free variables numbered in the order of `free()`
+/// (ascending).
 class NearMoves {
  public:
-  /// Precomputes each variable's cheapest label (ties: the smallest) and the edge incidences
-  /// (from `shared` when given). build() writes the problem by bands (detail/bands.hpp) on up
-  /// to `threads` threads, to the same bits for every count.
-  void bind(const PairwiseEnergy& energy, int radius, SharedIncidence* shared = nullptr,
-            int threads = 1) {
+  /// Precomputes the edge incidences (from `shared` when given) and, with
+  /// NearSeeds::label_and_cheapest, each variable's cheapest label (ties: the smallest).
+  /// build() writes the problem by bands (detail/bands.hpp) on up to `threads` threads, to the
+  /// same bits for every count.
+  void bind(const PairwiseEnergy& energy, int radius, NearSeeds seeds,
+            SharedIncidence* shared = nullptr, int threads = 1) {
     energy_ = &energy;
     radius_ = radius;
     threads_ = threads;
     incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
     cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n && seeds == NearSeeds::label_and_cheapest; ++i) {
       cheapest_[static_cast<std::size_t>(cheapest_label(energy, i))].push_back(
           static_cast<VariableIndex>(i));
     }
@@ -143,7 +146,8 @@ class NearMoves {
 
   /// Finds the free variables of the move to alpha from x (in no order in free()), without
   /// building the problem: is_free() answers for each variable. Breadth first from the
-  /// variables labelled alpha and those whose cheapest label it is, a level at a time, each
+  /// variables labelled alpha and those whose cheapest label it is (none with NearSeeds::label),
+  /// a level at a time, each
   /// level's variables by bands on the threads (a variable is claimed by one of them); which
   /// variables are reached, and at what depth, does not depend on the threads.
   void select(Label alpha, std::span<const Label> x) {
@@ -242,7 +246,8 @@ class NearMoves {
   int radius_ = 0;
   int threads_ = 1;
   std::shared_ptr<const EdgeIncidence> incidence_;
-  std::vector<std::vector<VariableIndex>> cheapest_;  // per label: variables it is cheapest for
+  // Per label: the variables it is cheapest for (empty with NearSeeds::label).
+  std::vector<std::vector<VariableIndex>> cheapest_;
   std::vector<std::uint32_t> local_;                  // per variable: index in free_, or kHeld
   std::vector<int> depth_;                            // per variable: BFS depth, or kUnreached
   std::vector<VariableIndex> free_, reached_;
