@@ -74,10 +74,9 @@ struct ExpansionOptions : MoveOptions {
   /// 0: every move may change every variable. r > 0: a move to alpha frees only the variables
   /// within r edges of a variable labelled alpha or, with NearSeeds::label_and_cheapest, of one
   /// whose cheapest unary label is alpha (the others keep their labels: an exact move on a
-  /// smaller graph of its own). When a sweep
-  /// of such moves lowers the energy by at most near_sweep_gain of it, one sweep of whole moves
-  /// follows, then near moves again. Convergence therefore takes three sweeps without decrease
-  /// (ExpansionSolver::sweep_steps).
+  /// smaller graph of its own). When a sweep of such moves lowers the energy by at most
+  /// near_sweep_gain of it, one sweep of whole moves follows, then near moves again.
+  /// Convergence therefore takes three sweeps without decrease (ExpansionSolver::sweep_steps).
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;

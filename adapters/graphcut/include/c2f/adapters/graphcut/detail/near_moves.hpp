@@ -147,9 +147,9 @@ class NearMoves {
   /// Finds the free variables of the move to alpha from x (in no order in free()), without
   /// building the problem: is_free() answers for each variable. Breadth first from the
   /// variables labelled alpha and those whose cheapest label it is (none with NearSeeds::label),
-  /// a level at a time, each
-  /// level's variables by bands on the threads (a variable is claimed by one of them); which
-  /// variables are reached, and at what depth, does not depend on the threads.
+  /// a level at a time, each level's variables by bands on the threads (a variable is claimed by
+  /// one of them); which variables are reached, and at what depth, does not depend on the
+  /// threads.
   void select(Label alpha, std::span<const Label> x) {
     for_each_band(
         reached_.size(),
