@@ -30,10 +30,10 @@ Per instance (OUT_DIR/suite.tsv, one row each, written as soon as it is measured
 run's time to converge and final energy (grid and general: where the defaults make near moves,
 the sooner converged of flat with their moves and flat with whole moves, named in flat_moves);
 the time the default run took to come within 1e-4 and within 1e-3 of flat's final energy,
-over flat's convergence time (the ratio; 'never' when it did not); the default run's final energy relative to flat's; the error at deadlines of both
-(grid: pixels more than one label from the truth; segmentation: pixel error; stereo: the
-scene's measure, at c2f-bench-stereo's own deadlines) averaged over 20 deadlines in [0, the
-slower run's convergence time]. Then
+over flat's convergence time (the ratio; 'never' when it did not); the default run's final
+energy relative to flat's; the error at deadlines of both (grid: pixels more than one label
+from the truth; segmentation: pixel error; stereo: the scene's measure, at c2f-bench-stereo's
+own deadlines) averaged over 20 deadlines in [0, the slower run's convergence time]. Then
 OUT_DIR/suite.md: per family and size, the medians of the tuning and the aside instances; then
 per family and set, over the instances where flat took at least a second (the targets' scope),
 the median, the worst instance and the worst from one megapixel against issue 43's targets

@@ -124,7 +124,9 @@ TEST_CASE("near moves free the same variables on 1, 2 and 3 threads, as far as t
         for (std::size_t v = 0; v < n; ++v)
           if (distance[v] <= radius && x[v] != alpha)
             expected[alpha].push_back(static_cast<VariableIndex>(v));
-        REQUIRE(expected[alpha].size() > detail::kBandSize);
+        // Several bands of 8192 for the threads to race over (fewer seeds with label only).
+        const std::size_t bands = seeds == NearSeeds::label_and_cheapest ? 2 : 1;
+        REQUIRE(expected[alpha].size() > bands * detail::kBandSize);
       }
       for (int threads = 1; threads <= 3; ++threads) {
         detail::NearMoves near;

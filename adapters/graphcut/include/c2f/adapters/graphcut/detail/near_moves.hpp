@@ -104,9 +104,11 @@ class NearMoves {
     incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
     cheapest_.assign(static_cast<std::size_t>(energy.num_labels()), {});
-    for (std::size_t i = 0; i < n && seeds == NearSeeds::label_and_cheapest; ++i) {
-      cheapest_[static_cast<std::size_t>(cheapest_label(energy, i))].push_back(
-          static_cast<VariableIndex>(i));
+    if (seeds == NearSeeds::label_and_cheapest) {
+      for (std::size_t i = 0; i < n; ++i) {
+        cheapest_[static_cast<std::size_t>(cheapest_label(energy, i))].push_back(
+            static_cast<VariableIndex>(i));
+      }
     }
     local_.assign(n, kHeld);
     depth_.assign(n, kUnreached);
