@@ -54,6 +54,12 @@ void RunFlags::declare(ToolOptions& options) {
             "and those whose cheapest cost it is) or label (the variables of that label only: "
             "the edges of its regions, what is left to do after a coarse level on noisy "
             "unaries)")
+      .text("near-graphs", &near_graphs_,
+            "where --near-radius's moves are made: local (only on an energy whose edges are "
+            "local in its variables' order: at most 5% of them between 4 equal ranges of "
+            "indices, as on a pixel grid or lattice; elsewhere, e.g. on a random graph, where a "
+            "few rounds of neighbours reach nearly every variable, every move is a whole move) "
+            "or any")
       .on_off_auto("shift-moves", &shift_moves_,
                    "expansion: every sweep begins with two moves in which every variable may step "
                    "one label up, then down, at once (moves regions that are off by one label, "
@@ -106,6 +112,10 @@ SolverSpec RunFlags::solver_spec() const {
       with_flag("--near-seeds", [&] { return near_seeds_from_string(near_seeds_); });
   if (near_radius_ == 0 && seeds != defaults_.near_seeds)
     throw std::invalid_argument("--near-seeds: has no effect without --near-radius");
+  const bool only_if_local =
+      with_flag("--near-graphs", [&] { return near_only_if_local_from_string(near_graphs_); });
+  if (near_radius_ == 0 && only_if_local != defaults_.near_moves_only_if_local)
+    throw std::invalid_argument("--near-graphs: has no effect without --near-radius");
   const bool shift_moves_given = shift_moves_ != shift_moves_value(defaults_);
   const auto refuse = [&](const std::string& problem) {
     std::string flags = near_radius_given ? "--near-radius" : "";
@@ -146,6 +156,7 @@ SolverSpec RunFlags::solver_spec() const {
       options.order = order;
       options.near_radius = near_radius_;
       options.near_seeds = seeds;
+      options.near_moves_only_if_local = only_if_local;
       options.shift_moves = shift_moves_ == "on";
       options.shift_moves_unless_submodular = shift_moves_ == "auto";
       options.regions = regions_;
@@ -223,6 +234,8 @@ std::string near_and_shift_moves_text(const SolverSpec& spec) {
   if (options->near_radius > 0)
     moves = "near moves of radius " + std::to_string(options->near_radius) +
             (options->near_seeds == NearSeeds::label ? " from their label" : "");
+  if (options->near_radius > 0 && options->near_moves_only_if_local)
+    moves += " where the edges are local";
   if (options->shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
   if (moves.empty()) return {};
   return ", " + moves + (spec.coarse ? " on the original problem only" : " on every level");

@@ -1,9 +1,9 @@
 #pragma once
 // The options that configure a run, shared by the tools that offer every pairwise solver
 // (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --threads, --regions,
-// --near-radius, --near-seeds, --shift-moves, --near-levels, --label-order, --time-limit,
-// --max-steps, --plateau, --plateau-tolerance, --final-plateau. They become one RunConfig of the
-// run layer.
+// --near-radius, --near-seeds, --near-graphs, --shift-moves, --near-levels, --label-order,
+// --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau. They become one
+// RunConfig of the run layer.
 
 #include <string>
 
@@ -21,11 +21,12 @@ class RunFlags {
       : defaults_(defaults),
         near_radius_(defaults.near_radius),
         near_seeds_(to_string(defaults.near_seeds)),
+        near_graphs_(near_graphs_name(defaults.near_moves_only_if_local)),
         shift_moves_(shift_moves_value(defaults)),
         plateau_(defaults.progress_rate ? "rate" : std::to_string(defaults.plateau_steps)),
         plateau_tolerance_(defaults.plateau_tolerance) {}
 
-  /// Declares the sixteen options in `options` (this object receives their values, so it
+  /// Declares the seventeen options in `options` (this object receives their values, so it
   /// must outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -56,6 +57,7 @@ class RunFlags {
   int flow_parts_ = ExpansionOptions{}.flow_parts;
   int near_radius_;
   std::string near_seeds_;   // label_and_cheapest or label
+  std::string near_graphs_;  // local or any
   std::string shift_moves_;  // on, off or auto
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none
   long max_steps_ = 0;       // steps in the whole run, 0: none
@@ -65,8 +67,9 @@ class RunFlags {
 };
 
 /// ", near moves of radius R and shift moves on the original problem only" (", near moves of
-/// radius R from their label" with NearSeeds::label) for the near and shift moves `spec`
-/// makes, else "" (a tool's summary line).
+/// radius R from their label" with NearSeeds::label, "... where the edges are local" with
+/// near_moves_only_if_local) for the near and shift moves `spec` makes, else "" (a tool's
+/// summary line, before the energy decides; RunReport::threads_line says what was made).
 [[nodiscard]] std::string near_and_shift_moves_text(const SolverSpec& spec);
 
 }  // namespace c2f::examples

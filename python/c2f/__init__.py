@@ -41,7 +41,9 @@ class Result:
     steps: solver steps made over all levels.
     summary: a few lines per level and the outcome, as the command-line tools print them.
     trace: numpy arrays with one entry per step: 'time', 'level', 'step', 'energy' (of the
-        original problem's labeling) and 'variables' (of the step's level).
+        original problem's labeling), 'variables' (of the step's level) and 'step_variables'
+        (those the step's move worked over: fewer than 'variables' for a near move; 0 at a
+        level's step 0).
     """
 
     labeling: np.ndarray
@@ -153,9 +155,10 @@ def solve(
         of shape (N,) or the grid's (H, W)); on a coarse first level each group starts at the
         label most of its members have in it.
     callback : callable, optional
-        Called after every step with a dict (time, level, step, energy, variables, at_original,
-        labeling: the original variables' labeling this step stands for, in the result's
-        shape, a copy made per step); returning False stops the run (None or True goes on).
+        Called after every step with a dict (time, level, step, energy, variables,
+        step_variables, at_original, labeling: the original variables' labeling this step
+        stands for, in the result's shape, a copy made per step); returning False stops the
+        run (None or True goes on).
     memory : float, optional
         The run's memory budget in GiB, as the tools' --memory (None: a quarter of this
         machine's memory, growing to the run's needs up to half, at most what is available).

@@ -111,19 +111,24 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       ExpansionOptions expansion;  // the defaults' moves unless options name others
       expansion.near_radius = defaults.near_radius;
       expansion.near_seeds = defaults.near_seeds;
+      expansion.near_moves_only_if_local = defaults.near_moves_only_if_local;
       expansion.shift_moves = defaults.shift_moves;
       expansion.shift_moves_unless_submodular = defaults.shift_moves_unless_submodular;
       NearLevels levels = NearLevels::original;
-      for (const auto& [key, value] : option_items(
-               options, owner,
-               {"order", "seed", "tolerance", "near_radius", "near_seeds", "near_sweep_gain",
-                "shift_moves", "near_levels", "maxflow", "regions", "threads", "flow_parts"})) {
+      for (const auto& [key, value] :
+           option_items(options, owner,
+                        {"order", "seed", "tolerance", "near_radius", "near_seeds", "near_graphs",
+                         "near_sweep_gain", "shift_moves", "near_levels", "maxflow", "regions",
+                         "threads", "flow_parts"})) {
         const std::string name = option_name(key);
         if (set_move_option(expansion, key, value, name)) continue;
         if (key == "near_radius") {
           expansion.near_radius = static_cast<int>(integer_argument(value, name, 0, INT32_MAX));
         } else if (key == "near_seeds") {
           expansion.near_seeds = named_value(value, name, near_seeds_from_string);
+        } else if (key == "near_graphs") {
+          expansion.near_moves_only_if_local =
+              named_value(value, name, near_only_if_local_from_string);
         } else if (key == "near_sweep_gain") {
           expansion.near_sweep_gain = real_argument(value, name);
         } else if (key == "shift_moves") {

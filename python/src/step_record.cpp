@@ -25,6 +25,7 @@ ObserverDecision StepRecord::operator()(const StepEvent& event) {
   level_.push_back(event.level);
   step_.push_back(event.step);
   variables_.push_back(event.num_variables);
+  step_variables_.push_back(event.step_variables);
   if (interpreter_exiting()) return ObserverDecision::stop;
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) return stop_for_python_error();
@@ -36,6 +37,7 @@ ObserverDecision StepRecord::operator()(const StepEvent& event) {
     info["step"] = event.step;
     info["energy"] = event.energy;
     info["variables"] = event.num_variables;
+    info["step_variables"] = event.step_variables;
     info["at_original"] = event.at_original;
     info["labeling"] = labeling_array(event.ground_labeling(), shape_);
     const py::object answer = callback_(info);
@@ -78,6 +80,7 @@ py::dict StepRecord::result(const Summary& summary, const std::string& report) {
   trace["step"] = py::array_t<long>(size(step_), step_.data());
   trace["energy"] = py::array_t<double>(size(energy_), energy_.data());
   trace["variables"] = py::array_t<std::size_t>(size(variables_), variables_.data());
+  trace["step_variables"] = py::array_t<std::size_t>(size(step_variables_), step_variables_.data());
   result["trace"] = trace;
   if (error_type_ != nullptr) {
     if (error_value_ != nullptr) PyObject_SetAttrString(error_value_, "result", result.ptr());

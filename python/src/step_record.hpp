@@ -18,10 +18,10 @@ namespace c2f::python {
 class StepRecord {
  public:
   /// `callback` (None: none) is called after every step with a dict (time, level, step,
-  /// energy, variables, at_original, labeling: the original variables' labeling this step
-  /// stands for, in `shape`, O(N) per step); a False answer stops the run, and an answer other
-  /// than True, False or None stops it with a TypeError naming the callback. The run also stops
-  /// at its next step once the interpreter begins to exit (released_gil.hpp). `shape` is the
+  /// energy, variables, step_variables, at_original, labeling: the original variables' labeling
+  /// this step stands for, in `shape`, O(N) per step); a False answer stops the run, and an answer
+  /// other than True, False or None stops it with a TypeError naming the callback. The run also
+  /// stops at its next step once the interpreter begins to exit (released_gil.hpp). `shape` is the
   /// labeling's array shape (empty: flat).
   StepRecord(pybind11::object callback, std::vector<pybind11::ssize_t> shape);
   ~StepRecord();
@@ -43,6 +43,7 @@ class StepRecord {
   std::vector<int> level_;
   std::vector<long> step_;
   std::vector<std::size_t> variables_;
+  std::vector<std::size_t> step_variables_;
   pybind11::object callback_;
   std::vector<pybind11::ssize_t> shape_;
   PyObject* error_type_ = nullptr;  ///< the fetched exception (owned references)

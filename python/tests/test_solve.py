@@ -75,8 +75,9 @@ def test_limits_and_a_callback_that_stops(rng):
     result = c2f.solve(energy, callback=stop_at_three)
     assert result.reason == "observer"
     assert [s["step"] for s in seen] == [0, 1, 2, 3]
-    assert set(seen[0]) == {"time", "level", "step", "energy", "variables", "at_original",
-                            "labeling"}
+    assert set(seen[0]) == {"time", "level", "step", "energy", "variables", "step_variables",
+                            "at_original", "labeling"}
+    assert [s["step_variables"] for s in seen] == [0] + [s["variables"] for s in seen[1:]]
     assert seen[-1]["labeling"].shape == (30, 30)
     np.testing.assert_array_equal(seen[-1]["labeling"], result.labeling)
 
@@ -142,13 +143,14 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
     defaults = c2f.defaults()
     assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "near_seeds",
-                             "shift_moves", "plateau", "plateau_tolerance"}
+                             "near_graphs", "shift_moves", "plateau", "plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
     explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
                          plateau_tolerance=defaults["plateau_tolerance"],
                          options={"near_radius": defaults["near_radius"],
                                   "near_seeds": defaults["near_seeds"],
+                                  "near_graphs": defaults["near_graphs"],
                                   "shift_moves": defaults["shift_moves"]})
     np.testing.assert_array_equal(implicit.trace["energy"], explicit.trace["energy"])
     assert implicit.trace["level"].max() > 0  # coarse to fine, not flat
@@ -198,6 +200,32 @@ def test_near_moves_from_their_label_end_where_no_whole_move_helps(rng):
     assert c2f.defaults()["near_seeds"] == "label_and_cheapest"
     with pytest.raises(ValueError, match=r"options\['near_seeds'\]"):
         c2f.solve(energy, options={"near_radius": 2, "near_seeds": "cheapest"})
+    # The trace says how many variables each near move freed: fewer than the level's.
+    freed = near.trace["step_variables"][1:]
+    assert np.all(freed <= energy.num_variables) and np.any(freed < energy.num_variables)
+    assert near.trace["step_variables"][0] == 0
+
+
+def test_near_moves_only_where_the_edges_are_local(rng):
+    """near_graphs 'local': near moves on a grid, whole moves on a random graph (where a few
+    rounds of neighbours reach nearly every variable), step for step as without near moves."""
+    assert c2f.defaults()["near_graphs"] == "any"
+    local = {"near_radius": 2, "near_seeds": "label", "near_graphs": "local"}
+    grid = c2f.Energy.grid(rng.random((40, 50, 5)), c2f.Term.truncated_linear(2.0), weight=0.6)
+    on_grid = c2f.solve(grid, "flat", options=local)
+    assert np.any(on_grid.trace["step_variables"] < grid.num_variables)
+    assert "solve: near moves of radius 2 from their label (whole moves where" in on_grid.summary
+    n = 2000
+    edges = rng.integers(0, n, size=(4000, 2))
+    edges = edges[edges[:, 0] != edges[:, 1]]
+    graph = c2f.Energy(rng.random((n, 5)), edges, np.full(len(edges), 0.5), c2f.Term.potts())
+    asked = c2f.solve(graph, "flat", options=local)
+    whole = c2f.solve(graph, "flat", options={"near_radius": 0})
+    np.testing.assert_array_equal(asked.trace["energy"], whole.trace["energy"])
+    assert np.all(asked.trace["step_variables"][1:] == n)
+    assert "near moves" not in asked.summary
+    with pytest.raises(ValueError, match=r"options\['near_graphs'\]: unknown energies for near"):
+        c2f.solve(grid, options={"near_radius": 2, "near_graphs": "grids"})
 
 
 def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
@@ -243,9 +271,10 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
     # One band and one part: every move on one thread. By default the max-flow is in 4 parts.
     one = c2f.solve(energy, "flat", options={"near_radius": 2, "flow_parts": 1})
-    assert "solve: every move over every variable on one thread" in one.summary
+    assert "solve: near moves of radius 2 (whole moves where they stall) on one thread" in one.summary
     default = c2f.solve(energy, "flat", options={"near_radius": 2, "threads": 2})
-    assert "solve: every move over every variable, max-flow in 4 parts on 2 threads" in default.summary
+    assert ("solve: near moves of radius 2 (whole moves where they stall), max-flow in 4 parts on 2 "
+            "threads" in default.summary)
     with pytest.raises(ValueError, match="regions"):
         c2f.solve(energy, options={"regions": 0})
     with pytest.raises(ValueError, match="no effect without near_radius"):

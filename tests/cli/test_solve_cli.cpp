@@ -131,14 +131,20 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
             "--flow-parts: only our max-flow (--maxflow dynamic) solves in parts"},
            {grid + out + " --flow-parts 256", "--flow-parts"},
            // c2f-solve's defaults make whole moves (shift moves only where an expansion move is
-           // not submodular: --shift-moves auto), so these flags are asked for, not defaults.
+           // not submodular: --shift-moves auto), so these flags are asked for, not defaults;
+           // --near-radius 0 says so again.
            {grid + out + " --solver icm --shift-moves",
             "--shift-moves or --label-order with --solver icm: shift moves are made by expansion"},
-           {grid + out + " --shift-moves=off --near-levels all",
+           {grid + out + " --near-radius 0 --shift-moves=off --near-levels all",
             "--near-levels: has no effect without --near-radius or --shift-moves"},
-           {grid + out + " --regions 16", "--regions: has no effect without --near-radius"},
-           {grid + out + " --near-seeds label",
+           {grid + out + " --near-radius 0 --regions 16",
+            "--regions: has no effect without --near-radius"},
+           {grid + out + " --near-radius 0 --near-seeds label",
             "--near-seeds: has no effect without --near-radius"},
+           {grid + out + " --near-radius 0 --near-graphs local",
+            "--near-graphs: has no effect without --near-radius"},
+           {grid + out + " --near-radius 2 --near-graphs grids",
+            "--near-graphs: unknown energies for near moves 'grids' (expected local or any)"},
            {grid + out + " --near-radius 2 --near-seeds cheapest", "--near-seeds: "},
            {grid + out + " --solver swap --regions 4",
             "--regions with --solver swap: region moves are expansion moves"},

@@ -96,6 +96,65 @@ std::string segmentation_refusal(const vision::SegmentationProblem& problem,
 
 }  // namespace
 
+TEST_CASE("run() reports each step's variables and decides near moves on the energy", "[run]") {
+  Rng rng(33);
+  // A 60 x 40 grid (local: 3 x 60 of its 4700 edges join its four bands of rows) and a random
+  // graph of as many variables (not local).
+  const PairwiseEnergy grid = random_grid_energy(rng, 60, 40, 4);
+  const PairwiseEnergy random = random_energy(rng, 2400, 4, 4800);
+  ExpansionOptions near;
+  near.near_radius = 2;
+  near.near_seeds = NearSeeds::label;
+  near.near_moves_only_if_local = true;
+  RunConfig config;
+  config.solver = expansion_spec(near);
+  config.limits.max_total_steps = 60;
+  const DensePartition coarse = random_partition(rng, grid.num_variables(), 50);
+
+  struct Seen {
+    std::vector<std::size_t> variables, step_variables;
+    std::vector<long> steps;
+  };
+  const auto steps_of = [&](const PairwiseEnergy& energy, std::vector<DensePartition> partitions,
+                            RunReport& report) {
+    Seen seen;
+    PartitionList levels(std::move(partitions));
+    report = run(energy, levels, config, [&](const StepEvent& event) {
+      seen.variables.push_back(event.num_variables);
+      seen.step_variables.push_back(event.step_variables);
+      seen.steps.push_back(event.step);
+      return ObserverDecision::continue_run;
+    });
+    return seen;
+  };
+  RunReport report;
+  const Seen on_grid = steps_of(grid, {coarse}, report);
+  CHECK(report.near_radius == 2);
+  CHECK(report.near_seeds == NearSeeds::label);
+  CHECK_THAT(report.threads_line(),
+             Catch::StartsWith("solve: near moves of radius 2 from their label (whole moves "
+                               "where they stall)"));
+  std::size_t near_steps = 0;
+  for (std::size_t k = 0; k < on_grid.steps.size(); ++k) {
+    INFO("event " << k);
+    if (on_grid.steps[k] == 0) {
+      CHECK(on_grid.step_variables[k] == 0);
+    } else if (on_grid.variables[k] < grid.num_variables()) {
+      CHECK(on_grid.step_variables[k] == on_grid.variables[k]);  // whole moves on coarse levels
+    } else {
+      CHECK(on_grid.step_variables[k] <= grid.num_variables());
+      near_steps += on_grid.step_variables[k] < grid.num_variables();
+    }
+  }
+  CHECK(near_steps > 0);
+
+  const Seen on_random = steps_of(random, {}, report);
+  CHECK(report.near_radius == 0);  // not local: whole moves
+  CHECK_THAT(report.threads_line(), !Catch::Contains("near moves"));
+  for (std::size_t k = 0; k < on_random.steps.size(); ++k)
+    CHECK(on_random.step_variables[k] == (on_random.steps[k] == 0 ? 0 : random.num_variables()));
+}
+
 TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step", "[run]") {
   Rng rng(31);
   const PairwiseEnergy energy = random_grid_energy(rng, 16, 12, 5);

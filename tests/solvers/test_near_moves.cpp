@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
@@ -219,4 +220,102 @@ TEST_CASE("expansion with near moves recycles no move graphs", "[expansion][near
   };
   CHECK(recycled_steps(whole) > 0);
   CHECK(recycled_steps(near) == 0);
+}
+
+TEST_CASE("a step reports the variables its move worked over", "[expansion][near]") {
+  // 40 x 30 pixels, 4 labels: near moves of radius 2 from their label, then whole sweeps.
+  Rng rng(12);
+  const PairwiseEnergy energy = random_grid_energy(rng, 40, 30, 4);
+  const std::size_t n = energy.num_variables();
+  ExpansionOptions options;
+  options.near_radius = 2;
+  options.near_seeds = NearSeeds::label;
+  ExpansionSolver<> solver(options);
+  solver.bind(energy, random_labeling(rng, n, 4));
+  std::size_t near_steps = 0, whole_steps = 0;
+  for (int step = 0; step < 40; ++step) {
+    const Labeling before(solver.labeling().begin(), solver.labeling().end());
+    solver.step();
+    const MoveStep& last = solver.last_step();
+    if (!last.near) {
+      CHECK(last.variables == n);
+      ++whole_steps;
+      continue;
+    }
+    // Brute force: the variables within 2 edges of one labelled alpha, not labelled alpha.
+    std::vector<int> distance(n, 1 << 20);
+    for (std::size_t v = 0; v < n; ++v)
+      if (before[v] == last.alpha) distance[v] = 0;
+    for (int round = 0; round < 2; ++round) {
+      std::vector<int> next = distance;
+      for (const Edge& edge : energy.edges()) {
+        next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
+        next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+      }
+      distance = next;
+    }
+    std::size_t free = 0;
+    for (std::size_t v = 0; v < n; ++v) free += distance[v] <= 2 && before[v] != last.alpha;
+    CHECK(last.variables == free);
+    CHECK(last.variables < n);
+    ++near_steps;
+  }
+  CHECK(near_steps > 0);
+  CHECK(whole_steps > 0);
+}
+
+TEST_CASE("near moves only where the edges are local, when asked", "[expansion][near]") {
+  Rng rng(21);
+  // A 64 x 64 grid: 3 x 64 of its 8064 edges join the four bands of 16 rows.
+  const PairwiseEnergy grid = random_grid_energy(rng, 64, 64, 4);
+  // 4096 variables joined at random: about three quarters of the edges join different bands.
+  const PairwiseEnergy random = random_energy(rng, 4096, 4, 8192);
+  CHECK(edges_local(grid));
+  CHECK_FALSE(edges_local(random));
+  CHECK(share_of_edges_between_parts(grid, kDefaultFlowParts) ==
+        Approx(3.0 * 64.0 / 8064.0).epsilon(1e-12));
+
+  ExpansionOptions near;
+  near.near_radius = 2;
+  ExpansionOptions local = near;
+  local.near_moves_only_if_local = true;
+  CHECK(makes_near_moves(near, random));
+  CHECK(makes_near_moves(local, grid));
+  CHECK_FALSE(makes_near_moves(local, random));
+  CHECK_FALSE(makes_near_moves(ExpansionOptions{}, grid));
+  CHECK(near_only_if_local_from_string(near_graphs_name(true)));
+  CHECK_FALSE(near_only_if_local_from_string(near_graphs_name(false)));
+  CHECK_THROWS_WITH(near_only_if_local_from_string("grids"),
+                    Catch::Contains("'grids'") && Catch::Contains("local or any"));
+
+  // On the random graph the solver asked for near moves only where local makes whole moves,
+  // step for step as without near moves (recycling each label's graph); on the grid, near moves
+  // as without the condition.
+  const auto trace = [](const PairwiseEnergy& energy, const ExpansionOptions& options,
+                        const Labeling& start) {
+    ExpansionSolver<> solver(options);
+    solver.bind(energy, start);
+    std::vector<double> energies;
+    std::size_t near_steps = 0, recycled = 0;
+    for (std::size_t step = 0; step < 3 * solver.quiet_steps_to_converge(energy); ++step) {
+      energies.push_back(solver.step());
+      near_steps += solver.last_step().near;
+      recycled += solver.last_step().recycled;
+    }
+    return std::tuple(energies, near_steps, recycled);
+  };
+  const Labeling random_start = random_labeling(rng, random.num_variables(), 4);
+  const auto [asked, asked_near, asked_recycled] = trace(random, local, random_start);
+  const auto [whole, whole_near, whole_recycled] = trace(random, ExpansionOptions{}, random_start);
+  CHECK(asked == whole);
+  CHECK(asked_near == 0);
+  CHECK(asked_recycled == whole_recycled);
+  CHECK(ExpansionSolver<>(local).quiet_steps_to_converge(random) == 4);
+  const Labeling grid_start = random_labeling(rng, grid.num_variables(), 4);
+  const auto [on_grid, grid_near, grid_recycled] = trace(grid, local, grid_start);
+  const auto [plain, plain_near, plain_recycled] = trace(grid, near, grid_start);
+  CHECK(on_grid == plain);
+  CHECK(grid_near == plain_near);
+  CHECK(grid_near > 0);
+  CHECK(ExpansionSolver<>(local).quiet_steps_to_converge(grid) == 12);
 }

@@ -27,7 +27,13 @@ RunConfig config_without_flags(const RunDefaults& defaults) {
 }  // namespace
 
 TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defaults]") {
-  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults()}) {
+  // And defaults that make near moves from their label only where the edges are local, so that
+  // every near-move flag's default comes from RunDefaults too.
+  RunDefaults local_near = pairwise_defaults();
+  local_near.near_radius = 3;
+  local_near.near_seeds = NearSeeds::label;
+  local_near.near_moves_only_if_local = true;
+  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults(), local_near}) {
     const RunConfig expected = defaults.config();
     const RunConfig flags = config_without_flags(defaults);
     const auto* want = std::get_if<ExpansionOptions>(&expected.solver.original);
@@ -36,6 +42,8 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
     REQUIRE(got != nullptr);
     CHECK(*got == *want);
     CHECK(got->near_radius == defaults.near_radius);
+    CHECK(got->near_seeds == defaults.near_seeds);
+    CHECK(got->near_moves_only_if_local == defaults.near_moves_only_if_local);
     CHECK(got->shift_moves == defaults.shift_moves);
     CHECK(flags.solver.coarse == expected.solver.coarse);
     CHECK(flags.solver.maxflow == expected.solver.maxflow);

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 #include "c2f/core/edge_incidence.hpp"
 #include "c2f/support/enum_names.hpp"
 #include "c2f/support/memory_need.hpp"
+#include "c2f/support/text_input.hpp"
 
 namespace c2f {
 
@@ -23,6 +26,17 @@ std::string_view to_string(NearSeeds seeds) {
 NearSeeds near_seeds_from_string(std::string_view text) {
   constexpr NearSeeds kAll[] = {NearSeeds::label_and_cheapest, NearSeeds::label};
   return enum_from_string(text, kAll, "near-move seeds");
+}
+
+std::string_view near_graphs_name(bool only_if_local) {
+  return only_if_local ? "local" : "any";
+}
+
+bool near_only_if_local_from_string(std::string_view text) {
+  if (text == "local") return true;
+  if (text == "any") return false;
+  throw std::invalid_argument("unknown energies for near moves '" + printable(text) +
+                              "' (expected local or any)");
 }
 
 std::string MoveOptions::validate() const {
@@ -51,6 +65,14 @@ double share_of_edges_between_parts(const PairwiseEnergy& energy, std::size_t pa
                static_cast<std::size_t>(edge.v) * parts / n;
   }
   return static_cast<double>(between) / static_cast<double>(edges.size());
+}
+
+bool edges_local(const PairwiseEnergy& energy) {
+  return share_of_edges_between_parts(energy, kDefaultFlowParts) <= kMaxShareBetweenParts;
+}
+
+bool makes_near_moves(const ExpansionOptions& options, const PairwiseEnergy& energy) {
+  return options.near_radius > 0 && (!options.near_moves_only_if_local || edges_local(energy));
 }
 
 bool expansion_moves_submodular(const PairwiseEnergy& energy) {

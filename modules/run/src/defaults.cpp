@@ -9,6 +9,7 @@ RunConfig RunDefaults::config() const {
   ExpansionOptions expansion;
   expansion.near_radius = near_radius;
   expansion.near_seeds = near_seeds;
+  expansion.near_moves_only_if_local = near_moves_only_if_local;
   expansion.shift_moves = shift_moves;
   expansion.shift_moves_unless_submodular = shift_moves_unless_submodular;
   config.solver = expansion_spec(expansion, NearLevels::original, MaxFlowKind::dynamic);

@@ -25,11 +25,13 @@ unsigned flow_threads(const SolverOptions& options, std::size_t parts) {
   return expansion == nullptr ? 1 : threads_on_parts(expansion->threads, parts);
 }
 
-SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
+SolverSpec with_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
   const auto decide = [&energy](SolverOptions& options) {
     if (auto* expansion = std::get_if<ExpansionOptions>(&options)) {
       expansion->shift_moves = makes_shift_moves(*expansion, energy);
       expansion->shift_moves_unless_submodular = false;
+      if (!makes_near_moves(*expansion, energy)) expansion->near_radius = 0;
+      expansion->near_moves_only_if_local = false;
     }
   };
   decide(spec.original);
@@ -42,9 +44,8 @@ SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energ
 MemoryPlan plan_run(const PairwiseEnergy& energy, const RunConfig& config) {
   RunConfigError::throw_if(config.validate());
   try {
-    return plan_memory(detail::with_shift_moves_decided(config.solver, energy),
-                       problem_size(energy), budget_or_default(config.memory), config.graph_memory,
-                       config.energy_name);
+    return plan_memory(detail::with_moves_decided(config.solver, energy), problem_size(energy),
+                       budget_or_default(config.memory), config.graph_memory, config.energy_name);
   } catch (const std::invalid_argument& error) {
     throw RunConfigError("memory", error.what());
   }

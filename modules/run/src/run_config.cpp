@@ -52,16 +52,21 @@ std::string RunReport::threads_line() const {
   const auto on = [](unsigned threads) {
     return " on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
   };
+  const std::string near = near_radius <= 0
+                               ? ""
+                               : "near moves of radius " + std::to_string(near_radius) +
+                                     (near_seeds == NearSeeds::label ? " from their label" : "");
   const std::string shifts = shift_moves ? " with shift moves" : "";
   const std::string flow =
       flow_parts < 2 ? ""
                      : ", max-flow in " + std::to_string(flow_parts) + " parts" + on(flow_threads);
   if (regions < 2) {
-    return "solve: every move over every variable" + (flow.empty() ? " on one thread" : flow) +
-           shifts;
+    const std::string moves =
+        near.empty() ? "every move over every variable" : near + " (whole moves where they stall)";
+    return "solve: " + moves + (flow.empty() ? " on one thread" : flow) + shifts;
   }
   return "solve: moves by " + std::to_string(regions) + " regions" + on(solve_threads) + flow +
-         shifts;
+         (near.empty() ? shifts : " with " + near + (shift_moves ? " and shift moves" : ""));
 }
 
 }  // namespace c2f

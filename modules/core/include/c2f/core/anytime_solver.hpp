@@ -45,6 +45,15 @@ concept ConvergingSolver = AnytimeSolver<S, E> && requires(const S& cs, const E&
   { cs.quiet_steps_to_converge(e) } -> std::convertible_to<std::size_t>;
 };
 
+/// A solver that says how many variables its last step worked over (a graph-cut solver's
+/// last_step().variables: the level's for a whole move, fewer for a near move). The driver
+/// reports it with each step (StepEvent::step_variables); for any other solver a step counts
+/// every variable of its level.
+template <class S>
+concept StepScopeSolver = requires(const S& cs) {
+  { cs.last_step().variables } -> std::convertible_to<std::size_t>;
+};
+
 /// A solver that can give back the memory it keeps between steps (recycled move graphs, kept
 /// move problems): release() leaves it as newly constructed with its options, to be bound
 /// again. The driver calls it on the coarse levels' solver as the original problem begins, so

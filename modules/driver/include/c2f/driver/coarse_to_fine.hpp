@@ -69,8 +69,22 @@ class LevelSolver {
   [[nodiscard]] std::span<const Label> labeling() const {
     return at_original_ ? original_.labeling() : coarse_.labeling();
   }
+  /// The variables the last step worked over (StepScopeSolver), else `level_variables`.
+  [[nodiscard]] std::size_t step_variables(std::size_t level_variables) const {
+    return at_original_ ? step_variables_of(original_, level_variables)
+                        : step_variables_of(coarse_, level_variables);
+  }
 
  private:
+  template <class S>
+  static std::size_t step_variables_of(const S& solver, std::size_t level_variables) {
+    if constexpr (StepScopeSolver<S>) {
+      return solver.last_step().variables;
+    } else {
+      return level_variables;
+    }
+  }
+
   CoarseSolver& coarse_;
   OriginalSolver& original_;
   bool at_original_ = false;
@@ -192,9 +206,17 @@ Summary run_levels(const E& energy, P& levels, CoarseSolver& coarse_solver,
         history.push_back(solver.step());
         ++summary.total_steps;
       }
-      const StepEvent event{
-          clock.elapsed(),     level,       step,    summary.total_steps, history.back(),
-          stats.num_variables, at_original, history, solver.labeling(),   group_of};
+      const StepEvent event{clock.elapsed(),
+                            level,
+                            step,
+                            summary.total_steps,
+                            history.back(),
+                            stats.num_variables,
+                            step > 0 ? solver.step_variables(stats.num_variables) : 0,
+                            at_original,
+                            history,
+                            solver.labeling(),
+                            group_of};
       if (observer &&
           clock.off_the_clock([&] { return observer(event); }) == ObserverDecision::stop) {
         summary.reason = TerminationReason::observer;

@@ -22,7 +22,10 @@ struct StepEvent {
   long total_steps = 0;           ///< steps done in the whole run
   double energy = 0.0;            ///< energy of the ground (original) labeling
   std::size_t num_variables = 0;  ///< variables at this level
-  bool at_original = false;       ///< true on the last level (the original problem)
+  /// Variables this step's move worked over: num_variables for a whole move, fewer for a near
+  /// move (StepScopeSolver), num_variables for a solver that does not say; 0 at step 0.
+  std::size_t step_variables = 0;
+  bool at_original = false;                 ///< true on the last level (the original problem)
   std::span<const double> level_energies;   ///< energy after steps 0..step of this level
   std::span<const Label> level_labeling;    ///< current labeling of the level's variables
   std::span<const VariableIndex> group_of;  ///< pixel -> level variable; empty at the original

@@ -16,6 +16,9 @@ struct RunDefaults {
   int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
   /// Where those near moves start (ExpansionOptions::near_seeds).
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
+  /// Those near moves only on an energy whose edges are local (makes_near_moves); on any other
+  /// every move is a whole move.
+  bool near_moves_only_if_local = false;
   bool shift_moves = false;      ///< expansion's shift moves, original problem only
   /// Shift moves also on an energy where some expansion move is not submodular
   /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.

@@ -62,10 +62,11 @@ std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
 /// and ExpansionOptions::threads (resolved); 1 with one part.
 [[nodiscard]] unsigned flow_threads(const SolverOptions& options, std::size_t parts);
 
-/// `spec` with expansion's shift_moves_unless_submodular decided on `energy`
-/// (makes_shift_moves) on every level: shift_moves says, so that the memory plan counts the
-/// shift moves' solver only where they are made.
-[[nodiscard]] SolverSpec with_shift_moves_decided(SolverSpec spec, const PairwiseEnergy& energy);
+/// `spec` with expansion's shift_moves_unless_submodular and near_moves_only_if_local decided on
+/// `energy` (makes_shift_moves, makes_near_moves) on every level: shift_moves and near_radius
+/// say, so that the memory plan counts the shift and near moves' solver only where they are
+/// made, and gives recycled move graphs where near moves are not.
+[[nodiscard]] SolverSpec with_moves_decided(SolverSpec spec, const PairwiseEnergy& energy);
 
 /// The threads a run of `options` solves `regions` regions on: half of them at once, at most
 /// ExpansionOptions::threads (resolved); 1 without regions.
@@ -98,10 +99,13 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   planned.memory = report.budget;
   report.plan = plan_run(energy, planned);
   const SolverSpec spec =
-      with_memory_plan(detail::with_shift_moves_decided(config.solver, energy), report.plan);
+      with_memory_plan(detail::with_moves_decided(config.solver, energy), report.plan);
   report.recycles = recycles_move_graphs(spec.original);
-  if (const auto* expansion = std::get_if<ExpansionOptions>(&spec.original))
+  if (const auto* expansion = std::get_if<ExpansionOptions>(&spec.original)) {
     report.shift_moves = expansion->shift_moves;
+    report.near_radius = expansion->near_radius;
+    report.near_seeds = expansion->near_seeds;
+  }
   const ProblemSize size = problem_size(energy);
   Options options = config.limits;
   if (config.progress_rate) {

@@ -73,6 +73,11 @@ struct RunReport {
   /// Whether the original problem's solver makes shift moves on this energy (expansion:
   /// makes_shift_moves, which ExpansionOptions::shift_moves_unless_submodular may decide).
   bool shift_moves = false;
+  /// The radius of the original problem's near moves on this energy (0: none; expansion:
+  /// makes_near_moves, which ExpansionOptions::near_moves_only_if_local may decide) and where
+  /// they start.
+  int near_radius = 0;
+  NearSeeds near_seeds = NearSeeds::label_and_cheapest;
 
   /// "memory budget 5.9 GiB (a quarter of ...), recycled move graphs up to 2.1 GiB, kept move
   /// problems 12.0 MiB" (the second part for solvers that recycle, the third when problems are
@@ -82,10 +87,12 @@ struct RunReport {
   /// 380 MiB, recycled move graphs up to 2.1 GiB, kept move problems 12.0 MiB, 1.2 GiB used at
   /// the end".
   [[nodiscard]] std::string memory_report() const;
-  /// "solve: moves by 16 regions on 2 threads" or "solve: every move over every variable on
-  /// one thread" (the original problem's binding), with ", max-flow in 4 parts on 2 threads"
-  /// after the moves when the max-flow of moves over every variable is solved in parts, and
-  /// ending " with shift moves" when it makes them, as the tools' summaries write it.
+  /// "solve: moves by 16 regions on 2 threads with near moves of radius 5", "solve: near moves
+  /// of radius 3 from their label (whole moves where they stall) on one thread" or "solve: every
+  /// move over every variable on one thread" (the original problem's binding), with ", max-flow
+  /// in 4 parts on 2 threads" after the moves when the max-flow of moves over every variable is
+  /// solved in parts, and ending " with shift moves" (" and shift moves" after the regions' near
+  /// moves) when it makes them, as the tools' summaries write it.
   [[nodiscard]] std::string threads_line() const;
 };
 

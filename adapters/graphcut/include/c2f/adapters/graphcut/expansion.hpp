@@ -70,7 +70,7 @@ class ExpansionSolver {
   /// next kind up, ending in a whole sweep; so K + 1 sweeps' steps without decrease hold K
   /// complete sweeps, the last a whole sweep that found nothing.
   [[nodiscard]] std::size_t quiet_steps_to_converge(const PairwiseEnergy& energy) const {
-    const bool near = options_.near_radius > 0;
+    const bool near = makes_near_moves(options_, energy);
     const std::size_t kinds = 1 + (near ? 1 : 0) + (near && regions_on(energy) ? 1 : 0);
     const std::size_t shifts = makes_shift_moves(options_, energy) ? 2 : 0;
     return (kinds == 1 ? 1 : kinds + 1) * (shifts + static_cast<std::size_t>(energy.num_labels()));
@@ -85,9 +85,11 @@ class ExpansionSolver {
     problems_.bind(energy, options_.problem_memory_limit, &incidences, options_.threads);
     shift_moves_ = makes_shift_moves(options_, energy);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
-    const std::size_t graph_limit = recycled_graph_limit(options_);
+    near_radius_ = makes_near_moves(options_, energy) ? options_.near_radius : 0;
+    // recycled_graph_limit, for this energy: none with near moves.
+    const std::size_t graph_limit = near_radius_ > 0 ? 0 : options_.graph_memory_limit;
     regions_ = {};
-    if (options_.regions > 1 && options_.near_radius > 0) {
+    if (options_.regions > 1 && near_radius_ > 0) {
       regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys, graph_limit,
                     options_.threads, detail::kMinRegionVariables, &incidences);
     }
@@ -107,8 +109,8 @@ class ExpansionSolver {
     }
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
-    if (options_.near_radius > 0)
-      near_.bind(energy, options_.near_radius, options_.near_seeds, &incidences, options_.threads);
+    if (near_radius_ > 0)
+      near_.bind(energy, near_radius_, options_.near_seeds, &incidences, options_.threads);
     sweep_steps_done_ = 0;
     sweep_ = first_sweep();
   }
@@ -213,7 +215,7 @@ class ExpansionSolver {
   /// moves every sweep is a whole one: sweeps of region moves then cost more steps to
   /// convergence than their threads save (docs/performance.md).
   [[nodiscard]] Sweep first_sweep() const noexcept {
-    return options_.near_radius > 0 ? Sweep::near : Sweep::whole;
+    return near_radius_ > 0 ? Sweep::near : Sweep::whole;
   }
 
   /// Chooses the next sweep's moves: a near or region sweep that lowered the energy by at most
@@ -293,6 +295,7 @@ class ExpansionSolver {
     last_ = {};
     last_.alpha = last_.beta = alpha;
     last_.near = true;
+    last_.variables = free.size();
     moved_.clear();
     if (free.empty()) return;
     near_solver_.bind(free.size(), near_.pairs());
@@ -336,6 +339,7 @@ class ExpansionSolver {
     move_start_ = state_.labeling;
     const double start_value = state_.value;
     if (move == Move::near) near_.select(alpha, state_.labeling);
+    const std::size_t variables = move == Move::near ? near_.free().size() : state_.labeling.size();
     const auto key = move == Move::shift
                          ? static_cast<std::size_t>(energy.num_labels()) + (shift > 0 ? 0 : 1)
                          : static_cast<std::size_t>(alpha);
@@ -361,6 +365,7 @@ class ExpansionSolver {
       }
       problems_.log_changes(std::span<const VariableIndex>(moved_).subspan(before));
     }
+    last_.variables = variables;
     // The regions' changes summed; the exact energy decides, as for a move on one graph.
     // The candidate already holds the moved labeling; the labeling goes back to the start.
     state_.value = start_value;
@@ -377,6 +382,7 @@ class ExpansionSolver {
 
   ExpansionOptions options_;
   bool shift_moves_ = false;  // this binding makes shift moves (makes_shift_moves)
+  int near_radius_ = 0;       // this binding's near radius (0 unless makes_near_moves)
   std::size_t parts_ = 1;     // the parts of this binding's moves over every variable
   detail::MoveState<Backend> state_;
   detail::ExpansionProblems problems_;
@@ -390,7 +396,7 @@ class ExpansionSolver {
   // Region moves (options_.regions).
   detail::RegionMoves<Backend> regions_;
   Labeling move_start_;  // the labeling a region move began with
-  // Near moves (options_.near_radius > 0).
+  // Near moves (near_radius_ > 0).
   detail::NearMoves near_;
   BinaryMoveSolver<Backend> near_solver_;
   std::vector<MoveLabel> near_out_;

@@ -69,6 +69,12 @@ std::string_view to_string(NearSeeds seeds);
 /// std::invalid_argument naming the text.
 NearSeeds near_seeds_from_string(std::string_view text);
 
+/// The name the tools and Python give ExpansionOptions::near_moves_only_if_local: "local"
+/// (true) or "any" (false).
+std::string_view near_graphs_name(bool only_if_local);
+/// Parses "local" or "any" (near_graphs_name); throws std::invalid_argument naming the text.
+bool near_only_if_local_from_string(std::string_view text);
+
 /// Alpha-expansion's options: those every graph-cut solver has, and its own kinds of move.
 struct ExpansionOptions : MoveOptions {
   /// 0: every move may change every variable. r > 0: a move to alpha frees only the variables
@@ -82,6 +88,13 @@ struct ExpansionOptions : MoveOptions {
   double near_sweep_gain = 1e-4;
   /// Where near moves start (NearSeeds); only with near_radius > 0.
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
+  /// With near_radius > 0: make near moves only on an energy whose edges are local in its
+  /// variables' order (edges_local: a pixel grid, a lattice), decided when the solver is bound;
+  /// on any other energy every move is a whole move. On a random graph r rounds of neighbours
+  /// reach nearly every variable, so a near move is a whole move on a graph built afresh:
+  /// random graphs took 1.95-2.01x flat's time to its energy with near moves from their label
+  /// against 1.02-1.11x with whole moves, while lattices gained (docs/results.md, "Defaults").
+  bool near_moves_only_if_local = false;
   /// Bytes the kept move problems may take: every label's move problem (d, p) is kept for
   /// patching when all of them fit (detail/expansion_problems.hpp), so a move's problem costs
   /// in proportion to what changed since that label's last move. 0 turns it off; results never
@@ -153,6 +166,16 @@ inline constexpr double kMaxShareBetweenParts = 0.05;
 /// cut them); 0 without edges. O(E).
 [[nodiscard]] double share_of_edges_between_parts(const PairwiseEnergy& energy, std::size_t parts);
 
+/// Whether `energy`'s edges are local in its variables' order: at most kMaxShareBetweenParts of
+/// them join different parts when its variables are cut into kDefaultFlowParts bands of indices
+/// (share_of_edges_between_parts), as on a pixel grid of at least about 30 rows or a lattice in
+/// row order; not on a random graph. O(E).
+[[nodiscard]] bool edges_local(const PairwiseEnergy& energy);
+
+/// Whether alpha-expansion with `options` makes near moves on `energy`: near_radius > 0, and
+/// the edges are local unless near_moves_only_if_local is false.
+[[nodiscard]] bool makes_near_moves(const ExpansionOptions& options, const PairwiseEnergy& energy);
+
 /// Whether every expansion move on `energy` is submodular, so that none needs QPBO: every edge
 /// weight is >= 0 and every pairwise term has cost(a, a) + cost(b, c) <= cost(b, a) + cost(a, c)
 /// for all labels a, b, c (metrics such as Potts and truncated linear do; truncated quadratic
@@ -169,7 +192,8 @@ inline constexpr double kMaxShareBetweenParts = 0.05;
 /// a sweep), so a label's copied graph is reused once or twice and the copies cost more than
 /// they save: on Teddy (flat, near radius 5, shift moves) 15.8-16.1 s with no recycled graphs,
 /// 17.0-17.2 s with 0.3 GiB of them, 18.4 s with all; with whole moves only, recycling all
-/// graphs was the faster (15.2 s against 18.0-19.8 s).
+/// graphs was the faster (15.2 s against 18.0-19.8 s). A solver bound to an energy on which it
+/// makes no near moves (near_moves_only_if_local) recycles within graph_memory_limit.
 [[nodiscard]] std::size_t recycled_graph_limit(const ExpansionOptions& options) noexcept;
 
 /// How a max-flow backend stores its graphs, for the memory estimates below: in flat arrays
@@ -214,8 +238,11 @@ enum class GraphStorage { arrays, adjacency_lists };
 
 /// What the last step of a graph-cut solver did.
 struct MoveStep : StepOutcome {
-  Label alpha = 0;            ///< expansion: the label moved to; swap: the pair's first label
-  Label beta = 0;             ///< swap: the pair's second label; expansion: equal to alpha
+  Label alpha = 0;  ///< expansion: the label moved to; swap: the pair's first label
+  Label beta = 0;   ///< swap: the pair's second label; expansion: equal to alpha
+  /// Variables of the move's binary problem: every variable of the level for a whole, shift or
+  /// swap move (by regions or not), the free ones for a near move (0 when it freed none).
+  std::size_t variables = 0;
   std::size_t unlabeled = 0;  ///< variables QPBO left open (they kept their label)
   bool used_qpbo = false;     ///< the move was not submodular and went to QPBO
   bool recycled = false;      ///< solved on the move's own graph, resumed from its last flow

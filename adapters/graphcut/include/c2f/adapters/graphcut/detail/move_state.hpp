@@ -83,6 +83,7 @@ struct MoveState {
     MoveStep step;
     step.alpha = alpha;
     step.beta = beta;
+    step.variables = move_d.size();
     step.unlabeled = stats.unlabeled;
     step.used_qpbo = stats.used_qpbo;
     step.recycled = stats.recycled;
