@@ -231,11 +231,10 @@ std::string near_and_shift_moves_text(const SolverSpec& spec) {
   const auto* options = std::get_if<ExpansionOptions>(&spec.original);
   if (options == nullptr) return {};
   std::string moves;
-  if (options->near_radius > 0)
-    moves = "near moves of radius " + std::to_string(options->near_radius) +
-            (options->near_seeds == NearSeeds::label ? " from their label" : "");
-  if (options->near_radius > 0 && options->near_moves_only_if_local)
-    moves += " where the edges are local";
+  if (options->near_radius > 0) {
+    moves = near_moves_text(options->near_radius, options->near_seeds);
+    if (options->near_moves_only_if_local) moves += " where the edges are local";
+  }
   if (options->shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
   if (moves.empty()) return {};
   return ", " + moves + (spec.coarse ? " on the original problem only" : " on every level");

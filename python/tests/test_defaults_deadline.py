@@ -8,8 +8,8 @@ for finding them among the level's labels: on this machine a free variable cost 
 variables and the search 0-4% of a whole move (200 x 250 and 550 x 550 grids, Potts, truncated
 linear and quadratic), and both constants are above that. Each coarse level also costs the
 original problem's N for building its partition and reducing the energy, charged when its first
-step starts, and every level's step 0 (its binding) n. The deadline is a third of the work flat needs to converge; at that point the
-defaults' energy must be no higher than flat's.
+step starts, and every level's step 0 (its binding) n. The deadline is a third of the work flat
+needs to converge; at that point the defaults' energy must be no higher than flat's.
 """
 
 import numpy as np

@@ -28,6 +28,11 @@ NearSeeds near_seeds_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "near-move seeds");
 }
 
+std::string near_moves_text(int radius, NearSeeds seeds) {
+  return "near moves of radius " + std::to_string(radius) +
+         (seeds == NearSeeds::label ? " from their label" : "");
+}
+
 std::string_view near_graphs_name(bool only_if_local) {
   return only_if_local ? "local" : "any";
 }

@@ -140,6 +140,7 @@ using c2f::MoveStep;
 using c2f::near_levels_from_string;
 using c2f::NearLevels;
 using c2f::near_graphs_name;
+using c2f::near_moves_text;
 using c2f::near_only_if_local_from_string;
 using c2f::near_seeds_from_string;
 using c2f::NearSeeds;

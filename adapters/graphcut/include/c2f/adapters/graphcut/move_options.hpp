@@ -69,6 +69,10 @@ std::string_view to_string(NearSeeds seeds);
 /// std::invalid_argument naming the text.
 NearSeeds near_seeds_from_string(std::string_view text);
 
+/// "near moves of radius R" (" from their label" after it with NearSeeds::label), as the tools'
+/// summaries name them.
+std::string near_moves_text(int radius, NearSeeds seeds);
+
 /// The name the tools and Python give ExpansionOptions::near_moves_only_if_local: "local"
 /// (true) or "any" (false).
 std::string_view near_graphs_name(bool only_if_local);
