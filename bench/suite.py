@@ -193,10 +193,10 @@ def term_of(kind: str, labels: int):
 
 def solve_pair(energy, truth: Optional[np.ndarray], time_limit: float) -> Outcome:
     """Flat with the defaults' moves, then the defaults, on one clock; where the defaults make
-    near moves, flat with whole moves as well, before them, and the flat run that converged
-    sooner is the baseline (the strongest flat: near moves from their label are what the
-    defaults make after a coarse level, and from a noisy start flat is often faster without
-    them). With a truth, the error of every step (pixels more than one label from it) is taken
+    near moves (near_radius > 0, at least near_min_variables variables), flat with whole moves
+    as well, before them, and the flat run that converged sooner is the baseline (the strongest
+    flat: near moves from their label are what the defaults make after a coarse level, and from
+    a noisy start flat is often faster without them). With a truth, the error of every step (pixels more than one label from it) is taken
     in the run's callback, which the run clock does not count."""
     def run(schedule, options=None):
         errors: List[float] = []
@@ -215,7 +215,8 @@ def solve_pair(energy, truth: Optional[np.ndarray], time_limit: float) -> Outcom
         return result, trace
 
     flats = [run("flat") + ("same",)]
-    if c2f.defaults()["near_radius"] > 0:
+    defaults = c2f.defaults()
+    if defaults["near_radius"] > 0 and energy.num_variables >= defaults["near_min_variables"]:
         flats.append(run("flat", {"near_radius": 0}) + ("whole",))
     flat, flat_trace, flat_moves = min(flats, key=lambda f: f[0].seconds)
     c2f_result, c2f_trace = run(None)

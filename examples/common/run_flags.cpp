@@ -60,6 +60,10 @@ void RunFlags::declare(ToolOptions& options) {
             "indices, as on a pixel grid or lattice; elsewhere, e.g. on a random graph, where a "
             "few rounds of neighbours reach nearly every variable, every move is a whole move) "
             "or any")
+      .integer("near-min-variables", &near_min_variables_, {0, 4'000'000'000},
+               "make --near-radius's moves only on an energy of at least this many variables "
+               "(0: any size); on a smaller one every move is a whole move (recycling its "
+               "graph, which is cheap there)")
       .on_off_auto("shift-moves", &shift_moves_,
                    "expansion: every sweep begins with two moves in which every variable may step "
                    "one label up, then down, at once (moves regions that are off by one label, "
@@ -116,6 +120,14 @@ SolverSpec RunFlags::solver_spec() const {
       with_flag("--near-graphs", [&] { return near_only_if_local_from_string(near_graphs_); });
   if (near_radius_ == 0 && only_if_local != defaults_.near_moves_only_if_local)
     throw std::invalid_argument("--near-graphs: has no effect without --near-radius");
+  // The defaults' size floor belongs to the defaults' near moves: --near-radius alone makes
+  // near moves on an energy of any size.
+  const bool min_variables_given =
+      static_cast<std::size_t>(near_min_variables_) != defaults_.near_moves_min_variables;
+  if (near_radius_ == 0 && min_variables_given)
+    throw std::invalid_argument("--near-min-variables: has no effect without --near-radius");
+  const std::size_t min_variables =
+      min_variables_given || !near_radius_given ? static_cast<std::size_t>(near_min_variables_) : 0;
   const bool shift_moves_given = shift_moves_ != shift_moves_value(defaults_);
   const auto refuse = [&](const std::string& problem) {
     std::string flags = near_radius_given ? "--near-radius" : "";
@@ -157,6 +169,7 @@ SolverSpec RunFlags::solver_spec() const {
       options.near_radius = near_radius_;
       options.near_seeds = seeds;
       options.near_moves_only_if_local = only_if_local;
+      options.near_moves_min_variables = min_variables;
       options.shift_moves = shift_moves_ == "on";
       options.shift_moves_unless_submodular = shift_moves_ == "auto";
       options.regions = regions_;
@@ -234,6 +247,10 @@ std::string near_and_shift_moves_text(const SolverSpec& spec) {
   if (options->near_radius > 0) {
     moves = near_moves_text(options->near_radius, options->near_seeds);
     if (options->near_moves_only_if_local) moves += " where the edges are local";
+    if (options->near_moves_min_variables > 0) {
+      moves += " on energies of at least " + std::to_string(options->near_moves_min_variables) +
+               " variables";
+    }
   }
   if (options->shift_moves) moves += moves.empty() ? "shift moves" : " and shift moves";
   if (moves.empty()) return {};

@@ -1,7 +1,8 @@
 #pragma once
 // The options that configure a run, shared by the tools that offer every pairwise solver
 // (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --threads, --regions,
-// --near-radius, --near-seeds, --near-graphs, --shift-moves, --near-levels, --label-order,
+// --near-radius, --near-seeds, --near-graphs, --near-min-variables, --shift-moves, --near-levels,
+// --label-order,
 // --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau. They become one
 // RunConfig of the run layer.
 
@@ -22,11 +23,12 @@ class RunFlags {
         near_radius_(defaults.near_radius),
         near_seeds_(to_string(defaults.near_seeds)),
         near_graphs_(near_graphs_name(defaults.near_moves_only_if_local)),
+        near_min_variables_(static_cast<long>(defaults.near_moves_min_variables)),
         shift_moves_(shift_moves_value(defaults)),
         plateau_(defaults.progress_rate ? "rate" : std::to_string(defaults.plateau_steps)),
         plateau_tolerance_(defaults.plateau_tolerance) {}
 
-  /// Declares the seventeen options in `options` (this object receives their values, so it
+  /// Declares the eighteen options in `options` (this object receives their values, so it
   /// must outlive options.parse()).
   void declare(ToolOptions& options);
 
@@ -58,6 +60,7 @@ class RunFlags {
   int near_radius_;
   std::string near_seeds_;   // label_and_cheapest or label
   std::string near_graphs_;  // local or any
+  long near_min_variables_;  // near moves only on energies of at least this many variables
   std::string shift_moves_;  // on, off or auto
   double time_limit_ = 0.0;  // seconds on the run clock, 0: none
   long max_steps_ = 0;       // steps in the whole run, 0: none
@@ -68,7 +71,8 @@ class RunFlags {
 
 /// ", near moves of radius R and shift moves on the original problem only" (", near moves of
 /// radius R from their label" with NearSeeds::label, "... where the edges are local" with
-/// near_moves_only_if_local) for the near and shift moves `spec` makes, else "" (a tool's
+/// near_moves_only_if_local, "... on energies of at least N variables" with
+/// near_moves_min_variables) for the near and shift moves `spec` makes, else "" (a tool's
 /// summary line, before the energy decides; RunReport::threads_line says what was made).
 [[nodiscard]] std::string near_and_shift_moves_text(const SolverSpec& spec);
 

@@ -72,7 +72,8 @@ def defaults(name: str = "pairwise") -> Dict[str, Any]:
     -------
     dict
         ``grid_schedule`` and ``general_schedule`` (the schedule on a grid energy and on any
-        other), expansion's ``near_radius`` and ``shift_moves`` (on the original problem),
+        other), expansion's ``near_radius``, ``near_seeds``, ``near_graphs``,
+        ``near_min_variables`` and ``shift_moves`` (on the original problem),
         ``plateau`` and ``plateau_tolerance`` (coarse levels): the configuration measured best
         on a tuning set and confirmed on instances set aside (docs/results.md, "Defaults").
     """
@@ -112,8 +113,8 @@ def solve(
         variable (equal ids: one group), each refining the one before.
     defaults : {'pairwise', 'stereo'}, default 'pairwise'
         Which of the library's measured defaults (``defaults(name)``) fill the arguments left
-        None and expansion's ``near_radius``, ``near_seeds`` and ``shift_moves`` not in
-        ``options``.
+        None and expansion's ``near_radius``, ``near_seeds``, ``near_graphs``,
+        ``near_min_variables`` and ``shift_moves`` not in ``options``.
     method : {'expansion', 'swap', 'lbp', 'icm'}, default 'expansion'
         The solver: alpha-expansion with QPBO moves, alpha-beta swap, loopy belief propagation
         or iterated conditional modes.
@@ -123,7 +124,10 @@ def solve(
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
           ``tolerance``, ``near_radius`` (near moves), ``near_seeds`` ('label_and_cheapest':
           a move to a label starts from its variables and those whose cheapest unary it is;
-          'label': from its variables only), ``near_sweep_gain``, ``shift_moves``
+          'label': from its variables only), ``near_graphs`` ('local': near moves only on an
+          energy whose edges are local in its variables' order, a grid or lattice; 'any'),
+          ``near_min_variables`` (near moves only on an energy of at least this many
+          variables; 0: any size), ``near_sweep_gain``, ``shift_moves``
           (True, False, or 'auto': only on an energy where some expansion move is not
           submodular, e.g. truncated quadratic; the pairwise defaults' choice), ``regions`` (near and shift moves by at most this many bands of rows at once, e.g.
           16; 1, the default: none), ``flow_parts`` (each move's max-flow in this many bands

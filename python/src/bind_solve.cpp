@@ -139,6 +139,7 @@ py::dict defaults_dict(const std::string& name) {
   out["near_radius"] = defaults.near_radius;
   out["near_seeds"] = std::string(to_string(defaults.near_seeds));
   out["near_graphs"] = std::string(near_graphs_name(defaults.near_moves_only_if_local));
+  out["near_min_variables"] = defaults.near_moves_min_variables;
   out["shift_moves"] = defaults.shift_moves                     ? py::object(py::bool_(true))
                        : defaults.shift_moves_unless_submodular ? py::object(py::str("auto"))
                                                                 : py::object(py::bool_(false));

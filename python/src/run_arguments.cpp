@@ -112,23 +112,30 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
       expansion.near_radius = defaults.near_radius;
       expansion.near_seeds = defaults.near_seeds;
       expansion.near_moves_only_if_local = defaults.near_moves_only_if_local;
+      expansion.near_moves_min_variables = defaults.near_moves_min_variables;
       expansion.shift_moves = defaults.shift_moves;
       expansion.shift_moves_unless_submodular = defaults.shift_moves_unless_submodular;
       NearLevels levels = NearLevels::original;
+      bool near_radius_named = false, min_variables_named = false;
       for (const auto& [key, value] :
            option_items(options, owner,
                         {"order", "seed", "tolerance", "near_radius", "near_seeds", "near_graphs",
-                         "near_sweep_gain", "shift_moves", "near_levels", "maxflow", "regions",
-                         "threads", "flow_parts"})) {
+                         "near_min_variables", "near_sweep_gain", "shift_moves", "near_levels",
+                         "maxflow", "regions", "threads", "flow_parts"})) {
         const std::string name = option_name(key);
         if (set_move_option(expansion, key, value, name)) continue;
         if (key == "near_radius") {
           expansion.near_radius = static_cast<int>(integer_argument(value, name, 0, INT32_MAX));
+          near_radius_named = true;
         } else if (key == "near_seeds") {
           expansion.near_seeds = named_value(value, name, near_seeds_from_string);
         } else if (key == "near_graphs") {
           expansion.near_moves_only_if_local =
               named_value(value, name, near_only_if_local_from_string);
+        } else if (key == "near_min_variables") {
+          expansion.near_moves_min_variables =
+              static_cast<std::size_t>(integer_argument(value, name, 0, INT64_MAX));
+          min_variables_named = true;
         } else if (key == "near_sweep_gain") {
           expansion.near_sweep_gain = real_argument(value, name);
         } else if (key == "shift_moves") {
@@ -145,6 +152,11 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
           spec.maxflow = named_value(value, name, maxflow_kind_from_string);
         }
       }
+      // The defaults' size floor belongs to the defaults' near moves: near_radius named alone
+      // makes near moves on an energy of any size.
+      if (near_radius_named && !min_variables_named) expansion.near_moves_min_variables = 0;
+      if (min_variables_named && expansion.near_radius == 0)
+        throw py::value_error("options['near_min_variables']: has no effect without near_radius");
       if (expansion.regions > 1 && expansion.near_radius == 0)
         throw py::value_error("options['regions']: has no effect without near_radius");
       if (expansion.flow_parts > 1 && spec.maxflow != MaxFlowKind::dynamic) {

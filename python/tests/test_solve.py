@@ -143,7 +143,8 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
     defaults = c2f.defaults()
     assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "near_seeds",
-                             "near_graphs", "shift_moves", "plateau", "plateau_tolerance"}
+                             "near_graphs", "near_min_variables", "shift_moves", "plateau",
+                             "plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
     explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
@@ -151,6 +152,7 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
                          options={"near_radius": defaults["near_radius"],
                                   "near_seeds": defaults["near_seeds"],
                                   "near_graphs": defaults["near_graphs"],
+                                  "near_min_variables": defaults["near_min_variables"],
                                   "shift_moves": defaults["shift_moves"]})
     np.testing.assert_array_equal(implicit.trace["energy"], explicit.trace["energy"])
     assert implicit.trace["level"].max() > 0  # coarse to fine, not flat
@@ -197,7 +199,7 @@ def test_near_moves_from_their_label_end_where_no_whole_move_helps(rng):
     # Converged means a sweep of whole moves found nothing: a whole-move run from there agrees.
     whole = c2f.solve(energy, "flat", start=near.labeling)
     assert whole.energy == pytest.approx(near.energy, rel=1e-12)
-    assert c2f.defaults()["near_seeds"] == "label_and_cheapest"
+    assert c2f.defaults("stereo")["near_seeds"] == "label_and_cheapest"
     with pytest.raises(ValueError, match=r"options\['near_seeds'\]"):
         c2f.solve(energy, options={"near_radius": 2, "near_seeds": "cheapest"})
     # The trace says how many variables each near move freed: fewer than the level's.
@@ -209,7 +211,8 @@ def test_near_moves_from_their_label_end_where_no_whole_move_helps(rng):
 def test_near_moves_only_where_the_edges_are_local(rng):
     """near_graphs 'local': near moves on a grid, whole moves on a random graph (where a few
     rounds of neighbours reach nearly every variable), step for step as without near moves."""
-    assert c2f.defaults()["near_graphs"] == "any"
+    assert c2f.defaults()["near_graphs"] == "local"
+    assert c2f.defaults("stereo")["near_graphs"] == "any"
     local = {"near_radius": 2, "near_seeds": "label", "near_graphs": "local"}
     grid = c2f.Energy.grid(rng.random((40, 50, 5)), c2f.Term.truncated_linear(2.0), weight=0.6)
     on_grid = c2f.solve(grid, "flat", options=local)
@@ -226,6 +229,34 @@ def test_near_moves_only_where_the_edges_are_local(rng):
     assert "near moves" not in asked.summary
     with pytest.raises(ValueError, match=r"options\['near_graphs'\]: unknown energies for near"):
         c2f.solve(grid, options={"near_radius": 2, "near_graphs": "grids"})
+
+
+def test_near_moves_only_on_energies_of_the_size_asked(rng):
+    """near_min_variables: whole moves, step for step, on an energy below the size; near moves
+    at or above it. The defaults' size floor belongs to their near moves: near_radius named
+    alone makes near moves at any size."""
+    defaults = c2f.defaults()
+    assert defaults["near_radius"] > 0 and defaults["near_min_variables"] > 0
+    assert c2f.defaults("stereo")["near_min_variables"] == 0
+    grid = c2f.Energy.grid(rng.random((40, 50, 5)), c2f.Term.truncated_linear(2.0), weight=0.6)
+    n = grid.num_variables
+    near = {"near_radius": 2, "near_seeds": "label"}
+    below = c2f.solve(grid, "flat", options={**near, "near_min_variables": n + 1})
+    whole = c2f.solve(grid, "flat", options={"near_radius": 0})
+    np.testing.assert_array_equal(below.trace["energy"], whole.trace["energy"])
+    assert np.all(below.trace["step_variables"][1:] == n)
+    assert "near moves" not in below.summary
+    at = c2f.solve(grid, "flat", options={**near, "near_min_variables": n})
+    named_alone = c2f.solve(grid, "flat", options=near)
+    assert np.any(at.trace["step_variables"] < n)
+    np.testing.assert_array_equal(at.trace["energy"], named_alone.trace["energy"])
+    # With nothing named, this small grid gets the defaults' whole moves.
+    implicit = c2f.solve(grid, "flat")
+    np.testing.assert_array_equal(implicit.trace["energy"], whole.trace["energy"])
+    with pytest.raises(ValueError, match=r"options\['near_min_variables'\]: has no effect"):
+        c2f.solve(grid, options={"near_radius": 0, "near_min_variables": 10})
+    with pytest.raises(ValueError, match=r"options\['near_min_variables'\]"):
+        c2f.solve(grid, options={"near_min_variables": -1})
 
 
 def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
@@ -271,10 +302,11 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
     # One band and one part: every move on one thread. By default the max-flow is in 4 parts.
     one = c2f.solve(energy, "flat", options={"near_radius": 2, "flow_parts": 1})
-    assert "solve: near moves of radius 2 (whole moves where they stall) on one thread" in one.summary
+    assert ("solve: near moves of radius 2 from their label (whole moves where they stall) on one "
+            "thread" in one.summary)
     default = c2f.solve(energy, "flat", options={"near_radius": 2, "threads": 2})
-    assert ("solve: near moves of radius 2 (whole moves where they stall), max-flow in 4 parts on 2 "
-            "threads" in default.summary)
+    assert ("solve: near moves of radius 2 from their label (whole moves where they stall), "
+            "max-flow in 4 parts on 2 threads" in default.summary)
     with pytest.raises(ValueError, match="regions"):
         c2f.solve(energy, options={"regions": 0})
     with pytest.raises(ValueError, match="no effect without near_radius"):

@@ -153,6 +153,15 @@ TEST_CASE("run() reports each step's variables and decides near moves on the ene
   CHECK_THAT(report.threads_line(), !Catch::Contains("near moves"));
   for (std::size_t k = 0; k < on_random.steps.size(); ++k)
     CHECK(on_random.step_variables[k] == (on_random.steps[k] == 0 ? 0 : random.num_variables()));
+
+  // Below near_moves_min_variables the grid gets whole moves too.
+  std::get<ExpansionOptions>(config.solver.original).near_moves_min_variables =
+      grid.num_variables() + 1;
+  const Seen small_grid = steps_of(grid, {coarse}, report);
+  CHECK(report.near_radius == 0);
+  CHECK_THAT(report.threads_line(), !Catch::Contains("near moves"));
+  for (std::size_t k = 0; k < small_grid.steps.size(); ++k)
+    CHECK(small_grid.step_variables[k] == (small_grid.steps[k] == 0 ? 0 : small_grid.variables[k]));
 }
 
 TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step", "[run]") {

@@ -318,4 +318,19 @@ TEST_CASE("near moves only where the edges are local, when asked", "[expansion][
   CHECK(grid_near == plain_near);
   CHECK(grid_near > 0);
   CHECK(ExpansionSolver<>(local).quiet_steps_to_converge(grid) == 12);
+
+  // Near moves only on an energy of at least near_moves_min_variables variables: on a smaller
+  // one, whole moves step for step (recycling included).
+  ExpansionOptions sized = near;
+  sized.near_moves_min_variables = grid.num_variables();
+  CHECK(makes_near_moves(sized, grid));
+  sized.near_moves_min_variables = grid.num_variables() + 1;
+  CHECK_FALSE(makes_near_moves(sized, grid));
+  const auto [small, small_near, small_recycled] = trace(grid, sized, grid_start);
+  const auto [grid_whole, grid_whole_near, grid_whole_recycled] =
+      trace(grid, ExpansionOptions{}, grid_start);
+  CHECK(small == grid_whole);
+  CHECK(small_near == 0);
+  CHECK(small_recycled == grid_whole_recycled);
+  CHECK(ExpansionSolver<>(sized).quiet_steps_to_converge(grid) == 4);
 }

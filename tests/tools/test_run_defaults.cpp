@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <variant>
+#include <vector>
 
 #include "c2f/run/defaults.hpp"
 #include "c2f/run/stereo_run.hpp"
@@ -14,26 +15,39 @@ using namespace c2f;
 
 namespace {
 
-/// The RunConfig a tool's RunFlags give with no flag on the command line.
-RunConfig config_without_flags(const RunDefaults& defaults) {
+/// The RunConfig a tool's RunFlags give with `arguments` on the command line.
+RunConfig config_with_flags(const RunDefaults& defaults, std::vector<const char*> arguments) {
   examples::RunFlags flags(defaults);
   examples::ToolOptions options("test");
   flags.declare(options);
-  const char* argv[] = {"tool"};
-  REQUIRE(options.parse(1, argv, {"", 0}).has_value());
+  arguments.insert(arguments.begin(), "tool");
+  REQUIRE(options.parse(static_cast<int>(arguments.size()), arguments.data(), {"", 0}).has_value());
   return flags.config();
+}
+
+/// The RunConfig a tool's RunFlags give with no flag on the command line.
+RunConfig config_without_flags(const RunDefaults& defaults) {
+  return config_with_flags(defaults, {});
+}
+
+/// The original problem's expansion options of `config`.
+const ExpansionOptions& original_expansion(const RunConfig& config) {
+  const auto* options = std::get_if<ExpansionOptions>(&config.solver.original);
+  REQUIRE(options != nullptr);
+  return *options;
 }
 
 }  // namespace
 
 TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defaults]") {
-  // And defaults that make near moves from their label only where the edges are local, so that
-  // every near-move flag's default comes from RunDefaults too.
-  RunDefaults local_near = pairwise_defaults();
-  local_near.near_radius = 3;
-  local_near.near_seeds = NearSeeds::label;
-  local_near.near_moves_only_if_local = true;
-  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults(), local_near}) {
+  // And defaults whose near moves differ from both in every near-move setting, so that every
+  // near-move flag's default comes from RunDefaults too.
+  RunDefaults other_near = pairwise_defaults();
+  other_near.near_radius = 2;
+  other_near.near_seeds = NearSeeds::label_and_cheapest;
+  other_near.near_moves_only_if_local = false;
+  other_near.near_moves_min_variables = 1000;
+  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults(), other_near}) {
     const RunConfig expected = defaults.config();
     const RunConfig flags = config_without_flags(defaults);
     const auto* want = std::get_if<ExpansionOptions>(&expected.solver.original);
@@ -44,6 +58,7 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
     CHECK(got->near_radius == defaults.near_radius);
     CHECK(got->near_seeds == defaults.near_seeds);
     CHECK(got->near_moves_only_if_local == defaults.near_moves_only_if_local);
+    CHECK(got->near_moves_min_variables == defaults.near_moves_min_variables);
     CHECK(got->shift_moves == defaults.shift_moves);
     CHECK(flags.solver.coarse == expected.solver.coarse);
     CHECK(flags.solver.maxflow == expected.solver.maxflow);
@@ -54,4 +69,26 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
   }
   // The stereo defaults differ from a generic energy's: the loop above compares two configs.
   CHECK(vision::stereo_defaults().near_radius != pairwise_defaults().near_radius);
+}
+
+TEST_CASE("the defaults' size floor for near moves goes with their near moves",
+          "[tools][defaults]") {
+  const RunDefaults defaults = pairwise_defaults();
+  REQUIRE(defaults.near_radius > 0);
+  REQUIRE(defaults.near_moves_min_variables > 0);
+  // Nothing named: the defaults' floor. --near-radius alone: near moves at any size, unless
+  // --near-min-variables is named too.
+  CHECK(original_expansion(config_without_flags(defaults)).near_moves_min_variables ==
+        defaults.near_moves_min_variables);
+  CHECK(original_expansion(config_with_flags(defaults, {"--near-radius", "5"}))
+            .near_moves_min_variables == 0);
+  const ExpansionOptions both = original_expansion(
+      config_with_flags(defaults, {"--near-radius", "5", "--near-min-variables", "700"}));
+  CHECK(both.near_radius == 5);
+  CHECK(both.near_moves_min_variables == 700);
+  CHECK(original_expansion(config_with_flags(defaults, {"--near-min-variables", "700"}))
+            .near_moves_min_variables == 700);
+  CHECK_THROWS_WITH(
+      config_with_flags(defaults, {"--near-radius", "0", "--near-min-variables", "700"}),
+      Catch::Contains("--near-min-variables: has no effect without --near-radius"));
 }

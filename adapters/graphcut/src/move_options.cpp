@@ -77,7 +77,8 @@ bool edges_local(const PairwiseEnergy& energy) {
 }
 
 bool makes_near_moves(const ExpansionOptions& options, const PairwiseEnergy& energy) {
-  return options.near_radius > 0 && (!options.near_moves_only_if_local || edges_local(energy));
+  return options.near_radius > 0 && energy.num_variables() >= options.near_moves_min_variables &&
+         (!options.near_moves_only_if_local || edges_local(energy));
 }
 
 bool expansion_moves_submodular(const PairwiseEnergy& energy) {

@@ -10,6 +10,7 @@ RunConfig RunDefaults::config() const {
   expansion.near_radius = near_radius;
   expansion.near_seeds = near_seeds;
   expansion.near_moves_only_if_local = near_moves_only_if_local;
+  expansion.near_moves_min_variables = near_moves_min_variables;
   expansion.shift_moves = shift_moves;
   expansion.shift_moves_unless_submodular = shift_moves_unless_submodular;
   config.solver = expansion_spec(expansion, NearLevels::original, MaxFlowKind::dynamic);
@@ -24,6 +25,10 @@ RunDefaults pairwise_defaults() {
   defaults.grid_schedule = "agg:2,8,0.15/cc";
   defaults.general_schedule = "agg:2/cc";
   defaults.shift_moves_unless_submodular = true;
+  defaults.near_radius = 3;
+  defaults.near_seeds = NearSeeds::label;
+  defaults.near_moves_only_if_local = true;
+  defaults.near_moves_min_variables = 200000;
   return defaults;
 }
 

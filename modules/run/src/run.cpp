@@ -32,6 +32,7 @@ SolverSpec with_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
       expansion->shift_moves_unless_submodular = false;
       if (!makes_near_moves(*expansion, energy)) expansion->near_radius = 0;
       expansion->near_moves_only_if_local = false;
+      expansion->near_moves_min_variables = 0;
     }
   };
   decide(spec.original);

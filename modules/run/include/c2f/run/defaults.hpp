@@ -4,6 +4,7 @@
 // confirmed on instances set aside before tuning (docs/results.md, "Defaults"). Every value can
 // be overridden; `flat` with the same moves is the fair baseline of each.
 
+#include <cstddef>
 #include <string>
 
 #include "c2f/run/run_config.hpp"
@@ -19,6 +20,9 @@ struct RunDefaults {
   /// Those near moves only on an energy whose edges are local (makes_near_moves); on any other
   /// every move is a whole move.
   bool near_moves_only_if_local = false;
+  /// Those near moves only on an energy of at least this many variables (0: any size); on a
+  /// smaller one every move is a whole move.
+  std::size_t near_moves_min_variables = 0;
   bool shift_moves = false;      ///< expansion's shift moves, original problem only
   /// Shift moves also on an energy where some expansion move is not submodular
   /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.
@@ -40,8 +44,10 @@ struct RunDefaults {
 /// connected regions (on a grid agg:2,8,0.15/cc: unaries summed over 5x5 windows, or wider ones
 /// up to 17x17 while the level keeps more than 15% of the variables as groups; on any other
 /// graph agg:2/cc, over two rounds of graph neighbours, where wider rounds mix what differs);
-/// whole expansion moves, with shift moves on energies where some expansion move is not
-/// submodular (e.g. truncated quadratic); a coarse level ends after 4 moves without decrease.
+/// expansion moves, with shift moves on energies where some expansion move is not submodular
+/// (e.g. truncated quadratic); on the original problem near moves of radius 3 from their label
+/// where its edges are local (a grid, a lattice) and it has at least 200000 variables, whole
+/// moves elsewhere; a coarse level ends after 4 moves without decrease.
 [[nodiscard]] RunDefaults pairwise_defaults();
 
 }  // namespace c2f

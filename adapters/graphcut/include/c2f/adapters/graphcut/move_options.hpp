@@ -99,6 +99,13 @@ struct ExpansionOptions : MoveOptions {
   /// random graphs took 1.95-2.01x flat's time to its energy with near moves from their label
   /// against 1.02-1.11x with whole moves, while lattices gained (docs/results.md, "Defaults").
   bool near_moves_only_if_local = false;
+  /// With near_radius > 0: make near moves only on an energy of at least this many variables
+  /// (0: any size), decided when the solver is bound; on a smaller one every move is a whole
+  /// move. Whole moves recycle their graphs, which on a small energy costs little, while a near
+  /// move builds a graph of its own: on the suite's grids near moves from their label reached
+  /// flat's energy sooner from 0.3 MP on (tuning median 0.27 against 0.43 with whole moves) but
+  /// not at 0.1 MP (0.54 against 0.51; docs/results.md, "Defaults").
+  std::size_t near_moves_min_variables = 0;
   /// Bytes the kept move problems may take: every label's move problem (d, p) is kept for
   /// patching when all of them fit (detail/expansion_problems.hpp), so a move's problem costs
   /// in proportion to what changed since that label's last move. 0 turns it off; results never
@@ -176,8 +183,9 @@ inline constexpr double kMaxShareBetweenParts = 0.05;
 /// row order; not on a random graph. O(E).
 [[nodiscard]] bool edges_local(const PairwiseEnergy& energy);
 
-/// Whether alpha-expansion with `options` makes near moves on `energy`: near_radius > 0, and
-/// the edges are local unless near_moves_only_if_local is false.
+/// Whether alpha-expansion with `options` makes near moves on `energy`: near_radius > 0,
+/// `energy` has at least near_moves_min_variables variables, and its edges are local unless
+/// near_moves_only_if_local is false.
 [[nodiscard]] bool makes_near_moves(const ExpansionOptions& options, const PairwiseEnergy& energy);
 
 /// Whether every expansion move on `energy` is submodular, so that none needs QPBO: every edge
