@@ -453,7 +453,8 @@ TARGET_MEDIAN, TARGET_WORST, TARGET_MEGAPIXEL = 0.4, 1.1, 0.3
 def target_summary(rows: List[Dict[str, str]]) -> str:
     """Per family and set, over the instances where flat took at least a second: how many, the
     median ratio to 1e-4, the worst instance, the worst of a megapixel or more, each against its
-    target ('ok' or 'missed')."""
+    target ('ok' or 'missed'); then C2F's own convergence time over flat's (median and worst
+    instance; no target: C2F may go on polishing below flat's energy after reaching it)."""
     def verdict(value: float, target: float) -> str:
         return "-" if math.isnan(value) else ("ok" if value <= target else "missed")
 
@@ -461,7 +462,8 @@ def target_summary(rows: List[Dict[str, str]]) -> str:
              f"{TARGET_MIN_FLAT_SECONDS:g} s; median <= {TARGET_MEDIAN}, every instance <= "
              f"{TARGET_WORST}, from 1 MP <= {TARGET_MEGAPIXEL}):", "",
              "| family | set | n (of) | median to 1e-4 | worst to 1e-4 (instance) | "
-             "worst from 1 MP |", "|" + "---|" * 6]
+             "worst from 1 MP | converged C2F / flat: median, worst (instance) |",
+             "|" + "---|" * 7]
     groups: Dict[tuple, List[Dict[str, str]]] = {}
     for row in rows:
         groups.setdefault((row["family"], row["aside"]), []).append(row)
@@ -473,12 +475,19 @@ def target_summary(rows: List[Dict[str, str]]) -> str:
         worst_value = number(worst["ratio_1e4"]) if worst else math.nan
         large = [number(r["ratio_1e4"]) for r in scope if number(r["variables"]) >= 1e6]
         large_worst = max(large, default=math.nan)
+
+        def converged(r: Dict[str, str]) -> float:
+            return number(r["c2f_seconds"]) / number(r["flat_seconds"])
+
+        slowest = max(scope, key=converged, default=None)
+        convergence = (f"{text(median([converged(r) for r in scope]))}, "
+                       f"{text(converged(slowest))} ({slowest['instance']})" if slowest else "- -")
         lines.append(
             f"| {family} | {'aside' if aside == '1' else 'tuning'} | {len(scope)} "
             f"({len(members)}) | {text(middle)} {verdict(middle, TARGET_MEDIAN)} | "
             f"{text(worst_value)} {verdict(worst_value, TARGET_WORST)}"
             f"{' (' + worst['instance'] + ')' if worst else ''} | "
-            f"{text(large_worst)} {verdict(large_worst, TARGET_MEGAPIXEL)} |")
+            f"{text(large_worst)} {verdict(large_worst, TARGET_MEGAPIXEL)} | {convergence} |")
     return "\n".join(lines) + "\n"
 
 

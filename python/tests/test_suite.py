@@ -57,16 +57,19 @@ def test_an_unknown_family_is_refused_by_name(suite, capsys):
 def test_the_targets_table_counts_instances_where_flat_took_a_second(suite, tmp_path):
     columns = suite.COLUMNS + ["size"]
 
-    def row(name, aside, variables, flat_seconds, ratio):
+    def row(name, aside, variables, flat_seconds, ratio, c2f_seconds):
         values = dict.fromkeys(columns, "0")
         values.update(family="grid", instance=name, aside=str(aside), variables=str(variables),
-                      flat_seconds=str(flat_seconds), ratio_1e4=str(ratio), size="x")
+                      flat_seconds=str(flat_seconds), ratio_1e4=str(ratio), size="x",
+                      c2f_seconds=str(c2f_seconds))
         return values
 
     first, second = tmp_path / "a.tsv", tmp_path / "b.tsv"
-    for path, rows in ((first, [row("g/a", 0, 1000, 5.0, 0.5), row("g/b", 0, 1000, 0.5, 3.0),
-                                row("g/c", 0, 2_000_000, 2.0, 0.2), row("g/d", 1, 1000, 4.0, 0.9)]),
-                       (second, [row("g/a", 0, 1000, 5.0, 0.3)])):
+    for path, rows in ((first, [row("g/a", 0, 1000, 5.0, 0.5, 4.0),
+                                row("g/b", 0, 1000, 0.5, 3.0, 2.0),
+                                row("g/c", 0, 2_000_000, 2.0, 0.2, 1.0),
+                                row("g/d", 1, 1000, 4.0, 0.9, 2.0)]),
+                       (second, [row("g/a", 0, 1000, 5.0, 0.3, 6.0)])):
         with open(path, "w", newline="") as file:
             writer = csv.DictWriter(file, fieldnames=columns, delimiter="\t")
             writer.writeheader()
@@ -75,8 +78,10 @@ def test_the_targets_table_counts_instances_where_flat_took_a_second(suite, tmp_
     assert suite.main(["--out", str(out), "--summarize", str(first), str(second)]) == 0
     table = (out / "suite.md").read_text()
     # g/b (flat 0.5 s) is out of scope; the second table's g/a (0.3) replaces the first's.
-    assert "| grid | tuning | 2 (3) | 0.25 ok | 0.30 ok (g/a) | 0.20 ok |" in table
-    assert "| grid | aside | 1 (1) | 0.90 missed | 0.90 ok (g/d) | - - |" in table
+    # C2F's convergence over flat's: g/a 6 / 5 and g/c 1 / 2.
+    assert ("| grid | tuning | 2 (3) | 0.25 ok | 0.30 ok (g/a) | 0.20 ok | 0.85, 1.20 (g/a) |"
+            in table)
+    assert "| grid | aside | 1 (1) | 0.90 missed | 0.90 ok (g/d) | - - | 0.50, 0.50 (g/d) |" in table
     with pytest.raises(SystemExit):
         suite.main(["--out", str(out), "--summarize", str(tmp_path / "missing.tsv")])
 
