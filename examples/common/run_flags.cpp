@@ -63,7 +63,8 @@ void RunFlags::declare(ToolOptions& options) {
       .integer("near-min-variables", &near_min_variables_, {0, 4'000'000'000},
                "make --near-radius's moves only on an energy of at least this many variables "
                "(0: any size); on a smaller one every move is a whole move (recycling its "
-               "graph, which is cheap there)")
+               "graph, which is cheap there); a --near-radius other than the default makes "
+               "near moves at any size unless this is given too")
       .on_off_auto("shift-moves", &shift_moves_,
                    "expansion: every sweep begins with two moves in which every variable may step "
                    "one label up, then down, at once (moves regions that are off by one label, "

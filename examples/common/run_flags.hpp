@@ -2,9 +2,8 @@
 // The options that configure a run, shared by the tools that offer every pairwise solver
 // (c2f-stereo, c2f-solve): --solver, --maxflow, --memory, --graph-memory, --threads, --regions,
 // --near-radius, --near-seeds, --near-graphs, --near-min-variables, --shift-moves, --near-levels,
-// --label-order,
-// --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau. They become one
-// RunConfig of the run layer.
+// --label-order, --time-limit, --max-steps, --plateau, --plateau-tolerance, --final-plateau.
+// They become one RunConfig of the run layer.
 
 #include <string>
 
