@@ -196,8 +196,9 @@ def solve_pair(energy, truth: Optional[np.ndarray], time_limit: float) -> Outcom
     near moves (near_radius > 0, at least near_min_variables variables), flat with whole moves
     as well, before them, and the flat run that converged sooner is the baseline (the strongest
     flat: near moves from their label are what the defaults make after a coarse level, and from
-    a noisy start flat is often faster without them). With a truth, the error of every step (pixels more than one label from it) is taken
-    in the run's callback, which the run clock does not count."""
+    a noisy start flat is often faster without them). With a truth, the error of every step
+    (pixels more than one label from it) is taken in the run's callback, which the run clock
+    does not count."""
     def run(schedule, options=None):
         errors: List[float] = []
 
