@@ -8,6 +8,18 @@
 namespace c2f::examples {
 
 void RunFlags::declare(ToolOptions& options) {
+  near_seeds_help_ =
+      "where --near-radius's moves start: label_and_cheapest (the variables of that label and "
+      "those whose cheapest cost it is), label (the variables of that label only: the edges of "
+      "its regions, what is left to do after a coarse level on noisy unaries) or "
+      "label_and_adjacent (as label, and on 16 labels or more without shift moves also the "
+      "variables of the labels next to it, so a region one label off moves as a whole)";
+  if (seeds_depend_on_grid(defaults_)) {
+    near_seeds_help_ += std::string("; default ") +
+                        std::string(to_string(defaults_.near_seeds_on(true))) +
+                        " on a pixel grid, " +
+                        std::string(to_string(defaults_.near_seeds_on(false))) + " elsewhere";
+  }
   options
       .text("solver", &solver_,
             "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), lbp "
@@ -49,11 +61,7 @@ void RunFlags::declare(ToolOptions& options) {
                "label_and_cheapest, of a pixel whose cheapest cost it is), with a sweep of whole "
                "moves whenever a sweep of such moves gains at most 1e-4 of the energy "
                "(convergence: three sweeps without decrease)")
-      .text("near-seeds", &near_seeds_,
-            "where --near-radius's moves start: label_and_cheapest (the variables of that label "
-            "and those whose cheapest cost it is) or label (the variables of that label only: "
-            "the edges of its regions, what is left to do after a coarse level on noisy "
-            "unaries)")
+      .text("near-seeds", &near_seeds_, near_seeds_help_.c_str())
       .text("near-graphs", &near_graphs_,
             "where --near-radius's moves are made: local (only on an energy whose edges are "
             "local in its variables' order: at most 5% of them between 4 equal ranges of "
@@ -97,7 +105,7 @@ void RunFlags::declare(ToolOptions& options) {
                "pairs for swap, 4 iterations for lbp, 1 for icm)");
 }
 
-SolverSpec RunFlags::solver_spec() const {
+SolverSpec RunFlags::solver_spec(bool on_grid) const {
   const SolverKind kind = with_flag("--solver", [&] { return solver_kind_from_string(solver_); });
   const VisitOrder order =
       with_flag("--label-order", [&] { return visit_order_from_string(label_order_); });
@@ -113,9 +121,11 @@ SolverSpec RunFlags::solver_spec() const {
   // Near and shift moves are expansion's: other solvers leave the defaults aside, and refuse
   // values that differ from them.
   const bool near_radius_given = near_radius_ != defaults_.near_radius;
-  const NearSeeds seeds =
-      with_flag("--near-seeds", [&] { return near_seeds_from_string(near_seeds_); });
-  if (near_radius_ == 0 && seeds != defaults_.near_seeds)
+  const NearSeeds default_seeds = defaults_.near_seeds_on(on_grid);
+  const NearSeeds seeds = near_seeds_.empty() ? default_seeds : with_flag("--near-seeds", [&] {
+    return near_seeds_from_string(near_seeds_);
+  });
+  if (near_radius_ == 0 && seeds != default_seeds)
     throw std::invalid_argument("--near-seeds: has no effect without --near-radius");
   const bool only_if_local =
       with_flag("--near-graphs", [&] { return near_only_if_local_from_string(near_graphs_); });
@@ -226,9 +236,9 @@ Options RunFlags::limits() const {
   return options;
 }
 
-RunConfig RunFlags::config() const {
+RunConfig RunFlags::config(bool on_grid) const {
   RunConfig config;
-  config.solver = solver_spec();
+  config.solver = solver_spec(on_grid);
   config.limits = limits();
   config.progress_rate = plateau_ == "rate";
   config.memory = memory_gib_ == 0.0

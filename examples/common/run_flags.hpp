@@ -20,7 +20,7 @@ class RunFlags {
   explicit RunFlags(const RunDefaults& defaults)
       : defaults_(defaults),
         near_radius_(defaults.near_radius),
-        near_seeds_(to_string(defaults.near_seeds)),
+        near_seeds_(seeds_depend_on_grid(defaults) ? "" : to_string(defaults.near_seeds)),
         near_graphs_(near_graphs_name(defaults.near_moves_only_if_local)),
         near_min_variables_(static_cast<long>(defaults.near_moves_min_variables)),
         shift_moves_(shift_moves_value(defaults)),
@@ -31,10 +31,11 @@ class RunFlags {
   /// must outlive options.parse()).
   void declare(ToolOptions& options);
 
-  /// The run the parsed options configure, its memory budget resolved (--memory, else the
-  /// machine's default). Throws std::invalid_argument naming the option for an unknown name,
-  /// an option the solver does not take, or a backend not in this build.
-  [[nodiscard]] RunConfig config() const;
+  /// The run the parsed options configure for an energy on a pixel grid or not (the defaults'
+  /// near seeds may differ: RunDefaults::near_seeds_on), its memory budget resolved (--memory,
+  /// else the machine's default). Throws std::invalid_argument naming the option for an unknown
+  /// name, an option the solver does not take, or a backend not in this build.
+  [[nodiscard]] RunConfig config(bool on_grid) const;
   /// --threads: the threads of the whole run, the tool's data preparation included (0: the
   /// machine's cores).
   [[nodiscard]] int threads() const noexcept { return threads_; }
@@ -45,7 +46,12 @@ class RunFlags {
     if (defaults.shift_moves) return "on";
     return defaults.shift_moves_unless_submodular ? "auto" : "off";
   }
-  [[nodiscard]] SolverSpec solver_spec() const;
+  /// Whether `defaults` start near moves on a pixel grid elsewhere than on other graphs; then
+  /// --near-seeds has no single default (empty until given).
+  [[nodiscard]] static bool seeds_depend_on_grid(const RunDefaults& defaults) {
+    return defaults.near_seeds_on(true) != defaults.near_seeds_on(false);
+  }
+  [[nodiscard]] SolverSpec solver_spec(bool on_grid) const;
   [[nodiscard]] Options limits() const;
 
   RunDefaults defaults_;
@@ -57,13 +63,14 @@ class RunFlags {
   int regions_ = ExpansionOptions{}.regions;
   int flow_parts_ = ExpansionOptions{}.flow_parts;
   int near_radius_;
-  std::string near_seeds_;   // label_and_cheapest or label
-  std::string near_graphs_;  // local or any
-  long near_min_variables_;  // near moves only on energies of at least this many variables
-  std::string shift_moves_;  // on, off or auto
-  double time_limit_ = 0.0;  // seconds on the run clock, 0: none
-  long max_steps_ = 0;       // steps in the whole run, 0: none
-  std::string plateau_;      // steps without decrease that end a coarse level, or rate
+  std::string near_seeds_;       // label_and_cheapest, label, label_and_adjacent; empty: defaults'
+  std::string near_seeds_help_;  // --near-seeds' help, its defaults named
+  std::string near_graphs_;      // local or any
+  long near_min_variables_;      // near moves only on energies of at least this many variables
+  std::string shift_moves_;      // on, off or auto
+  double time_limit_ = 0.0;      // seconds on the run clock, 0: none
+  long max_steps_ = 0;           // steps in the whole run, 0: none
+  std::string plateau_;          // steps without decrease that end a coarse level, or rate
   double plateau_tolerance_;
   int final_plateau_ = 0;  // on the original problem; 0: the solver's own convergence
 };

@@ -61,7 +61,7 @@ int main() {
   const c2f::RunDefaults defaults = c2f::pairwise_defaults();
   c2f::ScheduleProvider default_levels(c2f::Schedule::parse(defaults.grid_schedule),
                                        {width, height});
-  const c2f::RunReport report = c2f::run(energy, default_levels, defaults.config());
+  const c2f::RunReport report = c2f::run(energy, default_levels, defaults.config(/*on_grid=*/true));
   print("defaults:", report.summary);
   // A summary's energy is the energy of its labeling on the original problem.
   const bool exact = summary.energy == energy.evaluate(summary.labeling) &&

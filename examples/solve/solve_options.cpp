@@ -65,7 +65,7 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
   if (!grid.empty()) command.grid = parse_grid(grid);
-  command.run = run.config();
+  command.run = run.config(command.grid.has_value());
   // The grammar now; the label count and the grid once the model is read.
   if (command.schedule_text.empty())
     command.schedule_text = defaults.schedule(command.grid.has_value());

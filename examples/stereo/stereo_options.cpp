@@ -90,7 +90,7 @@ std::optional<StereoCommand> parse_stereo_command(int argc, char** argv) {
   }
   if (command.out_dir.empty())
     throw std::invalid_argument("-o/--out: an output directory is required");
-  command.run = run.config();
+  command.run = run.config(/*on_grid=*/true);
   command.tsgo.threads = run.threads();
   if (command.allow_non_refining) command.run.limits.level_transfer = LevelTransfer::majority;
   command.tsgo.smoothness =

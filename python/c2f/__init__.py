@@ -72,7 +72,8 @@ def defaults(name: str = "pairwise") -> Dict[str, Any]:
     -------
     dict
         ``grid_schedule`` and ``general_schedule`` (the schedule on a grid energy and on any
-        other), expansion's ``near_radius``, ``near_seeds``, ``near_graphs``,
+        other), expansion's ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where
+        near moves start on any other energy and on a grid energy), ``near_graphs``,
         ``near_min_variables`` and ``shift_moves`` (on the original problem),
         ``plateau`` and ``plateau_tolerance`` (coarse levels): the configuration measured best
         on a tuning set and confirmed on instances set aside (docs/results.md, "Defaults").
@@ -124,7 +125,9 @@ def solve(
         - expansion: ``order`` ('sequential', 'random' from ``seed``, 'frequency'), ``seed``,
           ``tolerance``, ``near_radius`` (near moves), ``near_seeds`` ('label_and_cheapest':
           a move to a label starts from its variables and those whose cheapest unary it is;
-          'label': from its variables only), ``near_graphs`` ('local': near moves only on an
+          'label': from its variables only; 'label_and_adjacent': as 'label', and on 16
+          labels or more without shift moves also from the variables of the labels next to
+          it), ``near_graphs`` ('local': near moves only on an
           energy whose edges are local in its variables' order, a grid or lattice; 'any'),
           ``near_min_variables`` (near moves only on an energy of at least this many
           variables; 0: any size), ``near_sweep_gain``, ``shift_moves``

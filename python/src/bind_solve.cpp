@@ -96,7 +96,7 @@ py::dict solve(const ModelEnergy& model, const py::object& given_schedule,
   const py::object schedule_object =
       given_schedule.is_none() ? py::str(defaults.schedule(!model.shape.empty())) : given_schedule;
   RunConfig config;
-  config.solver = solver_spec_from(method, options, defaults);
+  config.solver = solver_spec_from(method, options, defaults, !model.shape.empty());
   config.limits =
       limits_from(model, defaults, time_limit, max_steps, plateau, plateau_tolerance, start);
   config.progress_rate = plateau.is_none() ? defaults.progress_rate : progress_rate_named(plateau);
@@ -138,6 +138,7 @@ py::dict defaults_dict(const std::string& name) {
   out["general_schedule"] = defaults.general_schedule;
   out["near_radius"] = defaults.near_radius;
   out["near_seeds"] = std::string(to_string(defaults.near_seeds));
+  out["grid_near_seeds"] = std::string(to_string(defaults.near_seeds_on(true)));
   out["near_graphs"] = std::string(near_graphs_name(defaults.near_moves_only_if_local));
   out["near_min_variables"] = defaults.near_moves_min_variables;
   out["shift_moves"] = defaults.shift_moves                     ? py::object(py::bool_(true))

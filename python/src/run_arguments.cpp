@@ -97,7 +97,7 @@ std::string option_name(const std::string& key) {
 }  // namespace
 
 SolverSpec solver_spec_from(const std::string& method, const py::handle& options,
-                            const RunDefaults& defaults) {
+                            const RunDefaults& defaults, bool on_grid) {
   SolverKind kind;
   try {
     kind = solver_kind_from_string(method);
@@ -110,7 +110,7 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
     case SolverKind::expansion: {
       ExpansionOptions expansion;  // the defaults' moves unless options name others
       expansion.near_radius = defaults.near_radius;
-      expansion.near_seeds = defaults.near_seeds;
+      expansion.near_seeds = defaults.near_seeds_on(on_grid);
       expansion.near_moves_only_if_local = defaults.near_moves_only_if_local;
       expansion.near_moves_min_variables = defaults.near_moves_min_variables;
       expansion.shift_moves = defaults.shift_moves;

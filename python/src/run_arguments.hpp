@@ -24,11 +24,11 @@ namespace c2f::python {
 /// near_sweep_gain, shift_moves, near_levels, maxflow, regions, threads and flow_parts for
 /// expansion; order, seed, tolerance and maxflow for swap; schedule and damping for lbp; order,
 /// seed and tolerance for icm); expansion's near_radius, near_seeds and shift_moves not named are
-/// `defaults`'. ValueError naming
+/// `defaults`' (near_seeds: RunDefaults::near_seeds_on(on_grid)). ValueError naming
 /// `method` or `options['name']` for an unknown name or value, TypeError for a value of the
 /// wrong type.
 SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& options,
-                            const RunDefaults& defaults);
+                            const RunDefaults& defaults, bool on_grid);
 
 /// The cooperative cut's solver options from `options` (None or a dict: aux, start,
 /// expansion_cycles), as solver_spec_from.

@@ -143,14 +143,14 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
     defaults = c2f.defaults()
     assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "near_seeds",
-                             "near_graphs", "near_min_variables", "shift_moves", "plateau",
-                             "plateau_tolerance"}
+                             "grid_near_seeds", "near_graphs", "near_min_variables",
+                             "shift_moves", "plateau", "plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
     explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
                          plateau_tolerance=defaults["plateau_tolerance"],
                          options={"near_radius": defaults["near_radius"],
-                                  "near_seeds": defaults["near_seeds"],
+                                  "near_seeds": defaults["grid_near_seeds"],
                                   "near_graphs": defaults["near_graphs"],
                                   "near_min_variables": defaults["near_min_variables"],
                                   "shift_moves": defaults["shift_moves"]})
@@ -206,6 +206,25 @@ def test_near_moves_from_their_label_end_where_no_whole_move_helps(rng):
     freed = near.trace["step_variables"][1:]
     assert np.all(freed <= energy.num_variables) and np.any(freed < energy.num_variables)
     assert near.trace["step_variables"][0] == 0
+
+
+def test_near_moves_from_the_labels_next_to_theirs_end_where_no_whole_move_helps(rng):
+    """'label_and_adjacent' (the pairwise defaults' seeds): on 16 labels or more, without shift
+    moves, a near move also frees the variables of the labels next to its own."""
+    ramp = np.add.outer(np.arange(40), np.arange(50)) * 19 // 88  # labels 0..19 in steps
+    unary = np.abs(np.arange(20)[None, None, :] - ramp[:, :, None]) / 4.0
+    unary = (unary + rng.random((40, 50, 20))).astype(np.float32)
+    energy = c2f.Energy.grid(unary, c2f.Term.truncated_linear(4.0), weight=0.3)
+    near = c2f.solve(energy, "flat", options={"near_radius": 2, "near_seeds": "label_and_adjacent"})
+    assert near.reason == "converged"
+    assert np.all(np.diff(near.trace["energy"]) <= 0.0)
+    assert ("solve: near moves of radius 2 from their label and, on 16 labels or more without "
+            "shift moves, the labels next to it (whole moves where they stall)" in near.summary)
+    whole = c2f.solve(energy, "flat", start=near.labeling)
+    assert whole.energy == pytest.approx(near.energy, rel=1e-12)
+    assert c2f.defaults()["grid_near_seeds"] == "label_and_adjacent"
+    assert c2f.defaults()["near_seeds"] == "label"  # on lattices they did not pay
+    assert c2f.defaults("stereo")["grid_near_seeds"] == c2f.defaults("stereo")["near_seeds"]
 
 
 def test_near_moves_only_where_the_edges_are_local(rng):
@@ -301,10 +320,11 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
     assert_same_converged_bits(energy, runs)
     assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
     # One band and one part: every move on one thread. By default the max-flow is in 4 parts.
-    one = c2f.solve(energy, "flat", options={"near_radius": 2, "flow_parts": 1})
+    label = {"near_radius": 2, "near_seeds": "label"}
+    one = c2f.solve(energy, "flat", options={**label, "flow_parts": 1})
     assert ("solve: near moves of radius 2 from their label (whole moves where they stall) on one "
             "thread" in one.summary)
-    default = c2f.solve(energy, "flat", options={"near_radius": 2, "threads": 2})
+    default = c2f.solve(energy, "flat", options={**label, "threads": 2})
     assert ("solve: near moves of radius 2 from their label (whole moves where they stall), "
             "max-flow in 4 parts on 2 threads" in default.summary)
     with pytest.raises(ValueError, match="regions"):

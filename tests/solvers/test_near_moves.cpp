@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <set>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "c2f/adapters/graphcut/detail/near_moves.hpp"
@@ -24,13 +26,16 @@ TEST_CASE("a near move's problem is the whole energy over the labelings that kee
           "[expansion][near]") {
   Rng rng(77);
   for (int trial = 0; trial < 120; ++trial) {
-    const int num_labels = 2 + trial % 4;
+    // label_and_adjacent on 16 labels (its neighbours seed), the labeling over the first 4.
+    const bool adjacent = trial % 3 == 2;
+    const int num_labels = adjacent ? kMinLabelsForAdjacentSeeds : 2 + trial % 4;
     const PairwiseEnergy energy = random_grid_energy(rng, 4, 3, num_labels);
-    const Labeling x = random_labeling(rng, energy.num_variables(), num_labels);
-    const Label alpha = static_cast<Label>(trial % num_labels);
+    const Labeling x = random_labeling(rng, energy.num_variables(), std::min(num_labels, 4));
+    const Label alpha = static_cast<Label>(trial % std::min(num_labels, 4));
     detail::NearMoves near;
-    near.bind(energy, 1 + trial % 3,
-              trial % 2 == 0 ? NearSeeds::label_and_cheapest : NearSeeds::label);
+    constexpr NearSeeds kSeeds[] = {NearSeeds::label_and_cheapest, NearSeeds::label,
+                                    NearSeeds::label_and_adjacent};
+    near.bind(energy, 1 + trial % 3, kSeeds[trial % 3]);
     near.build(alpha, x);
     const auto free = near.free();
     const auto pairs = near.pairs();
@@ -91,54 +96,84 @@ TEST_CASE("a near move frees exactly the variables near its label", "[expansion]
   const Labeling no_two = {0, 0, 0, 0, 1, 1, 1, 1, 1};
   near.build(2, no_two);
   CHECK(near.free().empty());
+  // With 3 labels (fewer than kMinLabelsForAdjacentSeeds), label_and_adjacent seeds as label.
+  near.bind(energy, 1, NearSeeds::label_and_adjacent);
+  near.build(2, x);
+  expected = {1, 3};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  // On the same chain with 16 labels, seeded by the label and the labels next to it: the move
+  // to 2 frees every variable labelled 1 (the run 4..8, however long) and those within the
+  // radius of 2's or 1's.
+  const int many = kMinLabelsForAdjacentSeeds;
+  std::vector<double> many_unaries(n * static_cast<std::size_t>(many), 1.0);
+  many_unaries[7 * static_cast<std::size_t>(many) + 2] = 0.0;
+  const PairwiseEnergy many_labels(n, many, std::move(many_unaries), {PairwiseTerm::potts()},
+                                   std::vector<Edge>(energy.edges().begin(), energy.edges().end()));
+  near.bind(many_labels, 1, NearSeeds::label_and_adjacent);
+  near.build(2, x);
+  expected = {1, 3, 4, 5, 6, 7, 8};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  near.build(2, no_two);
+  expected = {3, 4, 5, 6, 7, 8};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
+  // The move to 0: label 1 is next to it, label 2 is not.
+  near.build(0, x);
+  expected = {2, 4, 5, 6, 7, 8};
+  CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
 }
 
 TEST_CASE("near moves free the same variables on 1, 2 and 3 threads, as far as the radius says",
           "[expansion][near][threads]") {
-  // 200 x 150 pixels, 3 labels: each breadth-first level spans several bands of 8192, so bands
-  // on different threads race for the variables they reach. The free variables must be those
-  // within `radius` grid steps of a variable labelled alpha or (label_and_cheapest) cheapest at
-  // alpha.
+  // 200 x 150 pixels: each breadth-first level spans several bands of 8192, so bands on
+  // different threads race for the variables they reach. The free variables must be those
+  // within `radius` grid steps of a variable labelled alpha, (label_and_cheapest) cheapest at
+  // alpha or (label_and_adjacent, on 16 labels) labelled alpha - 1 or alpha + 1. The labeling
+  // uses 3 labels (0, 1, 2), so that label seeds are dense enough to span bands.
   Rng rng(5);
-  const PairwiseEnergy energy = random_grid_energy(rng, 200, 150, 3);
-  const Labeling x = random_labeling(rng, energy.num_variables(), 3);
-  const std::size_t n = energy.num_variables();
-  for (const int radius : {1, 3}) {
-    for (const NearSeeds seeds : {NearSeeds::label_and_cheapest, NearSeeds::label}) {
-      // Brute force: each variable's grid distance to the nearest seed, by relaxation.
-      std::vector<std::vector<VariableIndex>> expected(3);
-      for (Label alpha = 0; alpha < 3; ++alpha) {
-        std::vector<int> distance(n, 1 << 20);
-        for (std::size_t v = 0; v < n; ++v) {
-          const bool cheapest =
-              seeds == NearSeeds::label_and_cheapest && cheapest_label(energy, v) == alpha;
-          if (x[v] == alpha || cheapest) distance[v] = 0;
-        }
-        for (int round = 0; round < radius; ++round) {
-          std::vector<int> next = distance;
-          for (const Edge& edge : energy.edges()) {
-            next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
-            next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+  for (const int num_labels : {3, kMinLabelsForAdjacentSeeds}) {
+    const PairwiseEnergy energy = random_grid_energy(rng, 200, 150, num_labels);
+    const Labeling x = random_labeling(rng, energy.num_variables(), 3);
+    const std::size_t n = energy.num_variables();
+    const bool adjacent_on = num_labels >= kMinLabelsForAdjacentSeeds;
+    for (const int radius : {1, 3}) {
+      for (const NearSeeds seeds :
+           {NearSeeds::label_and_cheapest, NearSeeds::label, NearSeeds::label_and_adjacent}) {
+        // Brute force: each variable's grid distance to the nearest seed, by relaxation.
+        std::vector<std::vector<VariableIndex>> expected(3);
+        for (Label alpha = 0; alpha < 3; ++alpha) {
+          std::vector<int> distance(n, 1 << 20);
+          for (std::size_t v = 0; v < n; ++v) {
+            const bool cheapest =
+                seeds == NearSeeds::label_and_cheapest && cheapest_label(energy, v) == alpha;
+            const bool adjacent = seeds == NearSeeds::label_and_adjacent && adjacent_on &&
+                                  std::abs(x[v] - alpha) == 1;
+            if (x[v] == alpha || cheapest || adjacent) distance[v] = 0;
           }
-          distance = next;
+          for (int round = 0; round < radius; ++round) {
+            std::vector<int> next = distance;
+            for (const Edge& edge : energy.edges()) {
+              next[edge.u] = std::min(next[edge.u], distance[edge.v] + 1);
+              next[edge.v] = std::min(next[edge.v], distance[edge.u] + 1);
+            }
+            distance = next;
+          }
+          for (std::size_t v = 0; v < n; ++v)
+            if (distance[v] <= radius && x[v] != alpha)
+              expected[alpha].push_back(static_cast<VariableIndex>(v));
+          // Several bands of 8192 for the threads to race over.
+          REQUIRE(expected[alpha].size() > detail::kBandSize);
         }
-        for (std::size_t v = 0; v < n; ++v)
-          if (distance[v] <= radius && x[v] != alpha)
-            expected[alpha].push_back(static_cast<VariableIndex>(v));
-        // Several bands of 8192 for the threads to race over (fewer seeds with label only).
-        const std::size_t bands = seeds == NearSeeds::label_and_cheapest ? 2 : 1;
-        REQUIRE(expected[alpha].size() > bands * detail::kBandSize);
-      }
-      for (int threads = 1; threads <= 3; ++threads) {
-        detail::NearMoves near;
-        near.bind(energy, radius, seeds, nullptr, threads);
-        // Each label twice, in turn: a move's marks must not leak into the next.
-        for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
-          near.build(alpha, x);
-          INFO("radius " << radius << ", seeds " << to_string(seeds) << ", alpha " << alpha << ", "
-                         << threads << " threads");
-          CHECK(std::vector<VariableIndex>(near.free().begin(), near.free().end()) ==
-                expected[alpha]);
+        for (int threads = 1; threads <= 3; ++threads) {
+          detail::NearMoves near;
+          near.bind(energy, radius, seeds, nullptr, threads);
+          // Each label twice, in turn: a move's marks must not leak into the next.
+          for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
+            near.build(alpha, x);
+            INFO(num_labels << " labels, radius " << radius << ", seeds " << to_string(seeds)
+                            << ", alpha " << alpha << ", " << threads << " threads");
+            CHECK(std::vector<VariableIndex>(near.free().begin(), near.free().end()) ==
+                  expected[alpha]);
+          }
         }
       }
     }
@@ -149,7 +184,9 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
                    "[expansion][near][brute-force]", C2F_MAXFLOW_BACKENDS) {
   Rng rng(4242);
   for (int trial = 0; trial < 60; ++trial) {
-    const int num_labels = 2 + trial % 4;
+    // label_and_adjacent on 16 labels, where its neighbouring labels seed.
+    const bool adjacent = trial % 5 == 4;
+    const int num_labels = adjacent ? kMinLabelsForAdjacentSeeds : 2 + trial % 4;
     const PairwiseEnergy energy =
         trial % 2 == 0
             ? random_grid_energy(rng, 6, 5, num_labels)
@@ -158,7 +195,9 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
     ExpansionOptions options;
     options.near_radius = 1 + trial % 3;
     options.near_sweep_gain = trial % 3 == 0 ? 0.0 : 1e-3;
-    options.near_seeds = trial % 5 < 2 ? NearSeeds::label : NearSeeds::label_and_cheapest;
+    options.near_seeds = adjacent        ? NearSeeds::label_and_adjacent
+                         : trial % 5 < 2 ? NearSeeds::label
+                                         : NearSeeds::label_and_cheapest;
     options.order = trial % 4 == 1 ? VisitOrder::random : VisitOrder::sequential;
     options.seed = static_cast<std::uint64_t>(trial);
     ExpansionSolver<TestType> solver(options);
@@ -175,7 +214,8 @@ TEMPLATE_TEST_CASE("expansion with near moves descends to labelings no whole mov
     ExpansionSolver<TestType> whole;
     whole.bind(energy, solver.labeling());
     for (int step = 0; step < num_labels; ++step) CHECK(whole.step() == previous);
-    if (energy.num_variables() <= 10) CHECK(previous >= brute_force_minimum(energy).energy - 1e-9);
+    if (energy.num_variables() <= 10 && !adjacent)
+      CHECK(previous >= brute_force_minimum(energy).energy - 1e-9);
   }
 }
 
@@ -187,8 +227,9 @@ TEST_CASE("near moves are validated and belong to expansion", "[expansion][near]
   options.near_sweep_gain = -1.0;
   CHECK_THROWS_WITH(ExpansionSolver<>(options), Catch::Contains("near_sweep_gain"));
   CHECK(near_seeds_from_string("label") == NearSeeds::label);
-  CHECK(near_seeds_from_string(to_string(NearSeeds::label_and_cheapest)) ==
-        NearSeeds::label_and_cheapest);
+  for (const NearSeeds seeds :
+       {NearSeeds::label_and_cheapest, NearSeeds::label, NearSeeds::label_and_adjacent})
+    CHECK(near_seeds_from_string(to_string(seeds)) == seeds);
   CHECK_THROWS_WITH(near_seeds_from_string("cheapest"), Catch::Contains("cheapest"));
   Rng rng(3);
   CHECK(ExpansionSolver<>().quiet_steps_to_converge(random_grid_energy(rng, 3, 2, 7)) == 7);
@@ -333,4 +374,43 @@ TEST_CASE("near moves only where the edges are local, when asked", "[expansion][
   CHECK(small_near == 0);
   CHECK(small_recycled == grid_whole_recycled);
   CHECK(ExpansionSolver<>(sized).quiet_steps_to_converge(grid) == 4);
+}
+
+TEST_CASE("label_and_adjacent seeds as label where shift moves are made or labels are few",
+          "[expansion][near]") {
+  Rng rng(31);
+  // Every step's energy and freed variables, from one start, over three label sweeps.
+  const auto trace = [](const PairwiseEnergy& energy, const ExpansionOptions& options,
+                        const Labeling& start) {
+    ExpansionSolver<> solver(options);
+    solver.bind(energy, start);
+    std::vector<std::pair<double, std::size_t>> steps;
+    for (int step = 0; step < 3 * energy.num_labels(); ++step) {
+      const double value = solver.step();
+      steps.emplace_back(value, solver.last_step().variables);
+    }
+    return steps;
+  };
+  ExpansionOptions label;
+  label.near_radius = 1;
+  label.near_seeds = NearSeeds::label;
+  ExpansionOptions adjacent = label;
+  adjacent.near_seeds = NearSeeds::label_and_adjacent;
+  for (const int num_labels : {4, kMinLabelsForAdjacentSeeds}) {
+    const PairwiseEnergy energy = random_grid_energy(rng, 30, 20, num_labels);
+    const Labeling start = random_labeling(rng, energy.num_variables(), num_labels);
+    INFO(num_labels << " labels");
+    // With shift moves (which move a region one label off as a whole), the same steps.
+    ExpansionOptions label_shift = label, adjacent_shift = adjacent;
+    label_shift.shift_moves = adjacent_shift.shift_moves = true;
+    CHECK(trace(energy, adjacent_shift, start) == trace(energy, label_shift, start));
+    // Without them, the same steps on fewer than 16 labels; on 16, a near move frees more.
+    const auto with_adjacent = trace(energy, adjacent, start);
+    const auto with_label = trace(energy, label, start);
+    if (num_labels < kMinLabelsForAdjacentSeeds) {
+      CHECK(with_adjacent == with_label);
+    } else {
+      CHECK(with_adjacent.front().second > with_label.front().second);
+    }
+  }
 }

@@ -15,19 +15,21 @@ using namespace c2f;
 
 namespace {
 
-/// The RunConfig a tool's RunFlags give with `arguments` on the command line.
-RunConfig config_with_flags(const RunDefaults& defaults, std::vector<const char*> arguments) {
+/// The RunConfig a tool's RunFlags give with `arguments` on the command line, for an energy
+/// on a pixel grid (on_grid) or not.
+RunConfig config_with_flags(const RunDefaults& defaults, std::vector<const char*> arguments,
+                            bool on_grid = true) {
   examples::RunFlags flags(defaults);
   examples::ToolOptions options("test");
   flags.declare(options);
   arguments.insert(arguments.begin(), "tool");
   REQUIRE(options.parse(static_cast<int>(arguments.size()), arguments.data(), {"", 0}).has_value());
-  return flags.config();
+  return flags.config(on_grid);
 }
 
 /// The RunConfig a tool's RunFlags give with no flag on the command line.
-RunConfig config_without_flags(const RunDefaults& defaults) {
-  return config_with_flags(defaults, {});
+RunConfig config_without_flags(const RunDefaults& defaults, bool on_grid = true) {
+  return config_with_flags(defaults, {}, on_grid);
 }
 
 /// The original problem's expansion options of `config`.
@@ -47,26 +49,41 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
   other_near.near_seeds = NearSeeds::label_and_cheapest;
   other_near.near_moves_only_if_local = false;
   other_near.near_moves_min_variables = 1000;
-  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults(), other_near}) {
-    const RunConfig expected = defaults.config();
-    const RunConfig flags = config_without_flags(defaults);
-    const auto* want = std::get_if<ExpansionOptions>(&expected.solver.original);
-    const auto* got = std::get_if<ExpansionOptions>(&flags.solver.original);
-    REQUIRE(want != nullptr);
-    REQUIRE(got != nullptr);
-    CHECK(*got == *want);
-    CHECK(got->near_radius == defaults.near_radius);
-    CHECK(got->near_seeds == defaults.near_seeds);
-    CHECK(got->near_moves_only_if_local == defaults.near_moves_only_if_local);
-    CHECK(got->near_moves_min_variables == defaults.near_moves_min_variables);
-    CHECK(got->shift_moves == defaults.shift_moves);
-    CHECK(flags.solver.coarse == expected.solver.coarse);
-    CHECK(flags.solver.maxflow == expected.solver.maxflow);
-    CHECK(flags.limits.plateau_steps == expected.limits.plateau_steps);
-    CHECK(flags.limits.plateau_tolerance == expected.limits.plateau_tolerance);
-    CHECK(flags.limits.time_limit_seconds == expected.limits.time_limit_seconds);
-    CHECK(flags.limits.max_total_steps == expected.limits.max_total_steps);
+  for (const RunDefaults& defaults : {pairwise_defaults(), vision::stereo_defaults(), other_near})
+    for (const bool on_grid : {true, false}) {
+      INFO("on a grid: " << on_grid);
+      const RunConfig expected = defaults.config(on_grid);
+      const RunConfig flags = config_without_flags(defaults, on_grid);
+      const auto* want = std::get_if<ExpansionOptions>(&expected.solver.original);
+      const auto* got = std::get_if<ExpansionOptions>(&flags.solver.original);
+      REQUIRE(want != nullptr);
+      REQUIRE(got != nullptr);
+      CHECK(*got == *want);
+      CHECK(got->near_radius == defaults.near_radius);
+      CHECK(got->near_seeds == defaults.near_seeds_on(on_grid));
+      CHECK(got->near_moves_only_if_local == defaults.near_moves_only_if_local);
+      CHECK(got->near_moves_min_variables == defaults.near_moves_min_variables);
+      CHECK(got->shift_moves == defaults.shift_moves);
+      CHECK(flags.solver.coarse == expected.solver.coarse);
+      CHECK(flags.solver.maxflow == expected.solver.maxflow);
+      CHECK(flags.limits.plateau_steps == expected.limits.plateau_steps);
+      CHECK(flags.limits.plateau_tolerance == expected.limits.plateau_tolerance);
+      CHECK(flags.limits.time_limit_seconds == expected.limits.time_limit_seconds);
+      CHECK(flags.limits.max_total_steps == expected.limits.max_total_steps);
+    }
+  // The pairwise defaults start near moves elsewhere on a grid; a named --near-seeds is kept.
+  const RunDefaults pairwise = pairwise_defaults();
+  CHECK(pairwise.near_seeds_on(true) == NearSeeds::label_and_adjacent);
+  CHECK(pairwise.near_seeds_on(false) == NearSeeds::label);
+  for (const bool on_grid : {true, false}) {
+    CHECK(original_expansion(config_with_flags(pairwise, {"--near-seeds", "label"}, on_grid))
+              .near_seeds == NearSeeds::label);
+    CHECK(original_expansion(
+              config_with_flags(pairwise, {"--near-seeds", "label_and_adjacent"}, on_grid))
+              .near_seeds == NearSeeds::label_and_adjacent);
   }
+  CHECK_THROWS_WITH(config_with_flags(pairwise, {"--near-radius", "0", "--near-seeds", "label"}),
+                    Catch::Contains("--near-seeds: has no effect without --near-radius"));
   // The stereo defaults differ from a generic energy's: the loop above compares two configs.
   CHECK(vision::stereo_defaults().near_radius != pairwise_defaults().near_radius);
 }

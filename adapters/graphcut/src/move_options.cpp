@@ -19,18 +19,26 @@ std::string_view to_string(NearSeeds seeds) {
       return "label_and_cheapest";
     case NearSeeds::label:
       return "label";
+    case NearSeeds::label_and_adjacent:
+      return "label_and_adjacent";
   }
   return "unknown";
 }
 
 NearSeeds near_seeds_from_string(std::string_view text) {
-  constexpr NearSeeds kAll[] = {NearSeeds::label_and_cheapest, NearSeeds::label};
+  constexpr NearSeeds kAll[] = {NearSeeds::label_and_cheapest, NearSeeds::label,
+                                NearSeeds::label_and_adjacent};
   return enum_from_string(text, kAll, "near-move seeds");
 }
 
 std::string near_moves_text(int radius, NearSeeds seeds) {
-  return "near moves of radius " + std::to_string(radius) +
-         (seeds == NearSeeds::label ? " from their label" : "");
+  std::string text = "near moves of radius " + std::to_string(radius);
+  if (seeds == NearSeeds::label) text += " from their label";
+  if (seeds == NearSeeds::label_and_adjacent) {
+    text += " from their label and, on " + std::to_string(kMinLabelsForAdjacentSeeds) +
+            " labels or more without shift moves, the labels next to it";
+  }
+  return text;
 }
 
 std::string_view near_graphs_name(bool only_if_local) {

@@ -4,11 +4,11 @@
 
 namespace c2f {
 
-RunConfig RunDefaults::config() const {
+RunConfig RunDefaults::config(bool on_grid) const {
   RunConfig config;
   ExpansionOptions expansion;
   expansion.near_radius = near_radius;
-  expansion.near_seeds = near_seeds;
+  expansion.near_seeds = near_seeds_on(on_grid);
   expansion.near_moves_only_if_local = near_moves_only_if_local;
   expansion.near_moves_min_variables = near_moves_min_variables;
   expansion.shift_moves = shift_moves;
@@ -27,6 +27,7 @@ RunDefaults pairwise_defaults() {
   defaults.shift_moves_unless_submodular = true;
   defaults.near_radius = 3;
   defaults.near_seeds = NearSeeds::label;
+  defaults.grid_near_seeds = NearSeeds::label_and_adjacent;
   defaults.near_moves_only_if_local = true;
   defaults.near_moves_min_variables = 200000;
   return defaults;

@@ -142,6 +142,7 @@ using c2f::NearLevels;
 using c2f::near_graphs_name;
 using c2f::near_moves_text;
 using c2f::near_only_if_local_from_string;
+using c2f::kMinLabelsForAdjacentSeeds;
 using c2f::near_seeds_from_string;
 using c2f::NearSeeds;
 using c2f::no_decrease;

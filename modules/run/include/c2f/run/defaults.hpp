@@ -5,6 +5,7 @@
 // be overridden; `flat` with the same moves is the fair baseline of each.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "c2f/run/run_config.hpp"
@@ -15,15 +16,17 @@ struct RunDefaults {
   std::string grid_schedule;     ///< schedule text on a pixel grid (application presets apply)
   std::string general_schedule;  ///< schedule text on any other graph
   int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
-  /// Where those near moves start (ExpansionOptions::near_seeds).
+  /// Where those near moves start (ExpansionOptions::near_seeds) on any graph but a pixel grid.
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
+  /// Where they start on a pixel grid (empty: near_seeds).
+  std::optional<NearSeeds> grid_near_seeds;
   /// Those near moves only on an energy whose edges are local (makes_near_moves); on any other
   /// every move is a whole move.
   bool near_moves_only_if_local = false;
   /// Those near moves only on an energy of at least this many variables (0: any size); on a
   /// smaller one every move is a whole move.
   std::size_t near_moves_min_variables = 0;
-  bool shift_moves = false;      ///< expansion's shift moves, original problem only
+  bool shift_moves = false;  ///< expansion's shift moves, original problem only
   /// Shift moves also on an energy where some expansion move is not submodular
   /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.
   bool shift_moves_unless_submodular = false;
@@ -35,9 +38,14 @@ struct RunDefaults {
   [[nodiscard]] const std::string& schedule(bool on_grid) const {
     return on_grid ? grid_schedule : general_schedule;
   }
-  /// A RunConfig with these moves and rules: expansion on our max-flow with near and shift moves
-  /// on the original problem only, no time or step limit, no budget set (the run's default).
-  [[nodiscard]] RunConfig config() const;
+  /// grid_near_seeds (when set) on a pixel grid, else near_seeds.
+  [[nodiscard]] NearSeeds near_seeds_on(bool on_grid) const {
+    return on_grid && grid_near_seeds ? *grid_near_seeds : near_seeds;
+  }
+  /// A RunConfig with these moves and rules for an energy on a pixel grid or not: expansion on
+  /// our max-flow with near and shift moves on the original problem only, no time or step
+  /// limit, no budget set (the run's default).
+  [[nodiscard]] RunConfig config(bool on_grid) const;
 };
 
 /// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels split into
@@ -46,8 +54,10 @@ struct RunDefaults {
 /// graph agg:2/cc, over two rounds of graph neighbours, where wider rounds mix what differs);
 /// expansion moves, with shift moves on energies where some expansion move is not submodular
 /// (e.g. truncated quadratic); on the original problem near moves of radius 3 from their label
-/// where its edges are local (a grid, a lattice) and it has at least 200000 variables, whole
-/// moves elsewhere; a coarse level ends after 4 moves without decrease.
+/// (on a pixel grid of 16 labels or more without shift moves also from the labels next to it:
+/// NearSeeds::label_and_adjacent) where its edges are local (a grid, a lattice) and it has at
+/// least 200000 variables, whole moves elsewhere; a coarse level ends after 4 moves without
+/// decrease.
 [[nodiscard]] RunDefaults pairwise_defaults();
 
 }  // namespace c2f

@@ -62,15 +62,30 @@ enum class NearSeeds {
   /// cheapest labels are scattered everywhere); a label no variable has is left to the sweeps of
   /// whole moves.
   label,
+  /// As label, and on an energy of at least kMinLabelsForAdjacentSeeds labels also the
+  /// variables labelled alpha - 1 or alpha + 1: a region one label off alpha may move to it as a
+  /// whole, however wide. Where labels stand for ordered values that vary smoothly (depths,
+  /// intensities), a coarse level leaves steps of a staircase one label off, which moves from
+  /// alpha's regions reach only a radius at a time. Alpha-expansion seeds as label where it
+  /// makes shift moves (makes_shift_moves), which move such steps already (docs/results.md,
+  /// "Defaults").
+  label_and_adjacent,
 };
 
+/// NearSeeds::label_and_adjacent seeds from alpha's neighbouring labels only on an energy of at
+/// least this many labels: with fewer, those labels' variables are a large share of all, and a
+/// near move costs about what a whole move does (on the suite's 8-label grids it reached flat's
+/// energy later than label; on the 32-label grids sooner).
+inline constexpr int kMinLabelsForAdjacentSeeds = 16;
+
 std::string_view to_string(NearSeeds seeds);
-/// Parses the names to_string produces ("label_and_cheapest", "label"); throws
-/// std::invalid_argument naming the text.
+/// Parses the names to_string produces ("label_and_cheapest", "label", "label_and_adjacent");
+/// throws std::invalid_argument naming the text.
 NearSeeds near_seeds_from_string(std::string_view text);
 
-/// "near moves of radius R" (" from their label" after it with NearSeeds::label), as the tools'
-/// summaries name them.
+/// "near moves of radius R", then " from their label" with NearSeeds::label, " from their label
+/// and, on 16 labels or more without shift moves, the labels next to it" with
+/// NearSeeds::label_and_adjacent, as the tools' summaries name them.
 std::string near_moves_text(int radius, NearSeeds seeds);
 
 /// The name the tools and Python give ExpansionOptions::near_moves_only_if_local: "local"
@@ -83,9 +98,10 @@ bool near_only_if_local_from_string(std::string_view text);
 struct ExpansionOptions : MoveOptions {
   /// 0: every move may change every variable. r > 0: a move to alpha frees only the variables
   /// within r edges of a variable labelled alpha or, with NearSeeds::label_and_cheapest, of one
-  /// whose cheapest unary label is alpha (the others keep their labels: an exact move on a
-  /// smaller graph of its own). When a sweep of such moves lowers the energy by at most
-  /// near_sweep_gain of it, one sweep of whole moves follows, then near moves again.
+  /// whose cheapest unary label is alpha, or with NearSeeds::label_and_adjacent (16 labels or
+  /// more, no shift moves) of one labelled alpha - 1 or alpha + 1 (the others keep their labels:
+  /// an exact move on a smaller graph of its own). When a sweep of such moves lowers the energy by
+  /// at most near_sweep_gain of it, one sweep of whole moves follows, then near moves again.
   /// Convergence therefore takes three sweeps without decrease (ExpansionSolver::sweep_steps).
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).

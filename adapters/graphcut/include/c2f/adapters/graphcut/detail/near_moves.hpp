@@ -100,6 +100,8 @@ class NearMoves {
             SharedIncidence* shared = nullptr, int threads = 1) {
     energy_ = &energy;
     radius_ = radius;
+    adjacent_ =
+        seeds == NearSeeds::label_and_adjacent && energy.num_labels() >= kMinLabelsForAdjacentSeeds;
     threads_ = threads;
     incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
@@ -165,7 +167,7 @@ class NearMoves {
     reached_.clear();
     gather(x.size(), [&](std::size_t first, std::size_t last, std::vector<VariableIndex>& out) {
       for (std::size_t v = first; v < last; ++v)
-        if (x[v] == alpha) claim(static_cast<VariableIndex>(v), 0, out);
+        if (is_seed(x[v], alpha)) claim(static_cast<VariableIndex>(v), 0, out);
     });
     const std::vector<VariableIndex>& cheapest = cheapest_[static_cast<std::size_t>(alpha)];
     gather(cheapest.size(),
@@ -227,6 +229,12 @@ class NearMoves {
   /// order_free sorts when fewer than one variable in this many is free.
   static constexpr std::size_t kSortBelow = 16;
 
+  /// Whether a variable labelled `label` seeds the move to alpha: alpha itself and, with
+  /// NearSeeds::label_and_adjacent, alpha - 1 and alpha + 1.
+  [[nodiscard]] bool is_seed(Label label, Label alpha) const noexcept {
+    return label == alpha || (adjacent_ && (label + 1 == alpha || label == alpha + 1));
+  }
+
   /// Marks v reached at `depth` and lists it in `out`, unless it is reached already (an atomic
   /// claim: bands of one level may race for a variable).
   void claim(VariableIndex v, int depth, std::vector<VariableIndex>& out) {
@@ -246,12 +254,13 @@ class NearMoves {
 
   const PairwiseEnergy* energy_ = nullptr;
   int radius_ = 0;
+  bool adjacent_ = false;  // NearSeeds::label_and_adjacent
   int threads_ = 1;
   std::shared_ptr<const EdgeIncidence> incidence_;
   // Per label: the variables it is cheapest for (empty with NearSeeds::label).
   std::vector<std::vector<VariableIndex>> cheapest_;
-  std::vector<std::uint32_t> local_;                  // per variable: index in free_, or kHeld
-  std::vector<int> depth_;                            // per variable: BFS depth, or kUnreached
+  std::vector<std::uint32_t> local_;  // per variable: index in free_, or kHeld
+  std::vector<int> depth_;            // per variable: BFS depth, or kUnreached
   std::vector<VariableIndex> free_, reached_;
   std::vector<double> d_, p_;
   std::vector<FlowEdge> pairs_;
