@@ -218,10 +218,21 @@ def test_near_moves_from_the_labels_next_to_theirs_end_where_no_whole_move_helps
     near = c2f.solve(energy, "flat", options={"near_radius": 2, "near_seeds": "label_and_adjacent"})
     assert near.reason == "converged"
     assert np.all(np.diff(near.trace["energy"]) <= 0.0)
-    assert ("solve: near moves of radius 2 from their label and, on 16 labels or more without "
-            "shift moves, the labels next to it (whole moves where they stall)" in near.summary)
+    assert ("solve: near moves of radius 2 from their label and the labels next to it (whole "
+            "moves where they stall)" in near.summary)
     whole = c2f.solve(energy, "flat", start=near.labeling)
     assert whole.energy == pytest.approx(near.energy, rel=1e-12)
+    # Where they do not apply (shift moves; fewer than 16 labels) the summary names the seeds
+    # used: the label's own.
+    shifted = c2f.solve(energy, "flat", max_steps=3, options={
+        "near_radius": 2, "near_seeds": "label_and_adjacent", "shift_moves": True})
+    assert ("solve: near moves of radius 2 from their label (whole moves where they stall)"
+            in shifted.summary)
+    few = c2f.Energy.grid(unary[:, :, :8], c2f.Term.truncated_linear(4.0), weight=0.3)
+    few_labels = c2f.solve(few, "flat", max_steps=3,
+                           options={"near_radius": 2, "near_seeds": "label_and_adjacent"})
+    assert ("solve: near moves of radius 2 from their label (whole moves where they stall)"
+            in few_labels.summary)
     assert c2f.defaults()["grid_near_seeds"] == "label_and_adjacent"
     assert c2f.defaults()["near_seeds"] == "label"  # on lattices they did not pay
     assert c2f.defaults("stereo")["grid_near_seeds"] == c2f.defaults("stereo")["near_seeds"]

@@ -154,6 +154,14 @@ TEST_CASE("run() reports each step's variables and decides near moves on the ene
   for (std::size_t k = 0; k < on_random.steps.size(); ++k)
     CHECK(on_random.step_variables[k] == (on_random.steps[k] == 0 ? 0 : random.num_variables()));
 
+  // Seeds the grid's 4 labels narrow (near_seeds_in_use) are reported as used: from the label.
+  std::get<ExpansionOptions>(config.solver.original).near_seeds = NearSeeds::label_and_adjacent;
+  const Seen narrowed = steps_of(grid, {coarse}, report);
+  CHECK(report.near_seeds == NearSeeds::label);
+  CHECK_THAT(report.threads_line(),
+             Catch::StartsWith("solve: near moves of radius 2 from their label (whole moves "));
+  CHECK(narrowed.step_variables == on_grid.step_variables);  // the same moves as 'label'
+
   // Below near_moves_min_variables the grid gets whole moves too.
   std::get<ExpansionOptions>(config.solver.original).near_moves_min_variables =
       grid.num_variables() + 1;

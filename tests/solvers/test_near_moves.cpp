@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <random>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -96,8 +97,13 @@ TEST_CASE("a near move frees exactly the variables near its label", "[expansion]
   const Labeling no_two = {0, 0, 0, 0, 1, 1, 1, 1, 1};
   near.build(2, no_two);
   CHECK(near.free().empty());
-  // With 3 labels (fewer than kMinLabelsForAdjacentSeeds), label_and_adjacent seeds as label.
-  near.bind(energy, 1, NearSeeds::label_and_adjacent);
+  // With 3 labels (fewer than kMinLabelsForAdjacentSeeds), expansion asked for
+  // label_and_adjacent seeds as label (near_seeds_in_use).
+  ExpansionOptions asked;
+  asked.near_radius = 1;
+  asked.near_seeds = NearSeeds::label_and_adjacent;
+  REQUIRE(near_seeds_in_use(asked, energy) == NearSeeds::label);
+  near.bind(energy, 1, near_seeds_in_use(asked, energy));
   near.build(2, x);
   expected = {1, 3};
   CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
@@ -109,7 +115,8 @@ TEST_CASE("a near move frees exactly the variables near its label", "[expansion]
   many_unaries[7 * static_cast<std::size_t>(many) + 2] = 0.0;
   const PairwiseEnergy many_labels(n, many, std::move(many_unaries), {PairwiseTerm::potts()},
                                    std::vector<Edge>(energy.edges().begin(), energy.edges().end()));
-  near.bind(many_labels, 1, NearSeeds::label_and_adjacent);
+  REQUIRE(near_seeds_in_use(asked, many_labels) == NearSeeds::label_and_adjacent);
+  near.bind(many_labels, 1, near_seeds_in_use(asked, many_labels));
   near.build(2, x);
   expected = {1, 3, 4, 5, 6, 7, 8};
   CHECK(std::set<VariableIndex>(near.free().begin(), near.free().end()) == expected);
@@ -167,9 +174,12 @@ TEST_CASE("near moves free the same variables on 1, 2 and 3 threads, as far as t
           const std::size_t bands = label_only ? 1 : 2;
           REQUIRE(expected[alpha].size() > bands * detail::kBandSize);
         }
+        ExpansionOptions asked;
+        asked.near_radius = radius;
+        asked.near_seeds = seeds;
         for (int threads = 1; threads <= 3; ++threads) {
           detail::NearMoves near;
-          near.bind(energy, radius, seeds, nullptr, threads);
+          near.bind(energy, radius, near_seeds_in_use(asked, energy), nullptr, threads);
           // Each label twice, in turn: a move's marks must not leak into the next.
           for (const Label alpha : {0, 1, 2, 2, 0, 1}) {
             near.build(alpha, x);
@@ -416,5 +426,55 @@ TEST_CASE("label_and_adjacent seeds as label where shift moves are made or label
     } else {
       CHECK(with_adjacent.front().second > with_label.front().second);
     }
+  }
+}
+
+TEST_CASE("near_seeds_in_use narrows label_and_adjacent where it does not apply",
+          "[expansion][near]") {
+  Rng rng(37);
+  // A 6 x 5 grid of `labels` labels with random unaries and the pairwise term `term`.
+  const auto grid = [&rng](int labels, PairwiseTerm term) {
+    const std::size_t width = 6, height = 5, n = width * height;
+    std::vector<double> unaries(n * static_cast<std::size_t>(labels));
+    for (double& u : unaries) u = std::uniform_real_distribution<double>(0.0, 2.0)(rng);
+    std::vector<Edge> edges;
+    for (std::size_t y = 0; y < height; ++y) {
+      for (std::size_t x = 0; x < width; ++x) {
+        const auto v = static_cast<VariableIndex>(y * width + x);
+        if (x + 1 < width) edges.push_back({v, v + 1, 0.5, 0});
+        if (y + 1 < height) edges.push_back({v, static_cast<VariableIndex>(v + width), 0.5, 0});
+      }
+    }
+    return PairwiseEnergy(n, labels, std::move(unaries), {std::move(term)}, std::move(edges));
+  };
+  const int many_labels = kMinLabelsForAdjacentSeeds;
+  const PairwiseEnergy few = grid(many_labels - 1, PairwiseTerm::truncated_linear(4.0));
+  const PairwiseEnergy many = grid(many_labels, PairwiseTerm::truncated_linear(4.0));
+  // Truncated quadratic: some expansion move is not submodular.
+  std::vector<double> quadratic(static_cast<std::size_t>(many_labels * many_labels));
+  for (int a = 0; a < many_labels; ++a)
+    for (int b = 0; b < many_labels; ++b)
+      quadratic[static_cast<std::size_t>(a * many_labels + b)] = std::min((a - b) * (a - b), 9);
+  const PairwiseEnergy not_submodular =
+      grid(many_labels, PairwiseTerm::table(many_labels, quadratic));
+  REQUIRE(expansion_moves_submodular(many));
+  REQUIRE_FALSE(expansion_moves_submodular(not_submodular));
+
+  ExpansionOptions options;
+  options.near_radius = 2;
+  options.near_seeds = NearSeeds::label_and_adjacent;
+  CHECK(near_seeds_in_use(options, many) == NearSeeds::label_and_adjacent);
+  CHECK(near_seeds_in_use(options, few) == NearSeeds::label);
+  CHECK(near_seeds_in_use(options, not_submodular) == NearSeeds::label_and_adjacent);
+  options.shift_moves_unless_submodular = true;
+  CHECK(near_seeds_in_use(options, many) == NearSeeds::label_and_adjacent);
+  CHECK(near_seeds_in_use(options, not_submodular) == NearSeeds::label);
+  options.shift_moves = true;
+  CHECK(near_seeds_in_use(options, many) == NearSeeds::label);
+  // The other seeds are used as asked, on any energy.
+  for (const NearSeeds seeds : {NearSeeds::label, NearSeeds::label_and_cheapest}) {
+    options.near_seeds = seeds;
+    for (const PairwiseEnergy* energy : {&few, &many, &not_submodular})
+      CHECK(near_seeds_in_use(options, *energy) == seeds);
   }
 }

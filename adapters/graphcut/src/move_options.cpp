@@ -31,12 +31,14 @@ NearSeeds near_seeds_from_string(std::string_view text) {
   return enum_from_string(text, kAll, "near-move seeds");
 }
 
-std::string near_moves_text(int radius, NearSeeds seeds) {
+std::string near_moves_text(int radius, NearSeeds seeds, SeedsAs as) {
   std::string text = "near moves of radius " + std::to_string(radius);
   if (seeds == NearSeeds::label) text += " from their label";
   if (seeds == NearSeeds::label_and_adjacent) {
-    text += " from their label and, on " + std::to_string(kMinLabelsForAdjacentSeeds) +
-            " labels or more without shift moves, the labels next to it";
+    text += as == SeedsAs::in_use ? " from their label and the labels next to it"
+                                  : " from their label and, on " +
+                                        std::to_string(kMinLabelsForAdjacentSeeds) +
+                                        " labels or more without shift moves, the labels next to it";
   }
   return text;
 }
@@ -111,6 +113,13 @@ bool expansion_moves_submodular(const PairwiseEnergy& energy) {
 bool makes_shift_moves(const ExpansionOptions& options, const PairwiseEnergy& energy) {
   return options.shift_moves ||
          (options.shift_moves_unless_submodular && !expansion_moves_submodular(energy));
+}
+
+NearSeeds near_seeds_in_use(const ExpansionOptions& options, const PairwiseEnergy& energy) {
+  if (options.near_seeds != NearSeeds::label_and_adjacent) return options.near_seeds;
+  const bool adjacent = energy.num_labels() >= kMinLabelsForAdjacentSeeds &&
+                        !makes_shift_moves(options, energy);
+  return adjacent ? NearSeeds::label_and_adjacent : NearSeeds::label;
 }
 
 std::optional<std::size_t> move_solver_bytes(const ProblemSize& size, GraphStorage storage) {

@@ -28,6 +28,7 @@ unsigned flow_threads(const SolverOptions& options, std::size_t parts) {
 SolverSpec with_moves_decided(SolverSpec spec, const PairwiseEnergy& energy) {
   const auto decide = [&energy](SolverOptions& options) {
     if (auto* expansion = std::get_if<ExpansionOptions>(&options)) {
+      expansion->near_seeds = near_seeds_in_use(*expansion, energy);  // before shifts are fixed
       expansion->shift_moves = makes_shift_moves(*expansion, energy);
       expansion->shift_moves_unless_submodular = false;
       if (!makes_near_moves(*expansion, energy)) expansion->near_radius = 0;

@@ -62,10 +62,11 @@ std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
 /// and ExpansionOptions::threads (resolved); 1 with one part.
 [[nodiscard]] unsigned flow_threads(const SolverOptions& options, std::size_t parts);
 
-/// `spec` with expansion's shift_moves_unless_submodular and near_moves_only_if_local decided on
-/// `energy` (makes_shift_moves, makes_near_moves) on every level: shift_moves and near_radius
-/// say, so that the memory plan counts the shift and near moves' solver only where they are
-/// made, and gives recycled move graphs where near moves are not.
+/// `spec` with expansion's shift_moves_unless_submodular, near_moves_only_if_local and near_seeds
+/// decided on `energy` (makes_shift_moves, makes_near_moves, near_seeds_in_use) on every level:
+/// shift_moves, near_radius and near_seeds say, so that the memory plan counts the shift and
+/// near moves' solver only where they are made, gives recycled move graphs where near moves are
+/// not, and the report names the seeds the moves start from.
 [[nodiscard]] SolverSpec with_moves_decided(SolverSpec spec, const PairwiseEnergy& energy);
 
 /// The threads a run of `options` solves `regions` regions on: half of them at once, at most

@@ -75,7 +75,7 @@ struct RunReport {
   bool shift_moves = false;
   /// The radius of the original problem's near moves on this energy (0: none; expansion:
   /// makes_near_moves, which ExpansionOptions::near_moves_only_if_local may decide) and where
-  /// they start.
+  /// they start on it (near_seeds_in_use).
   int near_radius = 0;
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
 

@@ -110,12 +110,8 @@ class ExpansionSolver {
     cycle_ = MoveCycle<Label>(std::move(labels), options_.order, options_.seed);
     last_ = {};
     if (near_radius_ > 0) {
-      // Shift moves move a region one label off as a whole: the labels next to alpha seed
-      // nothing beside them (NearSeeds::label_and_adjacent).
-      const NearSeeds seeds = shift_moves_ && options_.near_seeds == NearSeeds::label_and_adjacent
-                                  ? NearSeeds::label
-                                  : options_.near_seeds;
-      near_.bind(energy, near_radius_, seeds, &incidences, options_.threads);
+      near_.bind(energy, near_radius_, near_seeds_in_use(options_, energy), &incidences,
+                 options_.threads);
     }
     sweep_steps_done_ = 0;
     sweep_ = first_sweep();

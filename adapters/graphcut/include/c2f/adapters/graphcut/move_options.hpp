@@ -83,10 +83,15 @@ std::string_view to_string(NearSeeds seeds);
 /// throws std::invalid_argument naming the text.
 NearSeeds near_seeds_from_string(std::string_view text);
 
-/// "near moves of radius R", then " from their label" with NearSeeds::label, " from their label
-/// and, on 16 labels or more without shift moves, the labels next to it" with
-/// NearSeeds::label_and_adjacent, as the tools' summaries name them.
-std::string near_moves_text(int radius, NearSeeds seeds);
+/// Whether a text names seeds as configured (they may still be narrowed on an energy) or as
+/// near_seeds_in_use decided them for one.
+enum class SeedsAs { configured, in_use };
+
+/// "near moves of radius R", then " from their label" with NearSeeds::label; with
+/// NearSeeds::label_and_adjacent " from their label and, on 16 labels or more without shift
+/// moves, the labels next to it" as configured, " from their label and the labels next to it"
+/// in use; as the tools' summaries name them.
+std::string near_moves_text(int radius, NearSeeds seeds, SeedsAs as = SeedsAs::configured);
 
 /// The name the tools and Python give ExpansionOptions::near_moves_only_if_local: "local"
 /// (true) or "any" (false).
@@ -213,6 +218,15 @@ inline constexpr double kMaxShareBetweenParts = 0.05;
 /// Whether alpha-expansion with `options` makes shift moves on `energy`: shift_moves, or
 /// shift_moves_unless_submodular on an energy where some expansion move is not submodular.
 [[nodiscard]] bool makes_shift_moves(const ExpansionOptions& options, const PairwiseEnergy& energy);
+
+/// Where alpha-expansion with `options` starts its near moves on `energy` (the one place this
+/// is decided; the solver, the run layer's report and the tools' summaries ask it):
+/// options.near_seeds, except that NearSeeds::label_and_adjacent is NearSeeds::label on an
+/// energy of fewer than kMinLabelsForAdjacentSeeds labels or where it makes shift moves
+/// (makes_shift_moves), which move a region one label off already. O(T L^3) for T terms of L
+/// labels when shift moves depend on submodularity (makes_shift_moves), else O(1).
+[[nodiscard]] NearSeeds near_seeds_in_use(const ExpansionOptions& options,
+                                          const PairwiseEnergy& energy);
 
 /// The bytes alpha-expansion with `options` may give recycled move graphs: graph_memory_limit,
 /// or 0 with near moves. Near moves run on graphs of their own, and the moves over every

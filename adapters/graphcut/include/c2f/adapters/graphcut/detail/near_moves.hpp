@@ -87,7 +87,9 @@ inline void restricted_problem(const PairwiseEnergy& energy, const EdgeIncidence
 
 /// Free variables of the move to alpha from labeling x: every variable not labelled alpha that
 /// lies within `radius` edges of a variable labelled alpha or, with NearSeeds::label_and_cheapest,
-/// of a variable whose cheapest unary label is alpha (itself included). The problem has
+/// of a variable whose cheapest unary label is alpha (itself included), or with
+/// NearSeeds::label_and_adjacent of a variable labelled alpha - 1 or alpha + 1 (bind() takes the
+/// seeds as given: near_seeds_in_use says which an expansion solver uses). The problem has
 /// binary_move.hpp's form over them, with the free variables numbered in the order of `free()`
 /// (ascending).
 class NearMoves {
@@ -100,8 +102,7 @@ class NearMoves {
             SharedIncidence* shared = nullptr, int threads = 1) {
     energy_ = &energy;
     radius_ = radius;
-    adjacent_ =
-        seeds == NearSeeds::label_and_adjacent && energy.num_labels() >= kMinLabelsForAdjacentSeeds;
+    adjacent_ = seeds == NearSeeds::label_and_adjacent;
     threads_ = threads;
     incidence_ = incidence_of(energy, shared);
     const std::size_t n = energy.num_variables();
