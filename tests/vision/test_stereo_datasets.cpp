@@ -122,6 +122,56 @@ TEST_CASE("scene_errors is the brute-force count of the scene's measure", "[ster
         bad_pixel_rates(d, scene.gt, scene.nonoccluded).nonoccluded[1]);
 }
 
+TEST_CASE("bad_pixel_error is scene_errors' rate of the labeling's disparities",
+          "[stereo][evaluation]") {
+  // GT at whole and half pixels (ties at every threshold), at random, unknown and infinite;
+  // labelings at random and at the GT rounded, so that many labels sit at the thresholds.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> disparity(0.0F, 60.0F);
+  const int rows = 24, cols = 35;
+  StereoScene scene;
+  scene.left = cv::Mat(rows, cols, CV_8UC3, cv::Scalar::all(0));
+  scene.gt = cv::Mat(rows, cols, CV_32F);
+  for (int y = 0; y < rows; ++y) {
+    for (int x = 0; x < cols; ++x) {
+      const int kind = (x + 3 * y) % 5;
+      const float value = disparity(random);
+      scene.gt.at<float>(y, x) = kind == 0   ? std::round(value)
+                                 : kind == 1 ? std::round(2 * value) / 2
+                                 : kind == 2 ? value
+                                 : kind == 3 ? (x % 2 ? std::nanf("") : value)
+                                             : (y == 5 && x < 3 ? INFINITY : value);
+    }
+  }
+  cv::Mat mask(rows, cols, CV_8U);
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < cols; ++x) mask.at<uchar>(y, x) = (x * y) % 4 == 0 ? 0 : 255;
+  std::uniform_int_distribution<Label> label(0, 63);
+  for (const ErrorMeasure& measure :
+       {ErrorMeasure{}, kitti_d1_measure(), middlebury2014_measure(Middlebury2014Size::quarter),
+        middlebury2014_measure(Middlebury2014Size::full)}) {
+    for (const bool masked : {false, true}) {
+      scene.measure = measure;
+      scene.nonoccluded = masked ? mask : cv::Mat();
+      const auto error = bad_pixel_error(scene);
+      for (int trial = 0; trial < 6; ++trial) {
+        std::vector<Label> labeling(static_cast<std::size_t>(rows * cols));
+        for (std::size_t v = 0; v < labeling.size(); ++v) {
+          const float g = scene.gt.at<float>(static_cast<int>(v) / cols, static_cast<int>(v) % cols);
+          const bool near_truth = trial % 2 == 1 && std::isfinite(g);
+          labeling[v] = near_truth ? static_cast<Label>(std::lround(g)) + label(random) % 5 - 2
+                                   : label(random);
+        }
+        const SceneErrors errors = scene_errors(labels_to_disparity(labeling, scene.shape()), scene);
+        INFO(measure.name << (masked ? ", masked" : "") << ", trial " << trial);
+        CHECK(error(labeling) == (masked ? errors.nonoccluded : errors.all));
+      }
+    }
+  }
+  CHECK_THROWS_WITH(bad_pixel_error(scene)(std::vector<Label>(10, 0)),
+                    Catch::Contains("10 labels for a scene of 840 pixels"));
+}
+
 TEST_CASE("downscale divides the thresholds that follow it and the disparity range",
           "[stereo][evaluation]") {
   StereoScene scene;

@@ -38,9 +38,10 @@ cv::Mat labels_to_disparity(std::span<const Label> labeling, GridShape shape) {
                                 std::to_string(shape.height) + " grid");
   }
   cv::Mat disparity(static_cast<int>(shape.height), static_cast<int>(shape.width), CV_32F);
-  for (std::size_t v = 0; v < labeling.size(); ++v) {
-    disparity.at<float>(static_cast<int>(v / shape.width), static_cast<int>(v % shape.width)) =
-        static_cast<float>(labeling[v]);
+  for (int y = 0; y < disparity.rows; ++y) {
+    const Label* row = labeling.data() + static_cast<std::size_t>(y) * shape.width;
+    std::transform(row, row + shape.width, disparity.ptr<float>(y),
+                   [](Label label) { return static_cast<float>(label); });
   }
   return disparity;
 }
