@@ -18,10 +18,13 @@ namespace {
 
 /// How long a thread of the pool polls for its next round (a helper) or for the helpers to end
 /// theirs (the caller) before it sleeps on a futex. The solve's calls come microseconds apart,
-/// and waking a sleeping thread costs more than that, most of all on a virtual machine, where a
-/// core with nothing to run halts and a wake-up is an interrupt through the host (Teddy flat on
-/// 2 threads: 2.3% faster polling than sleeping at once, medians of 5).
-constexpr std::chrono::microseconds kPollTime{200};
+/// with serial stretches of up to a few milliseconds between them (a max-flow's second stage, a
+/// near move's set-up), and waking a sleeping thread costs more than polling through them, most
+/// of all on a virtual machine, where a core with nothing to run halts and a wake-up is an
+/// interrupt through the host. Adirondack's default c2f-stereo run on 2 threads, alternating:
+/// the original level's solve 19.4 s against 20.2 s with 200 us (medians of 10 pairs; 2000 us
+/// was the faster in all 10), 457 sleeps against 3988; grids in c2f.solve the same or faster.
+constexpr std::chrono::microseconds kPollTime{2000};
 
 /// Tells the core that this thread is polling (x86 PAUSE, Arm YIELD; elsewhere nothing).
 inline void polling_pause() noexcept {
