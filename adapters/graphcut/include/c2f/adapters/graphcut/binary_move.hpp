@@ -37,6 +37,7 @@
 #include "c2f/adapters/graphcut/detail/move_graphs.hpp"
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
+#include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -476,11 +477,11 @@ class BinaryMoveSolver {
   std::vector<char> in_source_;           // the last solve's source set
   std::vector<std::uint8_t> band_flags_;  // scan_coefficients' findings per band
   std::vector<std::size_t> band_counts_;  // unlabelled variables per band of a QPBO move
-  // change_graph's changes, per band and then joined.
+  // change_graph's changes, per band and then joined (unwritten until the bands' copies).
   std::vector<std::vector<TerminalChange>> band_terminals_;
   std::vector<std::vector<EdgeChange>> band_edges_;
-  std::vector<TerminalChange> terminal_changes_;
-  std::vector<EdgeChange> edge_changes_;
+  DefaultInitVector<TerminalChange> terminal_changes_;
+  DefaultInitVector<EdgeChange> edge_changes_;
   detail::MoveGraphs<Backend> graphs_;
 };
 

@@ -32,10 +32,13 @@ void for_each_band(std::size_t count,
 /// Runs list(first, last, out) for every band [first, last) of `band` indices of [0, count) by
 /// for_each_band, each band into a list of its own (`lists`, kept between calls for their
 /// memory), then appends the lists to `joined` in band order (copied on the threads when they
-/// hold kBandSize entries or more): the same result for every thread count.
-template <class T, class List>
-void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists, std::vector<T>& joined,
-                     const List& list, int threads, std::size_t band = kBandSize) {
+/// hold kBandSize entries or more): the same result for every thread count. A `joined` whose
+/// allocator default-initialises (DefaultInitVector) grows without a serial pass of zeros
+/// before the copies.
+template <class T, class Allocator, class List>
+void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists,
+                     std::vector<T, Allocator>& joined, const List& list, int threads,
+                     std::size_t band = kBandSize) {
   const std::size_t bands = band_count(count, band);
   if (lists.size() < bands) lists.resize(bands);
   for_each_band(
