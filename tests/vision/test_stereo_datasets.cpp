@@ -157,12 +157,14 @@ TEST_CASE("bad_pixel_error is scene_errors' rate of the labeling's disparities",
       for (int trial = 0; trial < 6; ++trial) {
         std::vector<Label> labeling(static_cast<std::size_t>(rows * cols));
         for (std::size_t v = 0; v < labeling.size(); ++v) {
-          const float g = scene.gt.at<float>(static_cast<int>(v) / cols, static_cast<int>(v) % cols);
+          const float g =
+              scene.gt.at<float>(static_cast<int>(v) / cols, static_cast<int>(v) % cols);
           const bool near_truth = trial % 2 == 1 && std::isfinite(g);
           labeling[v] = near_truth ? static_cast<Label>(std::lround(g)) + label(random) % 5 - 2
                                    : label(random);
         }
-        const SceneErrors errors = scene_errors(labels_to_disparity(labeling, scene.shape()), scene);
+        const SceneErrors errors =
+            scene_errors(labels_to_disparity(labeling, scene.shape()), scene);
         INFO(measure.name << (masked ? ", masked" : "") << ", trial " << trial);
         CHECK(error(labeling) == (masked ? errors.nonoccluded : errors.all));
       }

@@ -35,10 +35,10 @@ std::string near_moves_text(int radius, NearSeeds seeds, SeedsAs as) {
   std::string text = "near moves of radius " + std::to_string(radius);
   if (seeds == NearSeeds::label) text += " from their label";
   if (seeds == NearSeeds::label_and_adjacent) {
-    text += as == SeedsAs::in_use ? " from their label and the labels next to it"
-                                  : " from their label and, on " +
-                                        std::to_string(kMinLabelsForAdjacentSeeds) +
-                                        " labels or more without shift moves, the labels next to it";
+    text += as == SeedsAs::in_use
+                ? " from their label and the labels next to it"
+                : " from their label and, on " + std::to_string(kMinLabelsForAdjacentSeeds) +
+                      " labels or more without shift moves, the labels next to it";
   }
   return text;
 }
@@ -117,8 +117,8 @@ bool makes_shift_moves(const ExpansionOptions& options, const PairwiseEnergy& en
 
 NearSeeds near_seeds_in_use(const ExpansionOptions& options, const PairwiseEnergy& energy) {
   if (options.near_seeds != NearSeeds::label_and_adjacent) return options.near_seeds;
-  const bool adjacent = energy.num_labels() >= kMinLabelsForAdjacentSeeds &&
-                        !makes_shift_moves(options, energy);
+  const bool adjacent =
+      energy.num_labels() >= kMinLabelsForAdjacentSeeds && !makes_shift_moves(options, energy);
   return adjacent ? NearSeeds::label_and_adjacent : NearSeeds::label;
 }
 

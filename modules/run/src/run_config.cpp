@@ -52,7 +52,8 @@ std::string RunReport::threads_line() const {
   const auto on = [](unsigned threads) {
     return " on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
   };
-  const std::string near = near_radius <= 0 ? "" : near_moves_text(near_radius, near_seeds, SeedsAs::in_use);
+  const std::string near =
+      near_radius <= 0 ? "" : near_moves_text(near_radius, near_seeds, SeedsAs::in_use);
   const std::string shifts = shift_moves ? " with shift moves" : "";
   const std::string flow =
       flow_parts < 2 ? ""

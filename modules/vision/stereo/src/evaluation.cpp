@@ -176,8 +176,8 @@ class LabelErrorRate {
       return {index, all ? std::numeric_limits<Label>::min() : 1,
               all ? std::numeric_limits<Label>::max() : 0};
     }
-    const double bound =
-        measure.relative > 0.0 ? std::max(measure.absolute, measure.relative * g) : measure.absolute;
+    const double bound = measure.relative > 0.0 ? std::max(measure.absolute, measure.relative * g)
+                                                : measure.absolute;
     double low = std::clamp(std::ceil(g - bound), -kFar, kFar);
     double high = std::clamp(std::floor(g + bound), -kFar, kFar);
     for (int step = 0; step < 2; ++step) {
