@@ -12,8 +12,10 @@ void RunFlags::declare(ToolOptions& options) {
       "where --near-radius's moves start: label_and_cheapest (the variables of that label and "
       "those whose cheapest cost it is), label (the variables of that label only: the edges of "
       "its regions, what is left to do after a coarse level on noisy unaries) or "
-      "label_and_adjacent (as label, and on 16 labels or more without shift moves also the "
-      "variables of the labels next to it, so a region one label off moves as a whole)";
+      "label_and_adjacent (as label, and on " +
+      std::to_string(kMinLabelsForAdjacentSeeds) +
+      " labels or more without shift moves also the variables of the labels next to it, so a "
+      "region one label off moves as a whole)";
   if (seeds_depend_on_grid(defaults_)) {
     near_seeds_help_ += std::string("; default ") +
                         std::string(to_string(defaults_.near_seeds_on(true))) +
