@@ -93,8 +93,7 @@ int main(int argc, char** argv) {
         {command.out_dir, kOutputs, {{"--trace", command.trace, "trace.csv"}}},
         {{"MODEL", command.model}});
     const TimedModel model = read_model(command);
-    const Schedule schedule =
-        examples::solve_schedule(command, model.energy.num_variables(), model.energy.num_labels());
+    const Schedule schedule = examples::solve_schedule(command, model.energy);
     ScheduleProvider levels =
         command.grid ? ScheduleProvider(schedule, *command.grid) : ScheduleProvider(schedule);
     const RunConfig config = planned_config(command, model);

@@ -33,9 +33,9 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
   const RunDefaults defaults = pairwise_defaults();
   RunFlags run(defaults);
   const std::string default_schedule =
-      defaults.grid_schedule == defaults.general_schedule
-          ? defaults.grid_schedule
-          : defaults.grid_schedule + " with --grid, else " + defaults.general_schedule;
+      defaults.grid_schedule + " with --grid; without, " + defaults.local_schedule +
+      " where the model's edges are local in its variables' order (a lattice), else " +
+      defaults.general_schedule;
   const std::string schedule_help =
       "default: " + default_schedule +
       " (the measured best, docs/results.md); flat (the original problem only, the fair "
@@ -66,20 +66,25 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
     throw std::invalid_argument("-o/--out: an output directory is required");
   if (!grid.empty()) command.grid = parse_grid(grid);
   command.run = run.config(command.grid.has_value());
-  // The grammar now; the label count and the grid once the model is read.
-  if (command.schedule_text.empty())
-    command.schedule_text = defaults.schedule(command.grid.has_value());
-  with_flag("--schedule",
-            [&] { return Schedule::parse(command.schedule_text, pairwise_schedule_presets()); });
+  // The grammar now; the label count and the grid once the model is read (the default, which
+  // depends on the model's edges, then too).
+  if (!command.schedule_text.empty()) {
+    with_flag("--schedule",
+              [&] { return Schedule::parse(command.schedule_text, pairwise_schedule_presets()); });
+  }
   if (command.trace.empty())
     command.trace = (std::filesystem::path(command.out_dir) / "trace.csv").string();
   return command;
 }
 
-Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels) {
-  const Schedule schedule = with_flag("--schedule", [&] {
-    return Schedule::parse(command.schedule_text, pairwise_schedule_presets());
-  });
+Schedule solve_schedule(const SolveCommand& command, const PairwiseEnergy& energy) {
+  const std::size_t num_variables = energy.num_variables();
+  const int num_labels = energy.num_labels();
+  const std::string& text = command.schedule_text.empty()
+                                ? pairwise_defaults().schedule_for(energy, command.grid.has_value())
+                                : command.schedule_text;
+  const Schedule schedule =
+      with_flag("--schedule", [&] { return Schedule::parse(text, pairwise_schedule_presets()); });
   if (const std::string problem = schedule.validate(num_labels); !problem.empty())
     throw std::invalid_argument(option_message("--schedule", problem) + " (the model has " +
                                 std::to_string(num_labels) + " labels)");

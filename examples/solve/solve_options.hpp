@@ -5,6 +5,7 @@
 #include <string>
 
 #include "c2f/core/grid.hpp"
+#include "c2f/core/pairwise_energy.hpp"
 #include "c2f/lift/schedule.hpp"
 #include "c2f/run/run_config.hpp"
 
@@ -26,10 +27,11 @@ struct SolveCommand {
 /// message naming the flag for anything invalid (the model file must exist).
 std::optional<SolveCommand> parse_solve_command(int argc, char** argv);
 
-/// The schedule for a model of num_variables variables and num_labels labels: parsed with
-/// c2f-solve's presets, N_L checked against the labels, and levels that need a pixel grid
-/// (local, threshold, blocks, slic, /cc) refused unless --grid gave one of the model's size.
-/// Throws std::invalid_argument starting "--schedule: " or "--grid: ".
-Schedule solve_schedule(const SolveCommand& command, std::size_t num_variables, int num_labels);
+/// The schedule for the model's energy: --schedule, else the pairwise defaults' schedule for it
+/// (RunDefaults::schedule_for); parsed with c2f-solve's presets, N_L checked against the
+/// labels, and levels that need a pixel grid (local, threshold, blocks, slic) refused unless
+/// --grid gave one of the model's size. Throws std::invalid_argument starting "--schedule: " or
+/// "--grid: ".
+Schedule solve_schedule(const SolveCommand& command, const PairwiseEnergy& energy);
 
 }  // namespace c2f::examples

@@ -71,8 +71,9 @@ def defaults(name: str = "pairwise") -> Dict[str, Any]:
     Returns
     -------
     dict
-        ``grid_schedule`` and ``general_schedule`` (the schedule on a grid energy and on any
-        other), expansion's ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where
+        ``grid_schedule``, ``local_schedule`` and ``general_schedule`` (the schedule on a grid
+        energy, on another energy whose edges are local in its variables' order, such as a
+        lattice, and on any other), expansion's ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where
         near moves start on any other energy and on a grid energy), ``near_graphs``,
         ``near_min_variables`` and ``shift_moves`` (on the original problem),
         ``plateau`` and ``plateau_tolerance`` (coarse levels): the configuration measured best
@@ -106,7 +107,8 @@ def solve(
         The pairwise energy (``Energy.grid``, ``Energy.general``, ``stereo_energy``, ...).
     schedule : str or sequence of ndarray, optional
         The coarse levels, coarsest first. None: the defaults' (coarse to fine:
-        'agg:2,8,0.15/cc' on a grid energy, 'agg:2/cc' on any other; see ``defaults``).
+        'agg:2,8,0.15/cc' on a grid energy, 'agg:2,3,0.15/cc' on another whose edges are
+        local in its variables' order, 'agg:2/cc' on any other; see ``defaults``).
         'flat' (the original problem only, with the same moves: the fair baseline), 'paper' (colour
         passing CP(1,1) CP(2,1) CP(3,1)), any schedule text of the library ('cp:1,1 cp:2,1',
         'auto:0.01,0.1', 'agg:2/cc', and on a grid energy also 'blocks:4', 'threshold:0.5',

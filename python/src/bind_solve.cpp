@@ -94,7 +94,8 @@ py::dict solve(const ModelEnergy& model, const py::object& given_schedule,
                const py::handle& graph_memory) {
   const RunDefaults defaults = named_defaults(defaults_name);
   const py::object schedule_object =
-      given_schedule.is_none() ? py::str(defaults.schedule(!model.shape.empty())) : given_schedule;
+      given_schedule.is_none() ? py::str(defaults.schedule_for(model.energy, !model.shape.empty()))
+                               : given_schedule;
   RunConfig config;
   config.solver = solver_spec_from(method, options, defaults, !model.shape.empty());
   config.limits =
@@ -136,6 +137,8 @@ py::dict defaults_dict(const std::string& name) {
   py::dict out;
   out["grid_schedule"] = defaults.grid_schedule;
   out["general_schedule"] = defaults.general_schedule;
+  out["local_schedule"] =
+      defaults.local_schedule.empty() ? defaults.general_schedule : defaults.local_schedule;
   out["near_radius"] = defaults.near_radius;
   out["near_seeds"] = std::string(to_string(defaults.near_seeds));
   out["grid_near_seeds"] = std::string(to_string(defaults.near_seeds_on(true)));

@@ -142,7 +142,8 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     """c2f.solve with nothing named runs c2f.defaults(): the same run as naming every value,
     and the same labeling as c2f-solve with no flags (on a grid, and on a general graph)."""
     defaults = c2f.defaults()
-    assert set(defaults) == {"grid_schedule", "general_schedule", "near_radius", "near_seeds",
+    assert set(defaults) == {"grid_schedule", "local_schedule", "general_schedule",
+                             "near_radius", "near_seeds",
                              "grid_near_seeds", "near_graphs", "near_min_variables",
                              "shift_moves", "plateau", "plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
@@ -162,15 +163,31 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
         pytest.skip("C2F_BUILD_DIR is not set (ctest sets it): no c2f-solve to compare with")
     model = tmp_path / "model.uai"
     energy.write_uai(str(model))
-    for grid, read in ((["--grid", "16x12"], energy), ([], c2f.Energy.read_uai(str(model)))):
-        out = tmp_path / ("grid" if grid else "general")
-        subprocess.run([os.path.join(build, "examples/solve/c2f-solve"), str(model), "-o",
+    # Off a grid the schedule goes with the edges: a 12 x 16 grid's edges are not local in 4
+    # bands of 3 rows (a seventh join bands), a 64 x 40 grid's are (1 in 45).
+    lattice = c2f.Energy.grid(rng.random((64, 40, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
+    lattice_model = tmp_path / "lattice.uai"
+    lattice.write_uai(str(lattice_model))
+    lattice_graph = c2f.Energy.read_uai(str(lattice_model))  # no grid shape
+    runs = ((model, ["--grid", "16x12"], energy, "grid_schedule"),
+            (model, [], c2f.Energy.read_uai(str(model)), "general_schedule"),
+            (lattice_model, [], lattice_graph, "local_schedule"))
+    for path, grid, read, schedule in runs:
+        out = tmp_path / schedule
+        subprocess.run([os.path.join(build, "examples/solve/c2f-solve"), str(path), "-o",
                         str(out), "-q", *grid], check=True)
         cli = np.array([int(w) for w in (out / "labeling.mpe").read_text().split()[2:]])
         result = c2f.solve(read)
         np.testing.assert_array_equal(result.labeling.reshape(-1), cli)
-        schedule = defaults["grid_schedule" if grid else "general_schedule"]
-        assert f"schedule {schedule}" in (out / "summary.txt").read_text()
+        assert f"schedule {defaults[schedule]}" in (out / "summary.txt").read_text()
+        named = c2f.solve(read, defaults[schedule])
+        np.testing.assert_array_equal(result.trace["energy"], named.trace["energy"])
+        np.testing.assert_array_equal(result.trace["variables"], named.trace["variables"])
+    # There the local schedule's coarse level (three rounds of neighbours: two keep more than
+    # 15% of these random unaries' variables as groups) is coarser than the general one's.
+    local = c2f.solve(lattice_graph)
+    general = c2f.solve(lattice_graph, defaults["general_schedule"])
+    assert local.trace["variables"][0] < general.trace["variables"][0]
 
 
 def test_the_defaults_make_shift_moves_where_an_expansion_move_is_not_submodular(rng):

@@ -6,12 +6,16 @@
 #include <variant>
 #include <vector>
 
+#include "c2f/adapters/graphcut/move_options.hpp"
+#include "c2f/lift/schedule.hpp"
 #include "c2f/run/defaults.hpp"
 #include "c2f/run/stereo_run.hpp"
+#include "support/random_models.hpp"
 #include "run_flags.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
+using c2f::test::Rng;
 
 namespace {
 
@@ -108,4 +112,29 @@ TEST_CASE("the defaults' size floor for near moves goes with their near moves",
   CHECK_THROWS_WITH(
       config_with_flags(defaults, {"--near-radius", "0", "--near-min-variables", "700"}),
       Catch::Contains("--near-min-variables: has no effect without --near-radius"));
+}
+
+TEST_CASE("the defaults' schedule goes with the energy's graph", "[tools][defaults]") {
+  Rng rng(5);
+  // A 64 x 64 grid energy (local edges), and 4096 variables joined at random (not local).
+  const PairwiseEnergy lattice = test::random_grid_energy(rng, 64, 64, 4);
+  const PairwiseEnergy random = test::random_energy(rng, 4096, 4, 8192);
+  REQUIRE(edges_local(lattice));
+  REQUIRE_FALSE(edges_local(random));
+  const RunDefaults defaults = pairwise_defaults();
+  // Three schedules, each one a schedule c2f-solve's grammar reads.
+  for (const std::string& text :
+       {defaults.grid_schedule, defaults.local_schedule, defaults.general_schedule})
+    CHECK_NOTHROW(Schedule::parse(text));
+  CHECK(defaults.local_schedule != defaults.general_schedule);
+  // A pixel grid's schedule wherever the caller knows the grid; off a grid, by the edges.
+  CHECK(defaults.schedule_for(lattice, true) == defaults.grid_schedule);
+  CHECK(defaults.schedule_for(random, true) == defaults.grid_schedule);
+  CHECK(defaults.schedule_for(lattice, false) == defaults.local_schedule);
+  CHECK(defaults.schedule_for(random, false) == defaults.general_schedule);
+  // No local schedule: the general one on every graph that is no grid.
+  const RunDefaults stereo = vision::stereo_defaults();
+  REQUIRE(stereo.local_schedule.empty());
+  CHECK(stereo.schedule_for(lattice, false) == stereo.general_schedule);
+  CHECK(stereo.schedule_for(random, false) == stereo.general_schedule);
 }

@@ -1,5 +1,6 @@
 #include "c2f/run/defaults.hpp"
 
+#include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/run/solver_spec.hpp"
 
 namespace c2f {
@@ -20,10 +21,16 @@ RunConfig RunDefaults::config(bool on_grid) const {
   return config;
 }
 
+const std::string& RunDefaults::schedule_for(const PairwiseEnergy& energy, bool on_grid) const {
+  if (on_grid) return grid_schedule;
+  return !local_schedule.empty() && edges_local(energy) ? local_schedule : general_schedule;
+}
+
 RunDefaults pairwise_defaults() {
   RunDefaults defaults;
   defaults.grid_schedule = "agg:2,8,0.15/cc";
   defaults.general_schedule = "agg:2/cc";
+  defaults.local_schedule = "agg:2,3,0.15/cc";
   defaults.shift_moves_unless_submodular = true;
   defaults.near_radius = 3;
   defaults.near_seeds = NearSeeds::label;

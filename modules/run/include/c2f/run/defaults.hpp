@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "c2f/core/pairwise_energy.hpp"
 #include "c2f/run/run_config.hpp"
 
 namespace c2f {
@@ -15,6 +16,10 @@ namespace c2f {
 struct RunDefaults {
   std::string grid_schedule;     ///< schedule text on a pixel grid (application presets apply)
   std::string general_schedule;  ///< schedule text on any other graph
+  /// Schedule text on a graph that is no pixel grid but whose edges are local in its
+  /// variables' order (edges_local: a lattice, a grid given without its shape); empty:
+  /// general_schedule there too.
+  std::string local_schedule;
   int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
   /// Where those near moves start (ExpansionOptions::near_seeds) on any graph but a pixel grid.
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
@@ -34,10 +39,10 @@ struct RunDefaults {
   double plateau_tolerance = 0.0;  ///< the plateau rule's tolerance on coarse levels
   bool progress_rate = false;      ///< RunConfig::progress_rate
 
-  /// grid_schedule on a pixel grid, else general_schedule.
-  [[nodiscard]] const std::string& schedule(bool on_grid) const {
-    return on_grid ? grid_schedule : general_schedule;
-  }
+  /// The schedule text for `energy`: grid_schedule on a pixel grid (on_grid), else
+  /// local_schedule (when set) where its edges are local (edges_local), else
+  /// general_schedule. O(E) off a grid.
+  [[nodiscard]] const std::string& schedule_for(const PairwiseEnergy& energy, bool on_grid) const;
   /// grid_near_seeds (when set) on a pixel grid, else near_seeds.
   [[nodiscard]] NearSeeds near_seeds_on(bool on_grid) const {
     return on_grid && grid_near_seeds ? *grid_near_seeds : near_seeds;
@@ -50,8 +55,9 @@ struct RunDefaults {
 
 /// A pairwise energy's defaults (c2f-solve, c2f.solve): aggregated best labels split into
 /// connected regions (on a grid agg:2,8,0.15/cc: unaries summed over 5x5 windows, or wider ones
-/// up to 17x17 while the level keeps more than 15% of the variables as groups; on any other
-/// graph agg:2/cc, over two rounds of graph neighbours, where wider rounds mix what differs);
+/// up to 17x17 while the level keeps more than 15% of the variables as groups; on another graph
+/// whose edges are local agg:2,3,0.15/cc, over two rounds of graph neighbours or three while
+/// two keep more than 15%; on any other graph agg:2/cc, where wider rounds mix what differs);
 /// expansion moves, with shift moves on energies where some expansion move is not submodular
 /// (e.g. truncated quadratic); on the original problem near moves of radius 3 from their label
 /// (on a pixel grid of 16 labels or more without shift moves also from the labels next to it:
