@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace c2f {
 
@@ -49,6 +50,10 @@ LiftingView lifting_view(const PairwiseEnergy& energy) {
   SignatureColours pair_colours(16);
   std::u32string signature;
   view.factors.resize(edges.size());
+  // Each term's symmetry once: a table term's is a scan of its table.
+  std::vector<std::uint8_t> symmetric(energy.terms().size());
+  for (std::size_t t = 0; t < symmetric.size(); ++t)
+    symmetric[t] = energy.terms()[t].is_symmetric() ? 1 : 0;
   // An edge of the same term and weight as the edge before (every edge of a grid of one
   // weight) has its colour: the maps are asked only when either changes.
   std::uint32_t last_term = 0;
@@ -62,8 +67,7 @@ LiftingView lifting_view(const PairwiseEnergy& energy) {
       const auto weight_id =
           weight_ids.try_emplace(bits, static_cast<std::uint32_t>(weight_ids.size())).first->second;
       signature = {static_cast<char32_t>(edges[e].term), static_cast<char32_t>(weight_id)};
-      last = {0, 0, pair_colours.colour_of(signature),
-              energy.terms()[edges[e].term].is_symmetric()};
+      last = {0, 0, pair_colours.colour_of(signature), symmetric[edges[e].term] != 0};
       last_term = edges[e].term;
       last_bits = bits;
       have_last = true;
