@@ -237,3 +237,41 @@ TEST_CASE("agg:R,MAX,SHARE takes the smallest radius whose level keeps at most S
   REQUIRE(level);
   CHECK(*level == on_graph(expected));
 }
+
+TEST_CASE("graph aggregation: one radius after another, on any number of threads",
+          "[lift][aggregated][graph]") {
+  Rng rng(41);
+  // More variables than one task of the rounds holds (4096), in double and in float.
+  const PairwiseEnergy graph = random_energy(rng, 10000, 5, 16000);
+  FloatValues floats(graph.num_variables() * 5);
+  for (std::size_t v = 0; v < graph.num_variables(); ++v)
+    for (Label l = 0; l < 5; ++l)
+      floats[v * 5 + static_cast<std::size_t>(l)] = static_cast<float>(graph.unary(v, l));
+  const PairwiseEnergy single = PairwiseEnergy::with_float_unaries(
+      graph.num_variables(), 5, std::move(floats),
+      std::vector<PairwiseTerm>(graph.terms().begin(), graph.terms().end()),
+      std::vector<Edge>(graph.edges().begin(), graph.edges().end()));
+  for (const PairwiseEnergy* energy : {&graph, &single}) {
+    const LiftingView view = lifting_view(*energy);
+    for (int radius = 0; radius <= 3; ++radius) {
+      INFO("radius " << radius << (energy == &single ? ", float" : ", double"));
+      // By the definition in double; the float energy's rounds are kept in float, so its
+      // thread counts are held to its one-thread partition.
+      const DensePartition expected = energy == &graph ? graph_minimum_by_hand(*energy, radius)
+                                                       : aggregated_best_labels(view, radius);
+      REQUIRE(expected.num_groups() > 1);
+      for (const int threads : {1, 2, 3})
+        CHECK(aggregated_best_labels(view, radius, threads) == expected);
+    }
+    // One radius after another, each going on from the last one's sums, bits included.
+    GraphAggregation widening(view, 2);
+    for (int radius = 0; radius <= 4; ++radius)
+      CHECK(widening.best_labels(radius, true) == aggregated_best_labels(view, radius));
+    GraphAggregation skipping(view);
+    CHECK(skipping.best_labels(1, true) == aggregated_best_labels(view, 1));
+    CHECK(skipping.best_labels(3, true) == aggregated_best_labels(view, 3));
+    CHECK(skipping.best_labels(0) == aggregated_best_labels(view, 0));  // the unaries': any time
+    CHECK_THROWS_WITH(skipping.best_labels(3), Catch::Contains("those kept are of radius 3"));
+    CHECK(skipping.best_labels(5) == aggregated_best_labels(view, 5));
+  }
+}

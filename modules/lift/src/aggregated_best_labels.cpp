@@ -5,14 +5,20 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
 #include "c2f/core/edge_incidence.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 namespace c2f {
 
 namespace {
+
+/// Variables per task of a round of graph sums: the tasks depend on N only, and each variable's
+/// sums on nothing else, so the partitions are the same for every thread count.
+constexpr std::size_t kVariablesPerTask = 4096;
 
 /// Row y's horizontal window sums, label-minor: out[x * L + l] = sum over x' in
 /// [x - radius, x + radius] (clipped) of unary(y * width + x', l). O(width * L) whatever the
@@ -69,48 +75,91 @@ DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, 
   return DensePartition::from_ids(best);
 }
 
-DensePartition aggregated_best_labels(const LiftingView& view, int radius) {
+DensePartition aggregated_best_labels(const LiftingView& view, int radius, int threads) {
   if (radius < 0) throw std::invalid_argument("aggregated_best_labels: radius must be >= 0");
-  const std::size_t n = view.num_variables;
-  const auto L = static_cast<std::size_t>(view.num_labels);
-  const EdgeIncidence neighbours(n, std::span<const ColourFactor>(view.factors));
-  std::vector<std::int64_t> best(n);
-  view.unaries.visit([&](auto unary) {
-    // Rounds 1 .. radius - 1 are kept whole (the next round reads every neighbour's); the last
-    // round is summed per variable and only its least label kept.
+  return GraphAggregation(view, threads).best_labels(radius);
+}
+
+GraphAggregation::GraphAggregation(const LiftingView& view, int threads)
+    : view_(&view),
+      neighbours_(view.num_variables, std::span<const ColourFactor>(view.factors)),
+      threads_(threads) {}
+
+DensePartition GraphAggregation::best_labels(int radius, bool keep) {
+  if (radius < 0) throw std::invalid_argument("aggregated_best_labels: radius must be >= 0");
+  if (radius > 0 && radius - 1 < kept_) {
+    throw std::invalid_argument("GraphAggregation::best_labels: radius " + std::to_string(radius) +
+                                " goes on from the sums of radius " + std::to_string(radius - 1) +
+                                ", and those kept are of radius " + std::to_string(kept_));
+  }
+  std::vector<std::int64_t> best(view_->num_variables);
+  if (radius == 0) {
+    // The unaries' own least labels (kept_ is 0: nothing to keep).
+    const auto L = static_cast<std::size_t>(view_->num_labels);
+    view_->unaries.visit([&](auto unary) {
+      parallel_for_chunks(
+          best.size(), kVariablesPerTask,
+          [&](std::size_t, std::size_t first, std::size_t last) {
+            for (std::size_t v = first; v < last; ++v) {
+              const auto costs = unary.subspan(v * L, L);
+              best[v] = std::min_element(costs.begin(), costs.end()) - costs.begin();
+            }
+          },
+          threads_);
+    });
+    return DensePartition::from_ids(best);
+  }
+  // Rounds up to radius - 1 are kept whole (the next round reads every neighbour's); the last
+  // is summed per variable and, with keep, kept too.
+  while (kept_ < radius - 1) next_round(nullptr, true);
+  next_round(&best, keep);
+  return DensePartition::from_ids(best);
+}
+
+void GraphAggregation::next_round(std::vector<std::int64_t>* best, bool keep) {
+  const std::size_t n = view_->num_variables;
+  const auto L = static_cast<std::size_t>(view_->num_labels);
+  view_->unaries.visit([&](auto unary) {
     using Cost = std::remove_const_t<typename decltype(unary)::element_type>;
-    std::vector<Cost> current, next;
-    const auto sum_round = [&](auto previous, std::size_t v, double* out) {
-      for (std::size_t l = 0; l < L; ++l) out[l] = static_cast<double>(previous[v * L + l]);
-      for (const Incidence& incidence : neighbours.of(v)) {
-        const std::size_t u = incidence.other;
-        for (std::size_t l = 0; l < L; ++l) out[l] += static_cast<double>(previous[u * L + l]);
-      }
-    };
-    std::vector<double> sums(L);
-    for (int round = 1; round < radius; ++round) {
-      next.resize(n * L);
-      for (std::size_t v = 0; v < n; ++v) {
-        if (round == 1)
-          sum_round(unary, v, sums.data());
-        else
-          sum_round(std::span<const Cost>(current), v, sums.data());
-        for (std::size_t l = 0; l < L; ++l) next[v * L + l] = static_cast<Cost>(sums[l]);
-      }
-      current.swap(next);
-    }
-    for (std::size_t v = 0; v < n; ++v) {
-      if (radius == 0) {
-        for (std::size_t l = 0; l < L; ++l) sums[l] = static_cast<double>(unary[v * L + l]);
-      } else if (radius == 1) {
-        sum_round(unary, v, sums.data());
-      } else {
-        sum_round(std::span<const Cost>(current), v, sums.data());
-      }
-      best[v] = std::min_element(sums.begin(), sums.end()) - sums.begin();  // ties: smallest
+    std::vector<Cost>& sums = [&]() -> std::vector<Cost>& {
+      if constexpr (std::is_same_v<Cost, float>)
+        return float_sums_;
+      else
+        return double_sums_;
+    }();
+    std::vector<Cost>& next = [&]() -> std::vector<Cost>& {
+      if constexpr (std::is_same_v<Cost, float>)
+        return next_float_;
+      else
+        return next_double_;
+    }();
+    const std::span<const Cost> previous =
+        kept_ == 0 ? unary : std::span<const Cost>(sums.data(), sums.size());
+    if (keep) next.resize(n * L);
+    parallel_for_chunks(
+        n, kVariablesPerTask,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          std::vector<double> total(L);
+          for (std::size_t v = first; v < last; ++v) {
+            // s_{k+1}(v) = s_k(v) + the sum of s_k(u) over v's factors, in double.
+            for (std::size_t l = 0; l < L; ++l) total[l] = static_cast<double>(previous[v * L + l]);
+            for (const Incidence& incidence : neighbours_.of(v)) {
+              const std::size_t u = incidence.other;
+              for (std::size_t l = 0; l < L; ++l)
+                total[l] += static_cast<double>(previous[u * L + l]);
+            }
+            if (best != nullptr)  // ties: the smallest label
+              (*best)[v] = std::min_element(total.begin(), total.end()) - total.begin();
+            if (keep)
+              for (std::size_t l = 0; l < L; ++l) next[v * L + l] = static_cast<Cost>(total[l]);
+          }
+        },
+        threads_);
+    if (keep) {
+      sums.swap(next);
+      ++kept_;
     }
   });
-  return DensePartition::from_ids(best);
 }
 
 }  // namespace c2f

@@ -1,5 +1,6 @@
 #include "level_builder.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -36,7 +37,11 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
 
 DensePartition LevelBuilder::build_one(const LevelSpec& spec, const LiftingView& view,
                                        const DensePartition* previous) {
-  DensePartition partition = build_groups(spec, view, previous);
+  return connected_if(spec, build_groups(spec, view, previous), view);
+}
+
+DensePartition LevelBuilder::connected_if(const LevelSpec& spec, DensePartition partition,
+                                          const LiftingView& view) const {
   if (!spec.connected) return partition;
   return shape_ ? connected_components(partition, *shape_)
                 : connected_components_along_edges(partition, view);
@@ -46,10 +51,16 @@ DensePartition LevelBuilder::aggregated_within_share(const LevelSpec& spec,
                                                      const AggregatedLevel& level,
                                                      const LiftingView& view) {
   const auto variables = static_cast<double>(view.num_variables);
+  // Off a grid each radius goes on from the last one's sums (the grid's windows cost the same
+  // at any radius).
+  std::optional<GraphAggregation> rounds;
+  if (!shape_) rounds.emplace(view, threads_);
   for (int radius = level.radius;; ++radius) {
     LevelSpec fixed = spec;
     fixed.partition = AggregatedLevel{radius};
-    DensePartition partition = build_one(fixed, view, nullptr);
+    DensePartition partition =
+        rounds ? connected_if(fixed, rounds->best_labels(radius, radius < level.max_radius), view)
+               : build_one(fixed, view, nullptr);
     const double share = static_cast<double>(partition.num_groups()) / variables;
     if (share <= level.max_share || radius == level.max_radius) {
       last_built_ = fixed;
@@ -74,7 +85,7 @@ DensePartition LevelBuilder::build_groups(const LevelSpec& spec, const LiftingVi
     return threshold_partition(view, grid_of(spec), threshold->tau, threshold->radius);
   if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition)) {
     return shape_ ? aggregated_best_labels(view, *shape_, aggregated->radius)
-                  : aggregated_best_labels(view, aggregated->radius);
+                  : aggregated_best_labels(view, aggregated->radius, threads_);
   }
   if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))
     return block_partition(grid_of(spec), static_cast<std::size_t>(blocks->size));

@@ -28,6 +28,9 @@ class LevelBuilder {
   /// The level the last build() made: its spec, or for agg:R,MAX,SHARE the fixed agg:RADIUS
   /// it chose (with its /cc).
   [[nodiscard]] const LevelSpec& last_built() const noexcept { return last_built_; }
+  /// Builds agg levels off a grid on up to `threads` threads (0: the machine's cores); the
+  /// partitions are the same for every count.
+  void set_threads(int threads) noexcept { threads_ = threads; }
 
  private:
   /// build() of a level with one partition (not a radius that builds itself).
@@ -37,6 +40,9 @@ class LevelBuilder {
   /// the variables as groups or the radius is MAX.
   DensePartition aggregated_within_share(const LevelSpec& spec, const AggregatedLevel& level,
                                          const LiftingView& view);
+  /// `partition` split into connected components when spec asks for /cc.
+  DensePartition connected_if(const LevelSpec& spec, DensePartition partition,
+                              const LiftingView& view) const;
   /// build_one() before /cc.
   DensePartition build_groups(const LevelSpec& spec, const LiftingView& view,
                               const DensePartition* previous);
@@ -50,6 +56,7 @@ class LevelBuilder {
   SuperpixelSource superpixels_;
   std::optional<ColourPassing> colour_passing_;
   LevelSpec last_built_;
+  int threads_ = 1;
 };
 
 }  // namespace c2f::detail

@@ -32,6 +32,10 @@ ScheduleProvider::ScheduleProvider(Schedule schedule) : schedule_(std::move(sche
 
 ScheduleProvider::~ScheduleProvider() = default;
 ScheduleProvider::ScheduleProvider(ScheduleProvider&&) noexcept = default;
+
+void ScheduleProvider::set_threads(int threads) noexcept {
+  builder_->set_threads(threads);
+}
 ScheduleProvider& ScheduleProvider::operator=(ScheduleProvider&&) noexcept = default;
 
 void ScheduleProvider::keep_apart(std::span<const int> classes) {

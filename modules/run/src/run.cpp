@@ -15,6 +15,11 @@ unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
       std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
 }
 
+int partition_threads(const SolverOptions& options) {
+  const auto* expansion = std::get_if<ExpansionOptions>(&options);
+  return expansion == nullptr ? 1 : expansion->threads;
+}
+
 unsigned threads_on_parts(int threads, std::size_t parts) {
   if (parts < 2) return 1;
   return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(threads), parts));

@@ -91,6 +91,11 @@ class ScheduleProvider {
     return partition;
   }
 
+  /// Builds the levels that can be split among threads (agg levels off a grid) on up to
+  /// `threads` threads (0: the machine's cores; 1 until set); the partitions are the same for
+  /// every count. run() sets the solve's threads.
+  void set_threads(int threads) noexcept;
+
   /// One report per level built so far.
   [[nodiscard]] const std::vector<LevelReport>& reports() const noexcept { return reports_; }
   /// The schedule as given.

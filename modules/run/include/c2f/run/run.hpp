@@ -73,6 +73,10 @@ std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
 /// ExpansionOptions::threads (resolved); 1 without regions.
 [[nodiscard]] unsigned solve_threads(const SolverOptions& options, std::size_t regions);
 
+/// The threads the levels of a run of `options` are built on (ScheduleProvider::set_threads):
+/// ExpansionOptions::threads (0: the machine's cores), 1 for any other solver.
+[[nodiscard]] int partition_threads(const SolverOptions& options);
+
 }  // namespace detail
 
 /// The plan of a run of `config` on `energy` (MemoryPlan): the floor, the graph memory and the
@@ -115,6 +119,8 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
                               static_cast<std::size_t>(std::numeric_limits<int>::max())));
   }
   options.coarse_level_fits = coarse_level_admission(spec, size, report.plan);
+  if constexpr (requires { levels.set_threads(1); })
+    levels.set_threads(detail::partition_threads(spec.original));
   const auto solve = [&](auto&& solvers) {
     Summary summary = coarse_to_fine(energy, levels, solvers, options, observer);
     report.optional_memory_used = detail::kept_bytes_of(detail::original_of(solvers));
