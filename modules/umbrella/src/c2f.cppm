@@ -85,6 +85,7 @@ using c2f::FloatValues;
 using c2f::FlowCapacities;
 using c2f::FlowEdge;
 using c2f::FlowNode;
+using c2f::GraphAggregation;
 using c2f::graph_storage;
 using c2f::GraphStorage;
 using c2f::grid_edges;
