@@ -80,9 +80,9 @@ std::optional<SolveCommand> parse_solve_command(int argc, char** argv) {
 Schedule solve_schedule(const SolveCommand& command, const PairwiseEnergy& energy) {
   const std::size_t num_variables = energy.num_variables();
   const int num_labels = energy.num_labels();
-  const std::string& text = command.schedule_text.empty()
-                                ? pairwise_defaults().schedule_for(energy, command.grid.has_value())
-                                : command.schedule_text;
+  const std::string text = command.schedule_text.empty()
+                               ? pairwise_defaults().schedule_for(energy, command.grid.has_value())
+                               : command.schedule_text;
   const Schedule schedule =
       with_flag("--schedule", [&] { return Schedule::parse(text, pairwise_schedule_presets()); });
   if (const std::string problem = schedule.validate(num_labels); !problem.empty())
