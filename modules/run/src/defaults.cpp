@@ -21,7 +21,7 @@ RunConfig RunDefaults::config(bool on_grid) const {
   return config;
 }
 
-const std::string& RunDefaults::schedule_for(const PairwiseEnergy& energy, bool on_grid) const {
+std::string RunDefaults::schedule_for(const PairwiseEnergy& energy, bool on_grid) const {
   if (on_grid) return grid_schedule;
   return !local_schedule.empty() && edges_local(energy) ? local_schedule : general_schedule;
 }

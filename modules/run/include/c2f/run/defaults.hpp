@@ -41,8 +41,9 @@ struct RunDefaults {
 
   /// The schedule text for `energy`: grid_schedule on a pixel grid (on_grid), else
   /// local_schedule (when set) where its edges are local (edges_local), else
-  /// general_schedule. O(E) off a grid.
-  [[nodiscard]] const std::string& schedule_for(const PairwiseEnergy& energy, bool on_grid) const;
+  /// general_schedule. O(E) off a grid. A copy, so that it outlives a temporary RunDefaults
+  /// (pairwise_defaults().schedule_for(...)).
+  [[nodiscard]] std::string schedule_for(const PairwiseEnergy& energy, bool on_grid) const;
   /// grid_near_seeds (when set) on a pixel grid, else near_seeds.
   [[nodiscard]] NearSeeds near_seeds_on(bool on_grid) const {
     return on_grid && grid_near_seeds ? *grid_near_seeds : near_seeds;
