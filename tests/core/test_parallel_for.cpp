@@ -153,3 +153,61 @@ TEST_CASE("parallel_for from inside a task, and from several threads at once, ru
   }
   for (const auto& sum : sums) CHECK(sum == 200 * 45);
 }
+
+TEST_CASE("parallel_for_in_order runs every task once, taking them from one queue in order",
+          "[core][threads]") {
+  const std::vector<std::size_t> order{3, 0, 4, 1, 2};
+  for (const int threads : {1, 2, 3, 8}) {
+    std::vector<std::atomic<int>> runs(order.size());
+    c2f::parallel_for_in_order(
+        order, [&](std::size_t i) { ++runs[i]; }, threads);
+    INFO(threads << " threads");
+    for (const auto& count : runs) CHECK(count == 1);
+  }
+  std::vector<std::size_t> ran;
+  c2f::parallel_for_in_order(
+      order, [&](std::size_t i) { ran.push_back(i); }, 1);  // one thread: in order
+  CHECK(ran == order);
+  c2f::parallel_for_in_order(
+      {}, [](std::size_t) { FAIL("no task to run"); }, 2);
+
+  // Two threads: while one runs the first task (which waits for the rest to be done), the
+  // other takes every later task, in the queue's order.
+  const std::vector<std::size_t> queue{5, 4, 3, 2, 1, 0};
+  std::mutex ran_mutex;
+  std::vector<std::size_t> others;
+  std::atomic<int> done{0};
+  bool long_task_waited = false;
+  c2f::parallel_for_in_order(
+      queue,
+      [&](std::size_t i) {
+        if (i == 5) {  // waits (10 s at most) for the other thread to run the other five
+          const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+          while (done.load() < 5 && std::chrono::steady_clock::now() < give_up)
+            std::this_thread::yield();
+          long_task_waited = done.load() == 5;
+          return;
+        }
+        const std::lock_guard lock(ran_mutex);
+        others.push_back(i);
+        ++done;
+      },
+      2);
+  CHECK(long_task_waited);
+  CHECK(others == std::vector<std::size_t>{4, 3, 2, 1, 0});
+}
+
+TEST_CASE("parallel_for_in_order rethrows the lowest failing task index", "[core][threads]") {
+  std::vector<std::size_t> order(50);
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = order.size() - 1 - j;  // 49 .. 0
+  for (const int threads : {1, 2, 4}) {
+    std::atomic<int> ran{0};
+    const auto task = [&](std::size_t i) {
+      ++ran;
+      if (i == 7 || i == 3 || i == 40) throw std::runtime_error("task " + std::to_string(i));
+    };
+    INFO(threads << " threads");
+    CHECK_THROWS_WITH(c2f::parallel_for_in_order(order, task, threads), "task 3");
+    CHECK(ran == 50);
+  }
+}

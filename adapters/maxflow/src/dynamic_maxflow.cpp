@@ -1,12 +1,14 @@
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -70,6 +72,18 @@ struct Parts {
 
 /// Nodes or edges per task when a pass over them is split among threads (parallel_for_chunks).
 constexpr std::size_t kPassChunk = 16384;
+
+/// Parts 0 .. count - 1 ordered by `seconds` (the last search's), longest first, ties by
+/// number; in number order when `seconds` is not one per part (no search yet).
+std::vector<std::size_t> longest_first(const std::vector<double>& seconds, std::size_t count) {
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (seconds.size() == count) {
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
+  }
+  return order;
+}
 
 /// A bucket sort_by_part's bucket_of returns for an entry that names no node or edge.
 constexpr std::size_t kOutOfRange = std::numeric_limits<std::size_t>::max();
@@ -547,6 +561,10 @@ struct DynamicMaxFlow::Impl {
   /// last are of any part. Empty when `touched` is in no such order.
   std::vector<std::size_t> touched_by_part;
   DynamicSolveStats stats;
+  /// The seconds each part's search took in the last search_in_parts: the next one hands the
+  /// parts to its threads longest first. Only the threads' schedule depends on it, never the
+  /// flow (each part's search reads and writes its own nodes only).
+  std::vector<double> part_seconds;
 
   Impl() = default;
   /// A copy with the same flow and trees (the graph arrays on huge pages where possible, their
@@ -563,7 +581,8 @@ struct DynamicMaxFlow::Impl {
         orphans(other.orphans),
         touched(other.touched),
         touched_by_part(other.touched_by_part),
-        stats(other.stats) {
+        stats(other.stats),
+        part_seconds(other.part_seconds) {
     assign_huge(nodes, other.nodes, threads);
     assign_huge(residual, other.residual, threads);
     orphans.reserve(num_nodes);
@@ -708,9 +727,12 @@ struct DynamicMaxFlow::Impl {
     };
     std::vector<PartSearch> searches(parts->count);
     const Index start = time + 1;  // later than every stamp
-    parallel_for(
-        parts->count,
+    const std::vector<std::size_t> order = longest_first(part_seconds, parts->count);
+    part_seconds.assign(parts->count, 0.0);
+    parallel_for_in_order(
+        order,
         [&](std::size_t k) {
+          const auto began = std::chrono::steady_clock::now();
           PartSearch& own = searches[k];
           own.time = start;
           Search s{nodes.data(),
@@ -736,6 +758,8 @@ struct DynamicMaxFlow::Impl {
           prepare(s, k);
           s.adopt_orphans();
           s.run();
+          part_seconds[k] =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         },
         threads);
     time = start;

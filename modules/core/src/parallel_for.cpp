@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <exception>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -187,6 +188,28 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
           const std::lock_guard lock(failure_mutex);
           if (i < failed_index) failed_index = i, failure = std::current_exception();
         }
+      }
+    }
+  };
+  run_with_helpers(workers > 0 ? workers - 1 : 0, work);  // none for one worker: in order, here
+  if (failure) std::rethrow_exception(failure);
+}
+
+void parallel_for_in_order(std::span<const std::size_t> order,
+                           const std::function<void(std::size_t)>& task, int threads) {
+  const std::size_t workers = std::min<std::size_t>(resolved_threads(threads), order.size());
+  std::mutex failure_mutex;
+  std::exception_ptr failure;
+  std::size_t failed_index = 0;
+  std::atomic<std::size_t> next{0};  // the queue's front
+  const std::function<void(std::size_t)> work = [&](std::size_t) {
+    for (std::size_t j; (j = next.fetch_add(1)) < order.size();) {
+      try {
+        task(order[j]);
+      } catch (...) {
+        const std::lock_guard lock(failure_mutex);
+        if (!failure || order[j] < failed_index)
+          failed_index = order[j], failure = std::current_exception();
       }
     }
   };

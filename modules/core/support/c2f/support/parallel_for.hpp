@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <functional>
 #include <latch>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -40,6 +41,16 @@ struct alignas(kCacheLineBytes) OnOwnLine {
 /// Rethrows the exception of the lowest index that threw, after every thread has ended (the
 /// other tasks still run).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads);
+
+/// Calls task(order[j]) for every j < order.size(), each once, on up to
+/// min(resolved_threads(threads), order.size()) threads (the calling thread among them; 1: all in
+/// the calling thread, in `order`). The threads take the entries from one queue, in `order`, each
+/// the next as soon as it is free: given the tasks longest first, the threads end close together
+/// (list scheduling), where parallel_for's fixed runs could leave the long ones to one thread.
+/// For tasks whose results do not depend on which thread runs them, so the order may come
+/// from anything, timings included. Failures as parallel_for, the lowest task index first.
+void parallel_for_in_order(std::span<const std::size_t> order,
+                           const std::function<void(std::size_t)>& task, int threads);
 
 /// Calls task(c, first, last) for every chunk c = [first, last) of [0, count), cut into chunks
 /// of `chunk` indices (the last shorter; they depend on count and chunk only), each once, on
