@@ -73,15 +73,13 @@ struct Parts {
 /// Nodes or edges per task when a pass over them is split among threads (parallel_for_chunks).
 constexpr std::size_t kPassChunk = 16384;
 
-/// Parts 0 .. count - 1 ordered by `seconds` (the last search's), longest first, ties by
-/// number; in number order when `seconds` is not one per part (no search yet).
-std::vector<std::size_t> longest_first(const std::vector<double>& seconds, std::size_t count) {
-  std::vector<std::size_t> order(count);
+/// The parts' numbers ordered by `seconds` (each part's last search), longest first, ties by
+/// number.
+std::vector<std::size_t> longest_first(const std::vector<double>& seconds) {
+  std::vector<std::size_t> order(seconds.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  if (seconds.size() == count) {
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
-  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
   return order;
 }
 
@@ -561,9 +559,9 @@ struct DynamicMaxFlow::Impl {
   /// last are of any part. Empty when `touched` is in no such order.
   std::vector<std::size_t> touched_by_part;
   DynamicSolveStats stats;
-  /// The seconds each part's search took in the last search_in_parts: the next one hands the
-  /// parts to its threads longest first. Only the threads' schedule depends on it, never the
-  /// flow (each part's search reads and writes its own nodes only).
+  /// The seconds each part's search took in the last search_in_parts (empty before one): the
+  /// next one hands the parts to its threads longest first. Only the threads' schedule depends
+  /// on it, never the flow (each part's search reads and writes its own nodes only).
   std::vector<double> part_seconds;
 
   Impl() = default;
@@ -727,41 +725,48 @@ struct DynamicMaxFlow::Impl {
     };
     std::vector<PartSearch> searches(parts->count);
     const Index start = time + 1;  // later than every stamp
-    const std::vector<std::size_t> order = longest_first(part_seconds, parts->count);
+    // With the parts' times of a search before (a re-solve, or a copy's first), the threads
+    // take the parts longest first; else (a fresh graph) each starts on its own half of them,
+    // whose nodes the passes before (load_zero_flow, by chunks) left in its core's caches.
+    const bool timed_before = part_seconds.size() == parts->count;
+    const std::vector<std::size_t> order =
+        timed_before ? longest_first(part_seconds) : std::vector<std::size_t>{};
     part_seconds.assign(parts->count, 0.0);
-    parallel_for_in_order(
-        order,
-        [&](std::size_t k) {
-          const auto began = std::chrono::steady_clock::now();
-          PartSearch& own = searches[k];
-          own.time = start;
-          Search s{nodes.data(),
-                   residual.data(),
-                   t,
-                   own.time,
-                   own.first_active,
-                   own.last_active,
-                   own.orphans,
-                   own.augmentations,
-                   own.arcs_scanned,
-                   part.data(),
-                   static_cast<std::uint8_t>(k)};
-          for (const std::size_t e : between) {
-            // A node's parent arc leads from it to its parent.
-            const Index forward = t.forward_arc[e];
-            const Index backward = t.sister[forward];
-            const Index from = t.head[backward];
-            const Index to = t.head[forward];
-            if (part[from] == k && nodes[from].parent == forward) s.make_orphan(from);
-            if (part[to] == k && nodes[to].parent == backward) s.make_orphan(to);
-          }
-          prepare(s, k);
-          s.adopt_orphans();
-          s.run();
-          part_seconds[k] =
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-        },
-        threads);
+    const auto search_part = [&](std::size_t k) {
+      const auto began = std::chrono::steady_clock::now();
+      PartSearch& own = searches[k];
+      own.time = start;
+      Search s{nodes.data(),
+               residual.data(),
+               t,
+               own.time,
+               own.first_active,
+               own.last_active,
+               own.orphans,
+               own.augmentations,
+               own.arcs_scanned,
+               part.data(),
+               static_cast<std::uint8_t>(k)};
+      for (const std::size_t e : between) {
+        // A node's parent arc leads from it to its parent.
+        const Index forward = t.forward_arc[e];
+        const Index backward = t.sister[forward];
+        const Index from = t.head[backward];
+        const Index to = t.head[forward];
+        if (part[from] == k && nodes[from].parent == forward) s.make_orphan(from);
+        if (part[to] == k && nodes[to].parent == backward) s.make_orphan(to);
+      }
+      prepare(s, k);
+      s.adopt_orphans();
+      s.run();
+      part_seconds[k] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    };
+    if (timed_before) {
+      parallel_for_in_order(order, search_part, threads);
+    } else {
+      parallel_for(parts->count, search_part, threads);
+    }
     time = start;
     for (const PartSearch& own : searches) {
       time = std::max(time, own.time);

@@ -20,6 +20,11 @@ namespace {
 /// sums on nothing else, so the partitions are the same for every thread count.
 constexpr std::size_t kVariablesPerTask = 4096;
 
+/// Rows whose horizontal window sums a grid's sliding window holds at once (they are summed at
+/// once, one row per task), and columns per task as the window slides over them.
+constexpr std::size_t kRowsPerBatch = 8;
+constexpr std::size_t kColumnsPerTask = 64;
+
 /// Row y's horizontal window sums, label-minor: out[x * L + l] = sum over x' in
 /// [x - radius, x + radius] (clipped) of unary(y * width + x', l). O(width * L) whatever the
 /// radius: differences of prefix sums (`prefix` is scratch).
@@ -45,33 +50,76 @@ void row_window_sums(const LiftingView& view, GridShape shape, std::size_t y, st
 
 }  // namespace
 
-DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius) {
+DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius,
+                                      int threads) {
   require_grid_size(view.num_variables, shape, "aggregated_best_labels");
   if (radius < 0) throw std::invalid_argument("aggregated_best_labels: radius must be >= 0");
   const std::size_t w = shape.width, h = shape.height;
   const auto L = static_cast<std::size_t>(view.num_labels);
   const auto r = static_cast<std::size_t>(radius);
   // The window's sums slide down the grid: a row's horizontal sums are added as the row enters
-  // the window and computed again and subtracted as it leaves.
-  std::vector<double> window(w * L, 0.0), sums, prefix;
+  // the window and computed again and subtracted as it leaves, and each row of the grid takes
+  // its least labels once the window is at it. Those steps are queued in order and run by
+  // batches: the horizontal sums of a batch's rows at once, one row per task, then every step of
+  // the batch on each chunk of columns at once. Each column's sums see the same additions and
+  // subtractions in the same order as one thread sliding alone, so the bits do not depend on
+  // the threads.
+  struct SlideStep {
+    enum class Kind { enter, leave, best } kind;
+    std::size_t row;   // the row entering or leaving, or the row taking its least labels
+    std::size_t slot;  // enter, leave: where the row's horizontal sums are
+  };
+  std::vector<SlideStep> batch;
+  std::vector<std::size_t> slot_rows;  // per slot, the row whose sums it holds
+  std::vector<std::vector<double>> prefix(kRowsPerBatch), sums(kRowsPerBatch);
+  std::vector<double> window(w * L, 0.0);
   std::vector<std::int64_t> best(shape.size());
+  const auto run_batch = [&] {
+    parallel_for(
+        slot_rows.size(),
+        [&](std::size_t slot) {
+          row_window_sums(view, shape, slot_rows[slot], r, prefix[slot], sums[slot]);
+        },
+        threads);
+    parallel_for_chunks(
+        w, kColumnsPerTask,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          double* const columns = window.data() + first * L;
+          const std::size_t count = (last - first) * L;
+          for (const SlideStep& step : batch) {
+            if (step.kind == SlideStep::Kind::best) {
+              for (std::size_t x = first; x < last; ++x) {
+                const double* costs = window.data() + x * L;  // ties: the smallest label
+                best[step.row * w + x] = std::min_element(costs, costs + L) - costs;
+              }
+              continue;
+            }
+            const double* row = sums[step.slot].data() + first * L;
+            if (step.kind == SlideStep::Kind::enter) {
+              for (std::size_t k = 0; k < count; ++k) columns[k] += row[k];
+            } else {
+              for (std::size_t k = 0; k < count; ++k) columns[k] -= row[k];
+            }
+          }
+        },
+        threads);
+    batch.clear();
+    slot_rows.clear();
+  };
+  const auto queue_row = [&](SlideStep::Kind kind, std::size_t row) {
+    if (slot_rows.size() == kRowsPerBatch) run_batch();
+    batch.push_back({kind, row, slot_rows.size()});
+    slot_rows.push_back(row);
+  };
   std::size_t entered = 0, left = 0;  // rows [left, entered) are in the window
   for (std::size_t y = 0; y < h; ++y) {
     const std::size_t first = y >= r ? y - r : 0;
     const std::size_t end = std::min(h, y + 1 + std::min(r, h));
-    for (; entered < end; ++entered) {
-      row_window_sums(view, shape, entered, r, prefix, sums);
-      for (std::size_t k = 0; k < window.size(); ++k) window[k] += sums[k];
-    }
-    for (; left < first; ++left) {
-      row_window_sums(view, shape, left, r, prefix, sums);
-      for (std::size_t k = 0; k < window.size(); ++k) window[k] -= sums[k];
-    }
-    for (std::size_t x = 0; x < w; ++x) {
-      const double* costs = window.data() + x * L;
-      best[y * w + x] = std::min_element(costs, costs + L) - costs;  // ties: the smallest label
-    }
+    for (; entered < end; ++entered) queue_row(SlideStep::Kind::enter, entered);
+    for (; left < first; ++left) queue_row(SlideStep::Kind::leave, left);
+    batch.push_back({SlideStep::Kind::best, y, 0});
   }
+  run_batch();
   return DensePartition::from_ids(best);
 }
 

@@ -84,7 +84,7 @@ DensePartition LevelBuilder::build_groups(const LevelSpec& spec, const LiftingVi
   if (const auto* threshold = std::get_if<ThresholdLevel>(&spec.partition))
     return threshold_partition(view, grid_of(spec), threshold->tau, threshold->radius);
   if (const auto* aggregated = std::get_if<AggregatedLevel>(&spec.partition)) {
-    return shape_ ? aggregated_best_labels(view, *shape_, aggregated->radius)
+    return shape_ ? aggregated_best_labels(view, *shape_, aggregated->radius, threads_)
                   : aggregated_best_labels(view, aggregated->radius, threads_);
   }
   if (const auto* blocks = std::get_if<BlockLevel>(&spec.partition))

@@ -20,10 +20,13 @@ namespace c2f {
 /// centred on v, clipped at the grid's border (ties: the smallest label). Groups are numbered
 /// in the order of their smallest pixel; they need not be connected (add /cc in a schedule, or
 /// connected_components()). radius 0: pixels share a group when their own cheapest labels are
-/// equal. O(N * L) time whatever the radius, O(width * L) extra memory: the sums slide across
-/// the grid, so they are exact up to rounding, and rounding may break near-ties. Throws
-/// std::invalid_argument when the view does not have width * height variables or radius < 0.
-DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius);
+/// equal. O(N * L) time whatever the radius, O(width * L) extra memory (17 rows' worth): the
+/// sums slide down the grid, so they are exact up to rounding, and rounding may break
+/// near-ties. The rows' sums and the columns are split among up to `threads` threads (0: the
+/// machine's cores), with the same bits for every count. Throws std::invalid_argument when the
+/// view does not have width * height variables or radius < 0.
+DensePartition aggregated_best_labels(const LiftingView& view, GridShape shape, int radius,
+                                      int threads = 1);
 
 /// The same on the graph of the view's factors, for an energy that is no pixel grid: the costs
 /// are summed `radius` times over graph neighbourhoods, s_0 = unary and s_{k+1}(v) = s_k(v) +
