@@ -145,9 +145,10 @@ TEST_CASE("the benchmark scripts print their usage and refuse a missing data fol
           "[bench][cli][malformed]") {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "c2f-test-scripts";
   std::filesystem::remove_all(out);
-  for (const char* script : {"bench/solvers/run-backends", "bench/stereo/run-middlebury",
-                             "bench/stereo/run-scaling", "bench/segment/run-coopcuts",
-                             "bench/segment/run-kmeans-seeds", "bench/segment/run-crossval"}) {
+  for (const char* script :
+       {"bench/solvers/run-backends", "bench/stereo/run-middlebury", "bench/stereo/run-scaling",
+        "bench/stereo/run-threads", "bench/segment/run-coopcuts", "bench/segment/run-kmeans-seeds",
+        "bench/segment/run-crossval"}) {
     const std::string path = std::string(C2F_SOURCE_DIR) + "/" + script;
     const auto help = c2f::test::run_tool(path, "--help");
     INFO(script << "\n" << help.output);
