@@ -8,7 +8,7 @@ void write_run_report(std::ostream& out, std::span<const LevelReport> levels,
                       const Summary& summary, const InterruptWatch& interrupts) {
   for (const LevelReport& level : levels) {
     out << "partition " << level.level << ": " << level.num_groups << " groups in " << level.seconds
-        << " s\n";
+        << " s on " << level.threads << (level.threads == 1 ? " thread\n" : " threads\n");
   }
   out << summary.report() << "observer (trace, progress): " << summary.observer_seconds
       << " s off the run clock\n";

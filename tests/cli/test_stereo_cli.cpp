@@ -242,8 +242,9 @@ TEST_CASE("c2f-stereo --schedule aggregated solves on a level of aggregated best
   std::filesystem::remove_all(dir);
   c2f::test::write_synthetic_pair(dir, 48, 32, 2, 6, 7);
   const auto out = dir / "out";
-  const auto r = run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " +
-                     out.string() + " --labels 8 --schedule aggregated --near-radius 2 -q");
+  const auto r =
+      run((dir / "left.png").string() + " " + (dir / "right.png").string() + " -o " + out.string() +
+          " --labels 8 --schedule aggregated --near-radius 2 -q" + " --threads 2");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   std::ifstream summary(out / "summary.txt");
@@ -257,6 +258,8 @@ TEST_CASE("c2f-stereo --schedule aggregated solves on a level of aggregated best
   const long groups = std::stol(text.str().substr(at + groups_line.size()));
   CHECK(groups > 0);
   CHECK(groups < 48 * 32);
+  const std::string line = text.str().substr(at, text.str().find('\n', at) - at);
+  CHECK_THAT(line, Catch::EndsWith(" s on 2 threads"));  // the level's threads (--threads)
   CHECK_THAT(text.str(), Catch::Contains("level 1: 1536 variables"));
 }
 

@@ -119,9 +119,9 @@ TEST_CASE("aggregated best labels on a grid are the same bits on any number of t
     for (int l = 0; l < labels; ++l) unaries[v * labels + l] = cost(rng);
     if (rng() % 50 == 0) unaries[v * labels] = 1e17;
   }
-  const PairwiseEnergy energy = make_grid_energy(
-      shape, Connectivity::four, labels, std::move(unaries), PairwiseTerm::potts(),
-      [](VariableIndex, VariableIndex) { return 1.0; });
+  const PairwiseEnergy energy =
+      make_grid_energy(shape, Connectivity::four, labels, std::move(unaries), PairwiseTerm::potts(),
+                       [](VariableIndex, VariableIndex) { return 1.0; });
   const LiftingView view = lifting_view(energy);
   for (const int radius : {0, 1, 2, 9}) {
     INFO("radius " << radius);
@@ -151,6 +151,14 @@ TEST_CASE("agg levels parse, print and build through the schedule",
   REQUIRE(level);
   CHECK(*level ==
         connected_components(aggregated_best_labels(lifting_view(energy), shape, 1), shape));
+  CHECK(provider.reports().back().threads == 1);
+  // The threads set are those an agg level reports; a level built on one thread reports 1.
+  ScheduleProvider on_two(Schedule::parse("agg:1/cc cp:1,1"), shape);
+  on_two.set_threads(2);
+  REQUIRE(on_two.next(energy) == level);
+  REQUIRE(on_two.next(energy));
+  CHECK(on_two.reports()[0].threads == 2);
+  CHECK(on_two.reports()[1].threads == 1);
 }
 
 TEST_CASE("aggregated best labels on a graph sum over neighbourhoods",

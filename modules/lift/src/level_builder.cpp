@@ -11,6 +11,7 @@
 #include "c2f/lift/connected_components.hpp"
 #include "c2f/lift/local_grouping.hpp"
 #include "c2f/lift/threshold_partition.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 namespace c2f::detail {
 
@@ -33,6 +34,11 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
   }
   last_built_ = spec;
   return build_one(spec, view, previous);
+}
+
+unsigned LevelBuilder::last_threads() const noexcept {
+  return std::holds_alternative<AggregatedLevel>(last_built_.partition) ? resolved_threads(threads_)
+                                                                        : 1;
 }
 
 DensePartition LevelBuilder::build_one(const LevelSpec& spec, const LiftingView& view,

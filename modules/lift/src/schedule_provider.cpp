@@ -79,7 +79,8 @@ std::optional<DensePartition> ScheduleProvider::next(const LiftingView& energy) 
   if (built != spec) text += " (" + spec.to_string() + ")";
   reports_.push_back(
       {std::move(text), partition.num_groups(),
-       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+       builder_->last_threads()});
   previous_ = partition;
   return partition;
 }

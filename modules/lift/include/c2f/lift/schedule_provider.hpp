@@ -26,6 +26,7 @@ struct LevelReport {
   std::string level;
   std::size_t num_groups;  ///< groups of the partition produced
   double seconds;          ///< time to build it
+  unsigned threads = 1;    ///< threads it was built on (set_threads: agg levels; 1 for others)
 };
 
 /// Builds SLIC superpixels for a region size (supplied by the vision module, which owns the
@@ -91,7 +92,7 @@ class ScheduleProvider {
     return partition;
   }
 
-  /// Builds the levels that can be split among threads (agg levels off a grid) on up to
+  /// Builds the levels that can be split among threads (agg levels) on up to
   /// `threads` threads (0: the machine's cores; 1 until set); the partitions are the same for
   /// every count. run() sets the solve's threads.
   void set_threads(int threads) noexcept;
