@@ -89,8 +89,12 @@ TEST_CASE("parallel_for starts each thread on its own run of indices, the caller
   CHECK(others_ran);
 }
 
-TEST_CASE("parallel_for rethrows the lowest failing index after every task ran",
-          "[core][threads]") {
+TEST_CASE(
+    "parallel_for and parallel_for_in_order rethrow the lowest failing index after every "
+    "task ran",
+    "[core][threads]") {
+  std::vector<std::size_t> order(50);  // 49 .. 0: the lowest index fails last in the queue
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = order.size() - 1 - j;
   for (const int threads : {1, 2, 4}) {
     std::atomic<int> ran{0};
     const auto task = [&](std::size_t i) {
@@ -99,6 +103,9 @@ TEST_CASE("parallel_for rethrows the lowest failing index after every task ran",
     };
     INFO(threads << " threads");
     CHECK_THROWS_WITH(parallel_for(50, task, threads), "task 3");
+    CHECK(ran == 50);
+    ran = 0;
+    CHECK_THROWS_WITH(c2f::parallel_for_in_order(order, task, threads), "task 3");
     CHECK(ran == 50);
   }
 }
@@ -195,19 +202,4 @@ TEST_CASE("parallel_for_in_order runs every task once, taking them from one queu
       2);
   CHECK(long_task_waited);
   CHECK(others == std::vector<std::size_t>{4, 3, 2, 1, 0});
-}
-
-TEST_CASE("parallel_for_in_order rethrows the lowest failing task index", "[core][threads]") {
-  std::vector<std::size_t> order(50);
-  for (std::size_t j = 0; j < order.size(); ++j) order[j] = order.size() - 1 - j;  // 49 .. 0
-  for (const int threads : {1, 2, 4}) {
-    std::atomic<int> ran{0};
-    const auto task = [&](std::size_t i) {
-      ++ran;
-      if (i == 7 || i == 3 || i == 40) throw std::runtime_error("task " + std::to_string(i));
-    };
-    INFO(threads << " threads");
-    CHECK_THROWS_WITH(c2f::parallel_for_in_order(order, task, threads), "task 3");
-    CHECK(ran == 50);
-  }
 }

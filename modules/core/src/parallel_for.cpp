@@ -157,6 +157,26 @@ struct alignas(kCacheLineBytes) OwnedIndices {
   std::size_t end;
 };
 
+/// The failure of the lowest task index among the tasks of one call that threw, kept while the
+/// others run (tasks on several threads record at once).
+class LowestFailure {
+ public:
+  /// Keeps the exception being handled when `index` is below every index recorded so far.
+  void record(std::size_t index) {
+    const std::lock_guard lock(mutex_);
+    if (!failure_ || index < index_) index_ = index, failure_ = std::current_exception();
+  }
+  /// Rethrows the kept exception, if any.
+  void rethrow_if_any() const {
+    if (failure_) std::rethrow_exception(failure_);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::exception_ptr failure_;
+  std::size_t index_ = 0;
+};
+
 }  // namespace
 
 unsigned resolved_threads(int requested) noexcept {
@@ -167,9 +187,7 @@ unsigned resolved_threads(int requested) noexcept {
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task, int threads) {
   const std::size_t workers = std::min<std::size_t>(resolved_threads(threads), count);
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  std::size_t failed_index = count;
+  LowestFailure failure;
   // Worker w owns the w-th of `workers` equal runs of indices: passes over the same ranges of
   // data (bands of variables, parts of a graph) then find it on the thread that touched it
   // last, in that core's caches. A worker done with its own takes what is left of the others'.
@@ -185,36 +203,31 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
         try {
           task(i);
         } catch (...) {
-          const std::lock_guard lock(failure_mutex);
-          if (i < failed_index) failed_index = i, failure = std::current_exception();
+          failure.record(i);
         }
       }
     }
   };
   run_with_helpers(workers > 0 ? workers - 1 : 0, work);  // none for one worker: in order, here
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow_if_any();
 }
 
 void parallel_for_in_order(std::span<const std::size_t> order,
                            const std::function<void(std::size_t)>& task, int threads) {
   const std::size_t workers = std::min<std::size_t>(resolved_threads(threads), order.size());
-  std::mutex failure_mutex;
-  std::exception_ptr failure;
-  std::size_t failed_index = 0;
+  LowestFailure failure;
   std::atomic<std::size_t> next{0};  // the queue's front
   const std::function<void(std::size_t)> work = [&](std::size_t) {
     for (std::size_t j; (j = next.fetch_add(1)) < order.size();) {
       try {
         task(order[j]);
       } catch (...) {
-        const std::lock_guard lock(failure_mutex);
-        if (!failure || order[j] < failed_index)
-          failed_index = order[j], failure = std::current_exception();
+        failure.record(order[j]);
       }
     }
   };
   run_with_helpers(workers > 0 ? workers - 1 : 0, work);  // none for one worker: in order, here
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow_if_any();
 }
 
 void parallel_for_chunks(std::size_t count, std::size_t chunk,
