@@ -3,7 +3,8 @@
 piecewise-constant images). The instances of seed 3 (marked *) are the aside set, fixed by
 this names-only rule before any run; seeds 1 and 2 are the tuning set. Per instance and schedule:
 the time to come within 1e-4 of flat's final energy over flat's time to converge, and the final
-energy relative to flat's. How pairwise_defaults() was chosen (docs/results.md, "Defaults").
+energy relative to flat's. How pairwise_defaults() was chosen: docs/history/results-2026-12.md,
+"How the defaults were chosen".
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/pairwise_defaults.py \
         'agg:2/cc|cp:1,1|paper' [PLATEAU_TOLERANCE]

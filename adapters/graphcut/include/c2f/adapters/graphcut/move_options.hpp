@@ -118,7 +118,8 @@ struct ExpansionOptions : MoveOptions {
   /// on any other energy every move is a whole move. On a random graph r rounds of neighbours
   /// reach nearly every variable, so a near move is a whole move on a graph built afresh:
   /// random graphs took 1.95-2.01x flat's time to its energy with near moves from their label
-  /// against 1.02-1.11x with whole moves, while lattices gained (docs/results.md, "Defaults").
+  /// against 1.02-1.11x with whole moves, while lattices gained (docs/history/results-2026-12.md,
+  /// "How the defaults were chosen").
   bool near_moves_only_if_local = false;
   /// With near_radius > 0: make near moves only on an energy of at least this many variables
   /// (0: any size), decided when the solver is bound; on a smaller one every move is a whole
