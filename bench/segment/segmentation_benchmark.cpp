@@ -117,10 +117,10 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   std::ofstream file = open_trace_file(trace_path);
   const auto error = pixel_error_function(scene);
   TraceWriter writer(file, error);
+  Labeling ground;
   const Observer observer = [&](const StepEvent& event) {
     writer(event);
-    const Labeling ground = event.ground_labeling();
-    run.trace.push_back({event.time_s, event.energy, error(ground)});
+    run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling(ground))});
     return ObserverDecision::continue_run;
   };
   run.summary = run_segmentation(problem, levels, run_config, observer).summary;

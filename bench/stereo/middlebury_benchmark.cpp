@@ -168,10 +168,11 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   std::ofstream file = open_trace_file(trace_path);
   TraceWriter writer(file);
   const auto error = bad_pixel_error(scene);
+  Labeling ground;
   run.summary =
       run_stereo(problem, parse_stereo_schedule(schedule), config, [&](const StepEvent& event) {
         writer(event);
-        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling())});
+        run.trace.push_back({event.time_s, event.energy, error(event.ground_labeling(ground))});
         return ObserverDecision::continue_run;
       }).run.summary;
   close_checked(file, trace_path);

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -68,10 +69,16 @@ TEST_CASE("coarse-to-fine with ICM: energies never increase and the summary is e
     options.plateau_steps = {std::uniform_int_distribution<int>(1, 3)(rng)};
     options.max_steps_per_level = 50;
     Recorded recorded;
+    Labeling scratch;
     const Summary summary =
         coarse_to_fine(energy, levels, solver, options, [&](const StepEvent& event) {
           recorded.events.push_back(event);
-          recorded.ground_energies.push_back(energy.evaluate(event.ground_labeling()));
+          const Labeling ground = event.ground_labeling();
+          recorded.ground_energies.push_back(energy.evaluate(ground));
+          // Without an allocation: the same labeling, the level's own on the original level.
+          const std::span<const Label> kept = event.ground_labeling(scratch);
+          CHECK(std::equal(kept.begin(), kept.end(), ground.begin(), ground.end()));
+          CHECK((kept.data() == event.level_labeling.data()) == event.group_of.empty());
           return ObserverDecision::continue_run;
         });
     INFO("trial " << trial);

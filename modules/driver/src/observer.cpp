@@ -9,6 +9,13 @@ Labeling StepEvent::ground_labeling() const {
   return ground;
 }
 
+std::span<const Label> StepEvent::ground_labeling(Labeling& scratch) const {
+  if (group_of.empty()) return level_labeling;
+  scratch.resize(group_of.size());
+  for (std::size_t v = 0; v < group_of.size(); ++v) scratch[v] = level_labeling[group_of[v]];
+  return scratch;
+}
+
 Observer observe_all(std::vector<Observer> observers) {
   return [observers = std::move(observers)](const StepEvent& event) {
     ObserverDecision decision = ObserverDecision::continue_run;

@@ -25,8 +25,7 @@ ObserverDecision TraceWriter::operator()(const StepEvent& event) {
   *out_ << c_format("%.6f,%d,%ld,%.17g,%zu", event.time_s, event.level, event.step, event.energy,
                     event.num_variables);
   if (error_) {
-    const Labeling ground = event.ground_labeling();
-    *out_ << c_format(",%.9g", error_(ground));
+    *out_ << c_format(",%.9g", error_(event.ground_labeling(ground_)));
   }
   *out_ << '\n';
   if (!*out_) throw std::runtime_error("writing a row of " + name_ + " failed");

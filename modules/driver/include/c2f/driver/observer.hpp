@@ -32,6 +32,11 @@ struct StepEvent {
 
   /// The labeling of the original variables that this step's labeling stands for. O(N).
   [[nodiscard]] Labeling ground_labeling() const;
+  /// The same labeling without a new allocation: level_labeling itself on the original level,
+  /// else `scratch` resized to the original variables and filled (O(N)). The span is valid
+  /// while this event's labeling and `scratch` are; an observer called every step keeps its
+  /// scratch between calls.
+  [[nodiscard]] std::span<const Label> ground_labeling(Labeling& scratch) const;
 };
 
 enum class ObserverDecision { continue_run, stop };

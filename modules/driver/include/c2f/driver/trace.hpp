@@ -27,6 +27,7 @@ class TraceWriter {
   std::ostream* out_;
   ErrorFunction error_;
   std::string name_;
+  Labeling ground_;  // a coarse level's ground labeling, its memory kept from row to row
 };
 
 /// Opens `path` for writing a trace; throws std::runtime_error naming the path on failure.
