@@ -4,7 +4,7 @@
 //   c2f-bench-segment run SET NAME [--data DIR] [--out DIR] [--time-limit S] [--header]
 //                     [--configs A,B,...] [--lambda X] [--theta X] [--alpha X]
 //                     [--classes K] [--kmeans reference|plusplus] [--gmm-seed S] [--edge-seed S]
-//                     [--memory GIB] [--expansion-cycles N]
+//                     [--memory GIB] [--expansion-cycles N] [--near-radius R]
 //       SET is multilabel (coopcuts/runMultilabel, labels from the GT) or binary
 //       (coopcuts/runBinary/dataset). Builds the energies of image NAME once, then runs every
 //       configuration below in this process, each from scratch with its own clock (partitions
@@ -21,7 +21,9 @@
 // reference C2F-CoGC: paper levels, refinement after L trials without decrease),
 // c2f-paper-greedy-current, c2f-sweep-greedy-current (paper levels left only after a whole sweep
 // of flips without decrease), c2f-slic-greedy-current and c2f-slic-greedy-zero (slic:16 slic:8,
-// whole sweeps), c2f-paper-mm, c2f-slic-mm (the default superpixels preset). Every coarse-to-fine
+// whole sweeps), c2f-paper-mm, c2f-slic-mm (the default superpixels preset); flat-mm-near and
+// c2f-slic-mm-near, the same with near moves of --near-radius (default 12) on the original
+// problem (CoopSolverOptions::near_radius; opt-in, measured in docs/segmentation.md). Every coarse-to-fine
 // configuration is compared with the flat run of the same solver: the time it takes to reach that
 // run's final energy, as a fraction of that run's time, and the mean pixel error at 20 deadlines
 // drawn uniformly (fixed seed) in [0, the slower run's time]. On the original problem every run
@@ -70,7 +72,18 @@ struct Config {
   std::string schedule = "flat";
   bool sweep_plateau = false;  ///< coarse levels left after a whole sweep, not after L steps
   std::string flat;            ///< the flat configuration this one is compared with
+  bool near = false;  ///< near moves on the original problem (--near-radius)
 };
+
+/// The options every configuration's cooperative-cut solver takes from the command line.
+struct SolverFlags {
+  int expansion_cycles = CoopSolverOptions{}.expansion_cycles;
+  int near_radius = 12;  ///< CoopSolverOptions::near_radius of the configurations that say near
+};
+
+/// The near moves' floor: the original problems hold 65000 pixels or more, the superpixel levels
+/// a few thousand groups.
+constexpr std::size_t kNearMovesMinVariables = 20000;
 
 const std::vector<Config>& configs() {
   static const std::vector<Config> all{
@@ -93,12 +106,15 @@ const std::vector<Config>& configs() {
       {"c2f-paper-mm", false, AuxStrategy::mm, ExpansionStart::zero, "paper", false, "flat-mm"},
       {"c2f-slic-mm", false, AuxStrategy::mm, ExpansionStart::zero, "superpixels", false,
        "flat-mm"},
+      {"flat-mm-near", false, AuxStrategy::mm, ExpansionStart::zero, "flat", false, "", true},
+      {"c2f-slic-mm-near", false, AuxStrategy::mm, ExpansionStart::zero, "superpixels", false,
+       "flat-mm-near", true},
   };
   return all;
 }
 
 Run solve(const Config& config, const SegmentationScene& scene, const SegmentationProblem& problem,
-          double time_limit, int expansion_cycles, const MemoryBudget& memory,
+          double time_limit, const SolverFlags& flags, const MemoryBudget& memory,
           const std::string& trace_path) {
   const Schedule schedule = parse_segmentation_schedule(config.schedule, scene.num_labels());
   ScheduleProvider levels = segmentation_levels(schedule, scene);
@@ -109,7 +125,12 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   run_config.method = config.potts ? SegmentationMethod::potts : SegmentationMethod::coop;
   run_config.coop.strategy = config.strategy;
   run_config.coop.start = config.start;
-  run_config.coop.expansion_cycles = expansion_cycles;
+  run_config.coop.expansion_cycles = flags.expansion_cycles;
+  if (config.near) {
+    // On the original problem only: the superpixel levels hold a few thousand variables.
+    run_config.coop.near_radius = flags.near_radius;
+    run_config.coop.near_moves_min_variables = kNearMovesMinVariables;
+  }
   run_config.plateau = config.sweep_plateau ? -1 : 0;
   run_config.time_limit_seconds = time_limit;
   run_config.memory = memory;
@@ -147,7 +168,7 @@ const char* kColumns[] = {"image",
 int run_image(const std::string& set, const std::string& name, const std::string& data,
               const std::string& out, double time_limit, bool header,
               const std::vector<std::string>& selected, const CoopParameters& parameters,
-              const DataPreparation& preparation, int expansion_cycles,
+              const DataPreparation& preparation, const SolverFlags& flags,
               const MemoryBudget& memory) {
   const SegmentationScene scene = load_segmentation_scene(bench::coopcuts_files(data, set, name));
   memory.require("segmenting " + set + "/" + name,
@@ -178,7 +199,7 @@ int run_image(const std::string& set, const std::string& name, const std::string
                                   ", which is not in the list");
     }
     std::fprintf(stderr, "c2f-bench-segment: %s %s\n", name.c_str(), config.name.c_str());
-    Run run = solve(config, scene, problem, time_limit, expansion_cycles, memory,
+    Run run = solve(config, scene, problem, time_limit, flags, memory,
                     (output.staging() / (name + "-" + config.name + ".csv")).string());
     double reach = std::nan(""), ratio = std::nan(""), flat_error = std::nan(""),
            c2f_error = std::nan("");
@@ -289,7 +310,7 @@ int main(int argc, char** argv) {
     double time_limit = 600;
     bool header = false;
     double memory_gib = 0.0;  // 0: default_memory_budget()
-    int expansion_cycles = CoopSolverOptions{}.expansion_cycles;
+    SolverFlags flags;
     CoopParameters parameters;
     c2f::examples::PreparationFlags preparation;
     c2f::examples::ToolOptions options(
@@ -303,9 +324,12 @@ int main(int argc, char** argv) {
         .real("memory", &memory_gib, {0.0, 1e6, false},
               "the memory budget in GiB, as c2f-segment --memory (0, the default: a quarter of "
               "this machine's memory, growing to a run's needs up to half)")
-        .integer("expansion-cycles", &expansion_cycles, {0, 1000},
+        .integer("expansion-cycles", &flags.expansion_cycles, {0, 1000},
                  "most alpha-expansion cycles of E_h per step of the cooperative cut (0: the "
                  "strategy's own, CoopSolverOptions::cycles())")
+        .integer("near-radius", &flags.near_radius, {1, 1000},
+                 "near moves' radius on the original problem in the *-near configurations "
+                 "(CoopSolverOptions::near_radius)")
         .flag("header", &header, "print the TSV header first");
     c2f::examples::declare_coop_parameters(options, parameters);
     c2f::examples::declare_data_preparation(options, preparation);
@@ -330,7 +354,7 @@ int main(int argc, char** argv) {
             ? memory_budget_of_gib(memory_gib, "--memory " + c2f::format_real(memory_gib))
             : default_memory_budget();
     return run_image(command.names[0], command.names[1], data, out, time_limit, header, selected,
-                     parameters, preparation.resolved(), expansion_cycles, memory);
+                     parameters, preparation.resolved(), flags, memory);
   } catch (const std::exception& error) {
     std::cerr << "c2f-bench-segment: error: " << error.what() << "\n";
     return 2;

@@ -120,6 +120,41 @@ TEST_CASE("majorise-minimise ends at a minimiser of its own E_h (two labels: exa
   }
 }
 
+TEST_CASE("majorise-minimise with near moves converges where whole moves find nothing",
+          "[coop][solver][brute-force]") {
+  Rng rng(21);
+  for (int trial = 0; trial < 12; ++trial) {
+    const bool tiny = trial % 2 == 0;  // 4 x 3, two labels: the minimum of E_h by brute force
+    const CoopEnergy energy = tiny ? region_coop(rng, 4, 3, 2, 2) : region_coop(rng, 9, 7, 3, 3);
+    CoopSolverOptions options = options_for(AuxStrategy::mm, ExpansionStart::zero);
+    options.near_radius = 1 + trial % 2;
+    CoopSolver solver(options);
+    solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
+    double before = solver.energy();
+    bool converged = false;
+    for (int step = 0; step < 60 && !converged; ++step) {
+      solver.step();
+      CHECK(solver.energy() <= before);
+      before = solver.energy();
+      converged = !solver.last_step().improved;
+    }
+    REQUIRE(converged);
+    const Labeling x(solver.labeling().begin(), solver.labeling().end());
+    // A quiet step's cycle ended in a whole sweep: a solver of whole moves finds nothing either.
+    CoopSolver whole(options_for(AuxStrategy::mm, ExpansionStart::zero));
+    whole.bind(energy, x);
+    whole.step();
+    CHECK_FALSE(whole.last_step().improved);
+    if (tiny) {
+      const PairwiseEnergy pairwise = pairwise_energy(energy, CoopAuxiliary::optimal_for(energy, x));
+      CHECK(close_relative(pairwise.evaluate(x), brute_force_minimum(pairwise).energy, 1e-12));
+    }
+  }
+  CoopSolverOptions negative;
+  negative.near_radius = -1;
+  CHECK_THROWS_WITH(CoopSolver(negative), Catch::Contains("near_radius"));
+}
+
 TEST_CASE("majorise-minimise skips only steps that solving would leave quiet", "[coop][solver]") {
   Rng rng(13);
   std::size_t skipped = 0;

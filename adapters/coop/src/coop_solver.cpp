@@ -51,6 +51,7 @@ int CoopSolverOptions::cycles() const noexcept {
 std::string CoopSolverOptions::validate() const {
   if (expansion_cycles < 0) return "expansion_cycles must be >= 0 (0: the strategy's own)";
   if (threads < 0) return "threads must be >= 0";
+  if (near_radius < 0) return "near_radius must be >= 0";
   return relaxation.validate();
 }
 
@@ -150,6 +151,9 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
     // solved on a graph of its own from zero flow, then resumed from it, beats re-solving the
     // other labels' graph (whose moves freed other variables).
     expansion_options.first_move_own_graph = true;
+    expansion_options.near_radius = options_.near_radius;
+    expansion_options.near_seeds = NearSeeds::label;
+    expansion_options.near_moves_min_variables = options_.near_moves_min_variables;
     const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
                                      .value_or(static_cast<std::size_t>(-1));
     expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;

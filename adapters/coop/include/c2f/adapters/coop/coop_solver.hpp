@@ -74,6 +74,12 @@ struct CoopSolverOptions {
   /// Threads each step's alpha-expansion solves its max-flow's parts on
   /// (ExpansionOptions::threads; 0: the machine's cores). The result is the same for every count.
   int threads = 0;
+  /// Near moves in each step's alpha-expansion (ExpansionOptions::near_radius, seeded by the
+  /// label's own variables) on energies of at least near_moves_min_variables variables; 0:
+  /// whole moves only. A cycle then holds three sweeps (near sweeps, a whole one when they
+  /// stall), so a quiet cycle still ends in a whole sweep that found nothing.
+  int near_radius = 0;
+  std::size_t near_moves_min_variables = 0;
 
   /// The cycles each step's alpha-expansion makes at most: expansion_cycles, or by default 10
   /// for greedy and ceres (the reference's expansion(10)) and 1 for mm, whose next step then

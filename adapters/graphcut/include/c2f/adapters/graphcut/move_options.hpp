@@ -126,7 +126,8 @@ struct ExpansionOptions : MoveOptions {
   /// move. Whole moves recycle their graphs, which on a small energy costs little, while a near
   /// move builds a graph of its own: on the suite's grids near moves from their label reached
   /// flat's energy sooner from 0.3 MP on (tuning median 0.27 against 0.43 with whole moves) but
-  /// not at 0.1 MP (0.54 against 0.51; docs/results.md, "Defaults").
+  /// not at 0.1 MP (0.54 against 0.51; docs/history/results-2026-12.md, "How the defaults were
+  /// chosen").
   std::size_t near_moves_min_variables = 0;
   /// Bytes the kept move problems may take: every label's move problem (d, p) is kept for
   /// patching when all of them fit (detail/expansion_problems.hpp), so a move's problem costs
@@ -144,7 +145,7 @@ struct ExpansionOptions : MoveOptions {
   /// terms), decided when the solver is bound. There whole expansion moves alone stop in
   /// staircases of labels that shift moves leave (synthetic truncated-quadratic grids: flat
   /// runs up to 9e-3 higher, and coarse to fine often never within 1e-4 of flat;
-  /// docs/results.md, "Defaults").
+  /// docs/history/results-2026-12.md, "How the defaults were chosen").
   bool shift_moves_unless_submodular = false;
   /// Parallel near moves: with near_radius > 0, the variables are cut into at most this many
   /// regions (about equal ranges of indices, at least 4096 variables each, every edge inside
