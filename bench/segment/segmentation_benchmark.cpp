@@ -23,7 +23,7 @@
 // of flips without decrease), c2f-slic-greedy-current and c2f-slic-greedy-zero (slic:16 slic:8,
 // whole sweeps), c2f-paper-mm, c2f-slic-mm (the default superpixels preset); flat-mm-near and
 // c2f-slic-mm-near, the same with near moves of --near-radius (default 12) on the original
-// problem (CoopSolverOptions::near_radius; opt-in, measured in docs/segmentation.md). Every coarse-to-fine
+// problem (CoopSolverOptions::near_radius; opt-in, docs/segmentation.md). Every coarse-to-fine
 // configuration is compared with the flat run of the same solver: the time it takes to reach that
 // run's final energy, as a fraction of that run's time, and the mean pixel error at 20 deadlines
 // drawn uniformly (fixed seed) in [0, the slower run's time]. On the original problem every run
@@ -72,7 +72,7 @@ struct Config {
   std::string schedule = "flat";
   bool sweep_plateau = false;  ///< coarse levels left after a whole sweep, not after L steps
   std::string flat;            ///< the flat configuration this one is compared with
-  bool near = false;  ///< near moves on the original problem (--near-radius)
+  bool near = false;           ///< near moves on the original problem (--near-radius)
 };
 
 /// The options every configuration's cooperative-cut solver takes from the command line.

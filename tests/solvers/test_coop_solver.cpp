@@ -146,7 +146,8 @@ TEST_CASE("majorise-minimise with near moves converges where whole moves find no
     whole.step();
     CHECK_FALSE(whole.last_step().improved);
     if (tiny) {
-      const PairwiseEnergy pairwise = pairwise_energy(energy, CoopAuxiliary::optimal_for(energy, x));
+      const PairwiseEnergy pairwise =
+          pairwise_energy(energy, CoopAuxiliary::optimal_for(energy, x));
       CHECK(close_relative(pairwise.evaluate(x), brute_force_minimum(pairwise).energy, 1e-12));
     }
   }

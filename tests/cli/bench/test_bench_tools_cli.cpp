@@ -75,6 +75,8 @@ TEST_CASE("the benchmark tools refuse malformed arguments by name", "[bench][cli
        "--alpha: expected a finite number in [0, 1), got '1'"},
       {"c2f-bench-segment", "run set name --memory -1",
        "--memory: expected a finite number in [0, 1e+06], got '-1'"},
+      {"c2f-bench-segment", "run set name --near-radius 0",
+       "--near-radius: expected an integer in [1, 1000], got '0'"},
       {"c2f-bench-levels", "", "give SCENE"},
       {"c2f-bench-levels", "Teddy --schedule cp:x", "--schedule: level 'cp:x'"},
       {"c2f-bench-partitions", "data more", "unexpected argument 'more'"},
@@ -348,7 +350,9 @@ TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat 
                                                "(--memory 0.01)"));
   CHECK_FALSE(std::filesystem::exists(out / "1_11_s-potts.csv"));
 
-  const auto run = c2f::test::run_tool(tool, common + " --configs flat-mm,c2f-slic-mm");
+  const auto run = c2f::test::run_tool(
+      tool,
+      common + " --configs flat-mm,c2f-slic-mm,flat-mm-near,c2f-slic-mm-near --near-radius 4");
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
   // The rows, one per configuration, tab-separated (progress on stderr has no tabs).
@@ -361,26 +365,31 @@ TEST_CASE("c2f-bench-segment compares each coarse-to-fine run with its own flat 
     for (std::string cell; std::getline(stream, cell, '\t');) cells.push_back(cell);
     rows.push_back(cells);
   }
-  REQUIRE(rows.size() == 2);
-  const auto& f = rows[0];
-  const auto& c = rows[1];
-  REQUIRE(f.size() == 13);
-  REQUIRE(c.size() == 13);
-  CHECK(f[3] == "flat-mm");
-  CHECK(c[3] == "c2f-slic-mm");
-  CHECK(f[8] == "converged");
-  CHECK(c[8] == "converged");
-  // The ratio is the time C2F first reaches flat's final energy over flat's whole run time; a
-  // run that never reaches it ends no lower than flat (energies printed to 1e-6, times to 1 ms).
-  const double flat_energy = std::stod(f[4]), flat_seconds = std::stod(f[6]);
-  if (c[9] != "nan") {
-    const double reach = std::stod(c[9]);
-    CHECK(std::stod(c[4]) <= flat_energy + 1e-6);
-    CHECK(reach > 0.0);
-    CHECK(reach <= std::stod(c[6]));
-    CHECK(std::stod(c[10]) == Approx(reach / flat_seconds).epsilon(0.01));
-  } else {
-    CHECK(std::stod(c[4]) >= flat_energy - 1e-6);
+  REQUIRE(rows.size() == 4);
+  for (const auto& [flat_name, c2f_name, at] :
+       {std::tuple{"flat-mm", "c2f-slic-mm", 0},
+        std::tuple{"flat-mm-near", "c2f-slic-mm-near", 2}}) {
+    const auto& f = rows[at];
+    const auto& c = rows[at + 1];
+    REQUIRE(f.size() == 13);
+    REQUIRE(c.size() == 13);
+    CHECK(f[3] == flat_name);
+    CHECK(c[3] == c2f_name);
+    CHECK(f[8] == "converged");
+    CHECK(c[8] == "converged");
+    // The ratio is the time C2F first reaches its flat run's final energy over that run's whole
+    // time; a run that never reaches it ends no lower than flat (energies printed to 1e-6, times
+    // to 1 ms).
+    const double flat_energy = std::stod(f[4]), flat_seconds = std::stod(f[6]);
+    if (c[9] != "nan") {
+      const double reach = std::stod(c[9]);
+      CHECK(std::stod(c[4]) <= flat_energy + 1e-6);
+      CHECK(reach > 0.0);
+      CHECK(reach <= std::stod(c[6]));
+      CHECK(std::stod(c[10]) == Approx(reach / flat_seconds).epsilon(0.01));
+    } else {
+      CHECK(std::stod(c[4]) >= flat_energy - 1e-6);
+    }
   }
   CHECK(std::filesystem::exists(out / "1_11_s-c2f-slic-mm.csv"));
   std::filesystem::remove_all(out);

@@ -79,7 +79,7 @@ struct CoopSolverOptions {
   /// whole moves only. A cycle then holds three sweeps (near sweeps, a whole one when they
   /// stall), so a quiet cycle still ends in a whole sweep that found nothing.
   int near_radius = 0;
-  std::size_t near_moves_min_variables = 0;
+  std::size_t near_moves_min_variables = 0;  ///< with near_radius > 0; 0: any size
 
   /// The cycles each step's alpha-expansion makes at most: expansion_cycles, or by default 10
   /// for greedy and ceres (the reference's expansion(10)) and 1 for mm, whose next step then
