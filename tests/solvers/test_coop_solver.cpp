@@ -127,7 +127,7 @@ TEST_CASE("majorise-minimise with near moves converges where whole moves find no
     const bool tiny = trial % 2 == 0;  // 4 x 3, two labels: the minimum of E_h by brute force
     const CoopEnergy energy = tiny ? region_coop(rng, 4, 3, 2, 2) : region_coop(rng, 9, 7, 3, 3);
     CoopSolverOptions options = options_for(AuxStrategy::mm, ExpansionStart::zero);
-    options.near_radius = 1 + trial % 2;
+    options.near_radius = tiny ? 1 : 2;
     CoopSolver solver(options);
     solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
     double before = solver.energy();

@@ -3,9 +3,9 @@
 namespace c2f {
 
 Labeling StepEvent::ground_labeling() const {
-  if (group_of.empty()) return {level_labeling.begin(), level_labeling.end()};
-  Labeling ground(group_of.size());
-  for (std::size_t v = 0; v < group_of.size(); ++v) ground[v] = level_labeling[group_of[v]];
+  Labeling ground;
+  const std::span<const Label> labels = ground_labeling(ground);
+  if (labels.data() != ground.data()) ground.assign(labels.begin(), labels.end());
   return ground;
 }
 
