@@ -14,8 +14,9 @@ Families (--families, default all four):
   stereo        the TSGO stereo energy (c2f-bench-stereo, stereo defaults against flat with the
                 same near and shift moves): third-size Middlebury 2005 and the first five 2006
                 scenes, Middlebury 2014 Q, KITTI 2015 and full-size Aloe from opencv-doc.
-  segmentation  cooperative cuts on the coopCuts images (c2f-bench-segment: the default method,
-                majorise-minimise on superpixel levels, against flat majorise-minimise).
+  segmentation  cooperative cuts on the coopCuts images (c2f-bench-segment: the segmentation
+                defaults, majorise-minimise on superpixel levels with near moves on the original
+                problem, against flat majorise-minimise).
 
 Grid and general instances run in this process through the Python package (c2f.solve with
 schedule 'flat', then with the defaults); stereo and segmentation instances run in their
@@ -27,8 +28,9 @@ measurement kept aside); any other instance when zlib.crc32 of its name is divis
 Aside instances are reported apart and must never be used to choose parameters.
 
 Per instance (OUT_DIR/suite.tsv, one row each, written as soon as it is measured): the flat
-run's time to converge and final energy (grid and general: where the defaults make near moves,
-the sooner converged of flat with their moves and flat with whole moves, named in flat_moves);
+run's time to converge and final energy (grid, general and segmentation: where the defaults
+make near moves, the sooner converged of flat with their moves and flat with whole moves, named
+in flat_moves);
 the time the default run took to come within 1e-4 and within 1e-3 of flat's final energy,
 over flat's convergence time (the ratio; 'never' when it did not); the default run's final
 energy relative to flat's; the error at deadlines of both (grid: pixels more than one label
@@ -393,24 +395,33 @@ def segmentation_instances(args, tools: Path) -> List[Instance]:
     if not data.is_dir():
         print(f"suite: segmentation left out: no {data}", file=sys.stderr)
         return []
+    segmentation = c2f.defaults("segmentation")
+    if segmentation["schedule"] != "superpixels" or segmentation["aux"] != "mm":
+        raise SystemExit("suite: the segmentation defaults are no longer c2f-bench-segment's "
+                         "c2f-slic-mm-near; name their configuration here")
     out = []
     for set_name, folder in (("multilabel", "runMultilabel"), ("binary", "runBinary/dataset")):
         seeds = sorted(p.stem for p in (data / folder / "seeds").glob("*.png"))
         for image in seeds:
             def measure(set_name=set_name, image=image):
                 folder = Path(args.out) / "segmentation"
+                # The defaults (c2f-slic-mm-near at the defaults' radius) against the sooner
+                # converged of flat with their moves and flat with whole moves.
                 rows = run_tool([str(tools / "c2f-bench-segment"), "run", set_name, image,
                                  "--data", args.data, "--out", str(folder), "--time-limit",
-                                 str(args.time_limit), "--configs", "flat-mm,c2f-slic-mm",
-                                 "--header"])
+                                 str(args.time_limit), "--configs",
+                                 "flat-mm,flat-mm-near,c2f-slic-mm-near",
+                                 "--near-radius", str(segmentation["near_radius"]), "--header"])
                 by = {r["config"]: r for r in rows}
-                flat, c2f_row = by["flat-mm"], by["c2f-slic-mm"]
+                flat_config, flat_moves = min((("flat-mm-near", "same"), ("flat-mm", "whole")),
+                                              key=lambda f: float(by[f[0]]["seconds"]))
+                flat, c2f_row = by[flat_config], by["c2f-slic-mm-near"]
                 return Outcome(int(flat["pixels"]), int(flat["labels"]),
-                               read_trace_csv(folder / f"{image}-flat-mm.csv"),
-                               read_trace_csv(folder / f"{image}-c2f-slic-mm.csv"),
+                               read_trace_csv(folder / f"{image}-{flat_config}.csv"),
+                               read_trace_csv(folder / f"{image}-c2f-slic-mm-near.csv"),
                                float(flat["seconds"]), float(flat["coop_energy"]), flat["reason"],
                                float(c2f_row["seconds"]), float(c2f_row["coop_energy"]),
-                               c2f_row["reason"])
+                               c2f_row["reason"], flat_moves=flat_moves)
 
             out.append(Instance("segmentation", f"{set_name}/{image}", set_name, measure))
     return out

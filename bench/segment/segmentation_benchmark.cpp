@@ -21,13 +21,14 @@
 // reference C2F-CoGC: paper levels, refinement after L trials without decrease),
 // c2f-paper-greedy-current, c2f-sweep-greedy-current (paper levels left only after a whole sweep
 // of flips without decrease), c2f-slic-greedy-current and c2f-slic-greedy-zero (slic:16 slic:8,
-// whole sweeps), c2f-paper-mm, c2f-slic-mm (the default superpixels preset); flat-mm-near and
-// c2f-slic-mm-near, the same with near moves of --near-radius (default 12) on the original
-// problem (CoopSolverOptions::near_radius; opt-in, docs/segmentation.md). Every coarse-to-fine
-// configuration is compared with the flat run of the same solver: the time it takes to reach that
-// run's final energy, as a fraction of that run's time, and the mean pixel error at 20 deadlines
-// drawn uniformly (fixed seed) in [0, the slower run's time]. On the original problem every run
-// ends after a whole sweep without decrease.
+// whole sweeps), c2f-paper-mm, c2f-slic-mm (the superpixels preset, whole moves); flat-mm-near
+// and c2f-slic-mm-near, the same with near moves of --near-radius on the original problem
+// (CoopSolverOptions::near_radius; by default the segmentation defaults' radius, so that
+// c2f-slic-mm-near is what c2f-segment runs with no flags, docs/segmentation.md). Every
+// coarse-to-fine configuration is compared with the flat run of the same solver: the time it takes
+// to reach that run's final energy, as a fraction of that run's time, and the mean pixel error at
+// 20 deadlines drawn uniformly (fixed seed) in [0, the slower run's time]. On the original problem
+// every run ends after a whole sweep without decrease.
 
 #include <algorithm>
 #include <cmath>
@@ -78,12 +79,10 @@ struct Config {
 /// The options every configuration's cooperative-cut solver takes from the command line.
 struct SolverFlags {
   int expansion_cycles = CoopSolverOptions{}.expansion_cycles;
-  int near_radius = 12;  ///< CoopSolverOptions::near_radius of the configurations that say near
+  /// CoopSolverOptions::near_radius of the configurations that say near (on the original problem
+  /// only, as run_segmentation makes them)
+  int near_radius = segmentation_defaults().mm_near_radius;
 };
-
-/// The near moves' floor: the original problems hold 65000 pixels or more, the superpixel levels
-/// a few thousand groups.
-constexpr std::size_t kNearMovesMinVariables = 20000;
 
 const std::vector<Config>& configs() {
   static const std::vector<Config> all{
@@ -126,11 +125,7 @@ Run solve(const Config& config, const SegmentationScene& scene, const Segmentati
   run_config.coop.strategy = config.strategy;
   run_config.coop.start = config.start;
   run_config.coop.expansion_cycles = flags.expansion_cycles;
-  if (config.near) {
-    // On the original problem only: the superpixel levels hold a few thousand variables.
-    run_config.coop.near_radius = flags.near_radius;
-    run_config.coop.near_moves_min_variables = kNearMovesMinVariables;
-  }
+  if (config.near) run_config.coop.near_radius = flags.near_radius;
   run_config.plateau = config.sweep_plateau ? -1 : 0;
   run_config.time_limit_seconds = time_limit;
   run_config.memory = memory;

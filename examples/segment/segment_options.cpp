@@ -20,9 +20,20 @@
 namespace c2f::examples {
 
 std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
+  // The flags' defaults are the library's (segmentation_defaults()).
+  const vision::SegmentationDefaults defaults = vision::segmentation_defaults();
   SegmentCommand command;
+  command.schedule = defaults.schedule;
+  command.parameters = defaults.parameters;
   double memory_gib = 0.0;  // 0: default_memory_budget()
-  std::string method = "coop", aux = "mm", start = "zero", plateau = "auto";
+  std::string method(vision::to_string(defaults.method)), aux(to_string(defaults.strategy));
+  std::string start = "zero", plateau = "auto", near_radius = "auto";
+  const std::string near_radius_help =
+      "near moves in each step's alpha-expansion of the cooperative cut, on the original problem "
+      "only: each move to a label frees the pixels within this many edges of that label's "
+      "pixels (whole moves where they stall); a number (0: whole moves only) or auto (" +
+      std::to_string(defaults.mm_near_radius) +
+      " with --aux mm, whole moves with greedy and ceres, docs/segmentation.md)";
   bool labels_from_gt = false, binary = false;
   ToolOptions options(
       "c2f-segment: interactive multi-label segmentation from seed scribbles with cooperative\n"
@@ -45,6 +56,7 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       .text("aux", &aux,
             "how the cooperative cut's auxiliary variables move: greedy (the reference's flips), "
             "mm (majorise-minimise) or ceres (continuous relaxation)")
+      .text("near-radius", &near_radius, near_radius_help.c_str())
       .text("start", &start,
             "greedy's alpha-expansion start: zero (every trial from the all-zero labeling, the "
             "reference) or current")
@@ -108,6 +120,12 @@ std::optional<SegmentCommand> parse_segment_command(int argc, char** argv) {
       with_flag("--method", [&] { return vision::segmentation_method_from_string(method); });
   command.run.coop.strategy = with_flag("--aux", [&] { return aux_strategy_from_string(aux); });
   command.run.coop.start = with_flag("--start", [&] { return expansion_start_from_string(start); });
+  command.run.coop.near_radius =
+      near_radius == "auto"
+          ? defaults.near_radius_for(command.run.coop.strategy)
+          : static_cast<int>(parse_integer_option("--near-radius", near_radius, {0, 1'000'000}));
+  if (command.run.method != vision::SegmentationMethod::coop && near_radius != "auto")
+    throw std::invalid_argument("--near-radius: applies to --method coop only");
   if (plateau == "sweep") {
     command.run.plateau = -1;
   } else if (plateau != "auto") {

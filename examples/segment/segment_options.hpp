@@ -22,7 +22,7 @@ struct SegmentCommand {
   CoopParameters parameters;
   vision::DataPreparation preparation;  ///< edge classes and both k-means runs
   int downscale = 1;
-  std::string schedule = "superpixels";  ///< parsed once the label count is known
+  std::string schedule;  ///< parsed once the label count is known (default: the library's)
   std::string trace;
   std::string export_uai;  ///< --export-uai: the Potts energy of the same data, as UAI
   bool save_partitions = false;

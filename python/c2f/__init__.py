@@ -20,9 +20,9 @@ from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 import numpy as np
 
-from ._c2f import (Energy, Term, _defaults, _segment, _solve, bad_pixel_rates, expand, partition,
-                   read_image, read_segmentation, read_stereo_pair, reduce, stereo_energy,
-                   transfer)
+from ._c2f import (Energy, Term, _defaults, _segment, _segmentation_defaults, _solve,
+                   bad_pixel_rates, expand, partition, read_image, read_segmentation,
+                   read_stereo_pair, reduce, stereo_energy, transfer)
 
 __all__ = ["Energy", "Term", "Result", "defaults", "solve", "stereo", "stereo_energy", "read_image",
            "read_stereo_pair", "bad_pixel_rates", "segment", "read_segmentation", "partition",
@@ -60,25 +60,35 @@ Callback = Callable[[Dict[str, Any]], Optional[bool]]
 
 
 def defaults(name: str = "pairwise") -> Dict[str, Any]:
-    """The library's defaults: what ``solve`` runs where an argument is None.
+    """The library's defaults: what ``solve``, ``stereo`` and ``segment`` run where an argument
+    is None.
 
     Parameters
     ----------
-    name : {'pairwise', 'stereo'}, default 'pairwise'
+    name : {'pairwise', 'stereo', 'segmentation'}, default 'pairwise'
         'pairwise' for any pairwise energy (``solve``, ``c2f-solve``), 'stereo' for the TSGO
-        stereo energy (``stereo``, ``c2f-stereo``).
+        stereo energy (``stereo``, ``c2f-stereo``), 'segmentation' for cooperative-cut
+        segmentation (``segment``, ``c2f-segment``).
 
     Returns
     -------
     dict
-        ``grid_schedule``, ``local_schedule`` and ``general_schedule`` (the schedule on a grid
-        energy, on another energy whose edges are local in its variables' order, such as a
-        lattice, and on any other), expansion's ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where
-        near moves start on any other energy and on a grid energy), ``near_graphs``,
-        ``near_min_variables`` and ``shift_moves`` (on the original problem),
-        ``plateau`` and ``plateau_tolerance`` (coarse levels): the configuration measured best
-        on a tuning set and confirmed on instances set aside (docs/results.md, "Defaults").
+        For 'pairwise' and 'stereo': ``grid_schedule``, ``local_schedule`` and
+        ``general_schedule`` (the schedule on a grid energy, on another energy whose edges are
+        local in its variables' order, such as a lattice, and on any other), expansion's
+        ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where near moves start on any
+        other energy and on a grid energy), ``near_graphs``, ``near_min_variables`` and
+        ``shift_moves`` (on the original problem), ``plateau`` and ``plateau_tolerance``
+        (coarse levels). For 'segmentation': ``schedule``, ``method``, ``aux`` (how the
+        cooperative cut's auxiliary variables move), ``near_radius`` (its near moves on the
+        original problem with aux 'mm'; 'greedy' and 'ceres' make whole moves), ``lambda_``,
+        ``theta`` and ``alpha``. Each is the configuration measured best on a tuning set and
+        confirmed on instances set aside (docs/results.md, "Defaults").
     """
+    if name == "segmentation":
+        return _segmentation_defaults()
+    if name not in ("pairwise", "stereo"):
+        raise ValueError(f"name: expected 'pairwise', 'stereo' or 'segmentation', got {name!r}")
     return _defaults(name)
 
 
@@ -260,9 +270,10 @@ def _result(call: Callable[[], Dict[str, Any]]) -> Result:
     return Result(**raw)
 
 
-def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels", *,
-            method: str = "coop", options: Optional[Dict[str, Any]] = None,
-            lambda_: float = 0.5, theta: float = 0.0007, alpha: float = 0.2, classes: int = 10,
+def segment(image: np.ndarray, seeds: np.ndarray, schedule: Optional[str] = None, *,
+            method: Optional[str] = None, options: Optional[Dict[str, Any]] = None,
+            lambda_: Optional[float] = None, theta: Optional[float] = None,
+            alpha: Optional[float] = None, classes: int = 10,
             kmeans: str = "plusplus", gmm_seed: int = 27, edge_seed: int = 27, threads: int = 0,
             time_limit: Optional[float] = None, max_steps: Optional[int] = None,
             plateau: Union[None, str, int] = None, callback: Optional[Callback] = None,
@@ -277,18 +288,26 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: str = "superpixels",
         (H, W) integers, -1 where the user drew nothing, else the pixel's label 0..L-1 (every
         label needs a seed). A colour GMM per label from its seeds gives the unaries;
         8-connected edges in `classes` colour-difference classes carry the cooperative cut.
-    schedule : str, default 'superpixels'
+    Every argument left None is the library's default, ``defaults('segmentation')``, as
+    c2f-segment's flags are.
+
+    schedule : str, optional
         'superpixels', 'paper', 'flat' or any schedule text (slic:S levels segment the image).
-    method : {'coop', 'potts'}, default 'coop'
-        The cooperative cut, or the alpha-expansion baseline on the Potts energy of the same
-        data.
+        None: the defaults' ('superpixels', slic:16 slic:8 flat).
+    method : {'coop', 'potts'}, optional
+        The cooperative cut (None: the default), or the alpha-expansion baseline on the Potts
+        energy of the same data.
     options : dict, optional
         The cooperative cut's solver: ``aux``, how its auxiliary variables are found ('mm',
         majorise-minimise, the default; 'greedy'; 'ceres', a continuous relaxation),
         ``start`` (greedy's expansion start: 'zero' or 'current'), ``expansion_cycles`` (the
-        most alpha-expansion cycles of a step; by default 1 for 'mm', 10 for the others).
-    lambda_, theta, alpha : float
-        The cooperative cut's weight, threshold and ratio (docs/segmentation.md).
+        most alpha-expansion cycles of a step; by default 1 for 'mm', 10 for the others),
+        ``near_radius`` (near moves in each step's expansion on the original problem: a move
+        to a label frees the pixels within this many edges of that label's pixels; 0: whole
+        moves; by default the defaults' ``near_radius`` for 'mm', 0 for the others).
+    lambda_, theta, alpha : float, optional
+        The cooperative cut's weight, threshold and ratio (docs/segmentation.md; None: the
+        defaults').
     classes, kmeans, gmm_seed, edge_seed : int, str, int, int
         The data preparation's clustering.
     threads : int, default 0

@@ -98,18 +98,39 @@ vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::h
   return scene;
 }
 
-py::dict segment(const py::handle& image, const py::handle& seeds, const std::string& schedule_text,
-                 const std::string& method, const py::handle& options,
-                 const py::handle& lambda_argument, const py::handle& theta_argument,
-                 const py::handle& alpha_argument, const py::handle& classes_argument,
-                 const std::string& kmeans, const py::handle& gmm_seed_argument,
-                 const py::handle& edge_seed_argument, const py::handle& threads_argument,
-                 const py::handle& time_limit, const py::handle& max_steps,
-                 const py::handle& plateau_argument, const py::object& callback,
-                 const py::handle& memory) {
-  const double lambda = real_argument(lambda_argument, "lambda_");
-  const double theta = real_argument(theta_argument, "theta");
-  const double alpha = real_argument(alpha_argument, "alpha");
+/// A text keyword's value (TypeError naming it for anything but a str).
+std::string text_argument(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value))
+    throw py::type_error(name + ": expected a str, got " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  return value.cast<std::string>();
+}
+
+/// A keyword's value, or `fallback` (the defaults') when it is None.
+double real_or(const py::handle& value, const std::string& name, double fallback) {
+  return value.is_none() ? fallback : real_argument(value, name);
+}
+
+py::dict segment(const py::handle& image, const py::handle& seeds,
+                 const py::handle& schedule_argument, const py::handle& method_argument,
+                 const py::handle& options, const py::handle& lambda_argument,
+                 const py::handle& theta_argument, const py::handle& alpha_argument,
+                 const py::handle& classes_argument, const std::string& kmeans,
+                 const py::handle& gmm_seed_argument, const py::handle& edge_seed_argument,
+                 const py::handle& threads_argument, const py::handle& time_limit,
+                 const py::handle& max_steps, const py::handle& plateau_argument,
+                 const py::object& callback, const py::handle& memory) {
+  // Every argument left None is the library's segmentation default.
+  const vision::SegmentationDefaults defaults = vision::segmentation_defaults();
+  const std::string schedule_text = schedule_argument.is_none()
+                                        ? defaults.schedule
+                                        : text_argument(schedule_argument, "schedule");
+  const std::string method = method_argument.is_none()
+                                 ? std::string(vision::to_string(defaults.method))
+                                 : text_argument(method_argument, "method");
+  const double lambda = real_or(lambda_argument, "lambda_", defaults.parameters.lambda);
+  const double theta = real_or(theta_argument, "theta", defaults.parameters.theta);
+  const double alpha = real_or(alpha_argument, "alpha", defaults.parameters.alpha);
   const int classes = static_cast<int>(integer_argument(classes_argument, "classes", 1, 256));
   const auto gmm_seed =
       static_cast<std::uint64_t>(integer_argument(gmm_seed_argument, "gmm_seed", 0, INT64_MAX));
@@ -123,7 +144,7 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
     throw py::value_error(std::string("method: ") + error.what());
   }
   if (config.method == vision::SegmentationMethod::coop) {
-    config.coop = coop_options_from(options);
+    config.coop = coop_options_from(options, defaults);
   } else if (!options.is_none() && py::len(options) != 0) {
     throw py::value_error("options: method 'potts' (alpha-expansion of the Potts energy) has none");
   }
@@ -192,9 +213,25 @@ py::dict segment(const py::handle& image, const py::handle& seeds, const std::st
   return record.result(report.summary, report.summary.report() + report.threads_line() + "\n");
 }
 
+/// The library's SegmentationDefaults as a dict (c2f.defaults('segmentation')).
+py::dict segmentation_defaults_dict() {
+  const vision::SegmentationDefaults defaults = vision::segmentation_defaults();
+  py::dict out;
+  out["schedule"] = defaults.schedule;
+  out["method"] = std::string(vision::to_string(defaults.method));
+  out["aux"] = std::string(to_string(defaults.strategy));
+  out["near_radius"] = defaults.mm_near_radius;
+  out["lambda_"] = defaults.parameters.lambda;
+  out["theta"] = defaults.parameters.theta;
+  out["alpha"] = defaults.parameters.alpha;
+  return out;
+}
+
 }  // namespace
 
 void bind_segment(py::module_& module) {
+  module.def("_segmentation_defaults", &segmentation_defaults_dict,
+             "The library's SegmentationDefaults, as a dict (c2f.defaults('segmentation')).");
   module.def("read_segmentation", &read_segmentation, py::arg("image"), py::arg("seeds"),
              py::arg("gt") = "", py::arg("convention") = "colours", py::arg("downscale") = 1,
              "A segmentation scene loaded as c2f-segment loads it: a dict with 'image' (RGB "

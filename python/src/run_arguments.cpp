@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -200,19 +201,25 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
   throw py::value_error("method: unknown solver '" + method + "'");
 }
 
-CoopSolverOptions coop_options_from(const py::handle& options) {
+CoopSolverOptions coop_options_from(const py::handle& options,
+                                    const vision::SegmentationDefaults& defaults) {
   CoopSolverOptions coop;
-  for (const auto& [key, value] :
-       option_items(options, "method 'coop'", {"aux", "start", "expansion_cycles"})) {
+  coop.strategy = defaults.strategy;
+  std::optional<int> near_radius;
+  for (const auto& [key, value] : option_items(
+           options, "method 'coop'", {"aux", "start", "expansion_cycles", "near_radius"})) {
     const std::string name = option_name(key);
     if (key == "aux") {
       coop.strategy = named_value(value, name, aux_strategy_from_string);
     } else if (key == "start") {
       coop.start = named_value(value, name, expansion_start_from_string);
+    } else if (key == "near_radius") {
+      near_radius = static_cast<int>(integer_argument(value, name, 0, INT32_MAX));
     } else {
       coop.expansion_cycles = static_cast<int>(integer_argument(value, name, 1, INT32_MAX));
     }
   }
+  coop.near_radius = near_radius.value_or(defaults.near_radius_for(coop.strategy));
   return coop;
 }
 

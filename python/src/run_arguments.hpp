@@ -15,6 +15,7 @@
 #include "c2f/driver/options.hpp"
 #include "c2f/run/defaults.hpp"
 #include "c2f/run/run_error.hpp"
+#include "c2f/run/segmentation_run.hpp"
 #include "c2f/run/solver_spec.hpp"
 
 namespace c2f::python {
@@ -31,8 +32,10 @@ SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& o
                             const RunDefaults& defaults, bool on_grid);
 
 /// The cooperative cut's solver options from `options` (None or a dict: aux, start,
-/// expansion_cycles), as solver_spec_from.
-CoopSolverOptions coop_options_from(const pybind11::handle& options);
+/// expansion_cycles, near_radius), as solver_spec_from; what is not named is `defaults`'
+/// (near_radius: defaults.near_radius_for the strategy in use).
+CoopSolverOptions coop_options_from(const pybind11::handle& options,
+                                    const vision::SegmentationDefaults& defaults);
 
 /// A limit that is None (none) or a number > 0 (`name`: ValueError for 0 or less, which would
 /// mean no limit in C++; TypeError for what is no number).

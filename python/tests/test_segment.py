@@ -53,11 +53,45 @@ def test_segment_methods_and_schedules(fruits):
         assert np.all(np.diff(result.trace["energy"]) <= 1e-9 * abs(result.trace["energy"][0]))
 
 
+def test_segment_defaults_are_the_librarys(fruits):
+    """c2f.segment with nothing named runs c2f.defaults('segmentation'): the same run as naming
+    every value; near moves go with majorise-minimise only, unless named."""
+    image, seeds = fruits["image"], fruits["seeds"]
+    defaults = c2f.defaults("segmentation")
+    assert defaults["method"] == "coop" and defaults["aux"] == "mm"
+    assert defaults["near_radius"] > 0
+    plain = c2f.segment(image, seeds)
+    named = c2f.segment(image, seeds, defaults["schedule"], method=defaults["method"],
+                        options={"aux": defaults["aux"], "near_radius": defaults["near_radius"]},
+                        lambda_=defaults["lambda_"], theta=defaults["theta"],
+                        alpha=defaults["alpha"])
+    np.testing.assert_array_equal(plain.labeling, named.labeling)
+    np.testing.assert_array_equal(plain.trace["energy"], named.trace["energy"])
+    np.testing.assert_array_equal(plain.trace["level"], named.trace["level"])
+    near = f"near moves of radius {defaults['near_radius']} from their label"
+    assert near in plain.summary
+    whole = c2f.segment(image, seeds, options={"near_radius": 0}, max_steps=5)
+    assert "solve: every move over every variable" in whole.summary
+    greedy = c2f.segment(image, seeds, options={"aux": "greedy"}, max_steps=5)
+    assert "solve: every move over every variable" in greedy.summary
+    greedy_near = c2f.segment(image, seeds, options={"aux": "greedy", "start": "current",
+                                                     "near_radius": 2}, max_steps=5)
+    assert "near moves of radius 2 from their label" in greedy_near.summary
+    with pytest.raises(ValueError, match=r"options\['near_radius'\]: expected an integer in"):
+        c2f.segment(image, seeds, options={"near_radius": -1})
+    with pytest.raises(TypeError, match="schedule: expected a str, got int"):
+        c2f.segment(image, seeds, 3)
+    with pytest.raises(ValueError, match="name: expected 'pairwise', 'stereo' or 'segmentation'"):
+        c2f.defaults("segment")
+
+
 def test_segment_is_the_same_on_any_number_of_threads(fruits):
     image, seeds = fruits["image"], fruits["seeds"]
     one = c2f.segment(image, seeds, max_steps=10, threads=1)
-    assert re.search(r"^solve: every move over every variable(, max-flow in \d+ parts on 1 thread| "
-                     r"on one thread)$", one.summary, re.MULTILINE)
+    radius = c2f.defaults("segmentation")["near_radius"]
+    assert re.search(rf"^solve: near moves of radius {radius} from their label \(whole moves where "
+                     r"they stall\)(, max-flow in \d+ parts on 1 thread| on one thread)$",
+                     one.summary, re.MULTILINE)
     for threads in (2, 0):
         many = c2f.segment(image, seeds, max_steps=10, threads=threads)
         np.testing.assert_array_equal(many.labeling, one.labeling)

@@ -8,8 +8,11 @@
 #include <fstream>
 #include <iterator>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <utility>
 
+#include "c2f/run/segmentation_run.hpp"
 #include "support/run_tool.hpp"
 #include "support/synthetic_segmentation.hpp"
 
@@ -48,6 +51,63 @@ TEST_CASE("c2f-segment writes labels, overlay, trace and summary", "[segment][cl
                                           "(GMMs) and 27 (edge classes)\n"));
   }
   CHECK(std::filesystem::exists(dir / "out" / "partition-level0.png") == false);  // last run: flat
+}
+
+TEST_CASE("c2f-segment's flags default to the library's segmentation defaults",
+          "[segment][cli][defaults]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segment-defaults";
+  std::filesystem::remove_all(dir);
+  const auto files = c2f::test::write_synthetic_segmentation(dir, 80, 60, 3);
+  const c2f::vision::SegmentationDefaults defaults = c2f::vision::segmentation_defaults();
+  const auto summary_of = [&](const std::string& flags) {
+    const std::string out = (dir / "out").string();
+    std::filesystem::remove_all(out);
+    const c2f::test::ToolResult r =
+        run(files.image + " " + files.seeds + " -o " + out + " -q --classes 4 " + flags);
+    INFO(flags << "\n" << r.output);
+    REQUIRE(r.exit_code == 0);
+    std::ifstream summary(dir / "out" / "summary.txt");
+    return std::string((std::istreambuf_iterator<char>(summary)), {});
+  };
+  const std::string plain = summary_of("");
+  const std::string near = "near moves of radius " + std::to_string(defaults.mm_near_radius) +
+                           " from their label (whole moves where they stall)";
+  CHECK_THAT(plain, Catch::Contains("method " + std::string(to_string(defaults.method)) +
+                                    ", auxiliary variables " +
+                                    std::string(to_string(defaults.strategy))) &&
+                        Catch::Contains(near));
+  std::ostringstream parameters;
+  parameters << "lambda " << defaults.parameters.lambda << ", theta " << defaults.parameters.theta
+             << ", alpha " << defaults.parameters.alpha << ",";
+  CHECK_THAT(plain, Catch::Contains(parameters.str()));
+  // Naming every default gives the same run: the same energy, step for step.
+  const std::string named = summary_of("--schedule " + defaults.schedule + " --aux " +
+                                       std::string(to_string(defaults.strategy)) +
+                                       " --near-radius " + std::to_string(defaults.mm_near_radius));
+  const std::regex energy_line(R"(final energy \S+ after \d+ steps)");
+  std::smatch plain_energy, named_energy;
+  REQUIRE(std::regex_search(plain, plain_energy, energy_line));
+  REQUIRE(std::regex_search(named, named_energy, energy_line));
+  CHECK(plain_energy.str() == named_energy.str());
+  // Greedy makes whole moves unless --near-radius is named; 0 is whole moves with mm.
+  CHECK_THAT(summary_of("--aux greedy --max-steps 3"),
+             Catch::Contains("solve: every move over every variable"));
+  CHECK_THAT(summary_of("--aux greedy --start current --near-radius 2 --max-steps 3"),
+             Catch::Contains("near moves of radius 2 from their label"));
+  CHECK_THAT(summary_of("--near-radius 0 --max-steps 3"),
+             Catch::Contains("solve: every move over every variable"));
+  const std::string out = (dir / "bad").string();
+  for (const auto& [flags, message] :
+       {std::pair{"--near-radius -1", "--near-radius: expected an integer in [0, 1000000]"},
+        std::pair{"--near-radius wide", "--near-radius: expected an integer in"},
+        std::pair{"--method potts --near-radius 2", "--near-radius: applies to --method coop"}}) {
+    const c2f::test::ToolResult r =
+        run(files.image + " " + files.seeds + " -o " + out + " -q " + flags);
+    INFO(flags << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(message));
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("c2f-segment stopped by SIGTERM writes the best labeling so far and exits 143",

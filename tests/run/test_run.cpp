@@ -69,8 +69,9 @@ struct SegmentationCase {
 };
 
 SegmentationCase segmentation_case(const std::filesystem::path& dir, int width, int height,
-                                   int labels) {
-  const SegmentationFilesOnDisk files = write_synthetic_segmentation(dir, width, height, labels);
+                                   std::uint64_t seed, double noise = 18.0) {
+  const SegmentationFilesOnDisk files =
+      write_synthetic_segmentation(dir, width, height, seed, noise);
   vision::SegmentationScene scene = vision::load_segmentation_scene(
       {files.image, files.seeds, "", vision::SeedConvention::colours});
   vision::SegmentationProblem problem =
@@ -129,7 +130,7 @@ TEST_CASE("run() reports each step's variables and decides near moves on the ene
   };
   RunReport report;
   const Seen on_grid = steps_of(grid, {coarse}, report);
-  CHECK(report.near_radius == 2);
+  CHECK(report.near_radius == 1);
   CHECK(report.near_seeds == NearSeeds::label);
   CHECK_THAT(report.threads_line(),
              Catch::StartsWith("solve: near moves of radius 2 from their label (whole moves "
@@ -314,6 +315,53 @@ TEST_CASE("the segmentation recipe runs either method within the budget, as buil
   CHECK_THAT(segmentation_refusal(problem, schedule, scene.shape(), bad),
              Catch::StartsWith("plateau: expected -1"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the segmentation recipe makes near moves on the original problem only",
+          "[run][segmentation][near]") {
+  const auto dir = std::filesystem::temp_directory_path() / "c2f-test-segmentation-near";
+  // Noisy colours, so that the levels' moves have work to do.
+  const auto [scene, problem, schedule] = segmentation_case(dir, 64, 48, 4, 90.0);
+  vision::SegmentationRunConfig config;
+  config.coop.near_radius = 1;
+  EnergyTrace by_recipe, original_only, every_level;
+  ScheduleProvider levels(schedule, scene.shape());
+  const RunReport report = vision::run_segmentation(problem, levels, config, by_recipe.observer());
+  CHECK(report.near_radius == 1);
+  CHECK(report.near_seeds == NearSeeds::label);
+  CHECK_THAT(report.threads_line(), Catch::StartsWith("solve: near moves of radius 1"));
+  const auto by_hand = [&](std::size_t near_floor, EnergyTrace& trace) {
+    CoopSolverOptions options = config.coop;
+    options.near_moves_min_variables = near_floor;
+    CoopSolver solver(options);
+    Options limits;
+    limits.plateau_steps = {vision::coarse_plateau_steps(
+        solver.quiet_steps_to_converge(problem.coop), scene.num_labels(), false)};
+    ScheduleProvider same_levels(schedule, scene.shape());
+    coarse_to_fine(problem.coop, same_levels, solver, limits, trace.observer());
+  };
+  by_hand(problem.coop.num_variables(), original_only);
+  by_hand(0, every_level);
+  CHECK(by_recipe.energies == original_only.energies);
+  // Near moves on the coarse levels too would take another path on this scene.
+  CHECK(by_recipe.energies != every_level.energies);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the segmentation defaults make near moves with majorise-minimise only",
+          "[run][segmentation][defaults]") {
+  const vision::SegmentationDefaults defaults = vision::segmentation_defaults();
+  CHECK(defaults.method == vision::SegmentationMethod::coop);
+  CHECK(defaults.strategy == AuxStrategy::mm);
+  CHECK(defaults.mm_near_radius > 0);
+  CHECK(defaults.config().coop.strategy == AuxStrategy::mm);
+  CHECK(defaults.config().coop.near_radius == defaults.mm_near_radius);
+  for (const AuxStrategy aux : {AuxStrategy::greedy, AuxStrategy::ceres}) {
+    CHECK(defaults.config(aux).coop.strategy == aux);
+    CHECK(defaults.config(aux).coop.near_radius == 0);
+  }
+  CHECK(defaults.config().validate().empty());
+  CHECK_NOTHROW(vision::parse_segmentation_schedule(defaults.schedule, 3));
 }
 
 TEST_CASE("the segmentation run gives the same bits on 1, 2 and 3 threads, either method",

@@ -8,7 +8,8 @@
 namespace c2f::test {
 
 SegmentationFilesOnDisk write_synthetic_segmentation(const std::filesystem::path& dir, int width,
-                                                     int height, std::uint64_t seed) {
+                                                     int height, std::uint64_t seed,
+                                                     double noise_deviation) {
   std::filesystem::create_directories(dir);
   SegmentationFilesOnDisk files;
   files.image = (dir / "image.png").string();
@@ -23,7 +24,7 @@ SegmentationFilesOnDisk write_synthetic_segmentation(const std::filesystem::path
   cv::Mat gt(height, width, CV_8UC3), image(height, width, CV_8UC3);
   cv::Mat seeds(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, 18.0);
+  std::normal_distribution<double> noise(0.0, noise_deviation);
   const cv::Point centre(width * 2 / 3, height / 2);
   const int radius = std::min(width, height) / 4;
   for (int y = 0; y < height; ++y) {

@@ -15,8 +15,10 @@ struct SegmentationFilesOnDisk {
 };
 
 /// Writes the problem into `dir` (created): left third, middle disc and the rest are the
-/// three regions; each gets a short scribble of its colour.
+/// three regions; each gets a short scribble of its colour. The image's colours carry Gaussian
+/// noise of deviation `noise` (per channel, from `seed`).
 SegmentationFilesOnDisk write_synthetic_segmentation(const std::filesystem::path& dir, int width,
-                                                     int height, std::uint64_t seed);
+                                                     int height, std::uint64_t seed,
+                                                     double noise = 18.0);
 
 }  // namespace c2f::test

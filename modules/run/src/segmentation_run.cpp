@@ -1,5 +1,6 @@
 #include "c2f/run/segmentation_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "c2f/run/coop_run.hpp"
@@ -46,6 +47,21 @@ Options limits(const SegmentationRunConfig& config, int num_labels, std::size_t 
 
 }  // namespace
 
+SegmentationRunConfig SegmentationDefaults::config(AuxStrategy aux) const {
+  SegmentationRunConfig config;
+  config.method = method;
+  config.coop.strategy = aux;
+  config.coop.near_radius = near_radius_for(aux);
+  return config;
+}
+
+SegmentationDefaults segmentation_defaults() {
+  SegmentationDefaults defaults;
+  defaults.schedule = "superpixels";
+  defaults.mm_near_radius = 6;
+  return defaults;
+}
+
 RunReport run_segmentation(const SegmentationProblem& problem, ScheduleProvider& levels,
                            const SegmentationRunConfig& config, const Observer& observer) {
   RunConfigError::throw_if(config.validate());
@@ -62,6 +78,11 @@ RunReport run_segmentation(const SegmentationProblem& problem, ScheduleProvider&
   CoopRunConfig run_config;
   run_config.solver = config.coop;
   run_config.solver.threads = config.threads;
+  if (config.coop.near_radius > 0) {
+    // Near moves on the original problem only; any coarse level is smaller.
+    run_config.solver.near_moves_min_variables =
+        std::max(config.coop.near_moves_min_variables, problem.coop.num_variables());
+  }
   run_config.memory = config.memory;
   run_config.kept_bytes = energy_memory_bytes(problem.potts);
   run_config.limits = limits(config, num_labels, sweep_steps(config.coop, problem.coop));

@@ -57,7 +57,8 @@ struct CoopRunConfig {
 [[nodiscard]] std::size_t sweep_steps(const CoopSolverOptions& options, const CoopEnergy& energy);
 
 /// Minimises `energy` over the partitions `levels` provides (none: flat) with CoopSolver as
-/// `config` says (the report's flow_parts and flow_threads: what each step's expansion used).
+/// `config` says (the report's flow_parts, flow_threads, near_radius and near_seeds: what each
+/// step's expansion used on the original problem).
 /// Throws as plan_run, and what coarse_to_fine throws.
 template <PartitionProvider<CoopEnergy> P>
 RunReport run(const CoopEnergy& energy, P& levels, const CoopRunConfig& config,
@@ -75,6 +76,10 @@ RunReport run(const CoopEnergy& energy, P& levels, const CoopRunConfig& config,
   report.optional_memory_used = solver.kept_bytes();
   report.flow_parts = solver.flow_parts(energy);
   report.flow_threads = detail::threads_on_parts(options.threads, report.flow_parts);
+  if (options.near_radius > 0 && energy.num_variables() >= options.near_moves_min_variables) {
+    report.near_radius = options.near_radius;
+    report.near_seeds = NearSeeds::label;
+  }
   return report;
 }
 
