@@ -130,7 +130,7 @@ TEST_CASE("run() reports each step's variables and decides near moves on the ene
   };
   RunReport report;
   const Seen on_grid = steps_of(grid, {coarse}, report);
-  CHECK(report.near_radius == 1);
+  CHECK(report.near_radius == 2);
   CHECK(report.near_seeds == NearSeeds::label);
   CHECK_THAT(report.threads_line(),
              Catch::StartsWith("solve: near moves of radius 2 from their label (whole moves "
