@@ -280,6 +280,10 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: Optional[str] = None
             memory: Optional[float] = None) -> Result:
     """Interactive multi-label segmentation by cooperative cuts, as c2f-segment runs it.
 
+    ``schedule``, ``method``, ``lambda_``, ``theta`` and ``alpha`` left None, and the
+    cooperative cut's options not named, are the library's defaults,
+    ``defaults('segmentation')``, as c2f-segment's flags are.
+
     Parameters
     ----------
     image : ndarray
@@ -288,9 +292,6 @@ def segment(image: np.ndarray, seeds: np.ndarray, schedule: Optional[str] = None
         (H, W) integers, -1 where the user drew nothing, else the pixel's label 0..L-1 (every
         label needs a seed). A colour GMM per label from its seeds gives the unaries;
         8-connected edges in `classes` colour-difference classes carry the cooperative cut.
-    Every argument left None is the library's default, ``defaults('segmentation')``, as
-    c2f-segment's flags are.
-
     schedule : str, optional
         'superpixels', 'paper', 'flat' or any schedule text (slic:S levels segment the image).
         None: the defaults' ('superpixels', slic:16 slic:8 flat).
