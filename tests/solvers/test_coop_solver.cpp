@@ -132,11 +132,22 @@ TEST_CASE("majorise-minimise with near moves converges where whole moves find no
     solver.bind(energy, random_labeling(rng, energy.num_variables(), energy.num_labels()));
     double before = solver.energy();
     bool converged = false;
+    const auto sweep = static_cast<std::size_t>(energy.num_labels());
     for (int step = 0; step < 60 && !converged; ++step) {
       solver.step();
       CHECK(solver.energy() <= before);
       before = solver.energy();
-      converged = !solver.last_step().improved;
+      const CoopStep& last = solver.last_step();
+      converged = !last.improved;
+      // A step's cycle: one near sweep that lowered E_h (so the step improved), or a near sweep
+      // that lowered nothing and a whole sweep; none for a step known to be quiet.
+      if (last.known_quiet) {
+        CHECK(last.expansion_moves == 0);
+      } else if (last.expansion_moves == sweep) {
+        CHECK(last.improved);
+      } else {
+        CHECK(last.expansion_moves == 2 * sweep);
+      }
     }
     REQUIRE(converged);
     const Labeling x(solver.labeling().begin(), solver.labeling().end());

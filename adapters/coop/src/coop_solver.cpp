@@ -165,14 +165,23 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
     expansion_->solver.bind(expansion_->pairwise, start);
   }
   ExpansionSolver<>& expansion = expansion_->solver;
-  const std::size_t moves = expansion.quiet_steps_to_converge(expansion_->pairwise);
+  // A sweep is one move per label (no shift moves here). A cycle is one sweep of whole moves,
+  // or one of near moves that lowered E_h; a near sweep that lowered nothing hands over to a
+  // whole sweep (ExpansionSolver's rule), which then ends the cycle. So a cycle that lowers
+  // nothing ends in a whole sweep that found nothing.
+  const auto sweep = static_cast<std::size_t>(expansion_->pairwise.num_labels());
   expansion_ended_quiet_ = false;
   for (int cycle = 0; cycle < options_.cycles(); ++cycle) {
-    bool improved = false;
-    for (std::size_t m = 0; m < moves; ++m) {
-      expansion.step();
-      improved = improved || expansion.last_step().improved;
-      ++last_.expansion_moves;
+    bool improved = false, cycle_done = false;
+    while (!cycle_done) {
+      bool sweep_improved = false;
+      for (std::size_t m = 0; m < sweep; ++m) {
+        expansion.step();
+        sweep_improved = sweep_improved || expansion.last_step().improved;
+        ++last_.expansion_moves;
+      }
+      improved = improved || sweep_improved;
+      cycle_done = !expansion.last_step().near || sweep_improved;
     }
     if (!improved) {
       expansion_ended_quiet_ = true;

@@ -76,8 +76,9 @@ struct CoopSolverOptions {
   int threads = 0;
   /// Near moves in each step's alpha-expansion (ExpansionOptions::near_radius, seeded by the
   /// label's own variables) on energies of at least near_moves_min_variables variables; 0:
-  /// whole moves only. A cycle then holds three sweeps (near sweeps, a whole one when they
-  /// stall), so a quiet cycle still ends in a whole sweep that found nothing.
+  /// whole moves only. A cycle then is one sweep of near moves that lowers E_h, or a sweep of
+  /// near moves that lowers nothing followed by a sweep of whole moves, so a quiet cycle ends
+  /// in a whole sweep that found nothing.
   int near_radius = 0;
   std::size_t near_moves_min_variables = 0;  ///< with near_radius > 0; 0: any size
 
