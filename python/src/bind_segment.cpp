@@ -98,14 +98,6 @@ vision::SegmentationScene scene_from_arrays(const py::handle& image, const py::h
   return scene;
 }
 
-/// A text keyword's value (TypeError naming it for anything but a str).
-std::string text_argument(const py::handle& value, const std::string& name) {
-  if (!py::isinstance<py::str>(value))
-    throw py::type_error(name + ": expected a str, got " +
-                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
-  return value.cast<std::string>();
-}
-
 /// A keyword's value, or `fallback` (the defaults') when it is None.
 double real_or(const py::handle& value, const std::string& name, double fallback) {
   return value.is_none() ? fallback : real_argument(value, name);
@@ -122,12 +114,11 @@ py::dict segment(const py::handle& image, const py::handle& seeds,
                  const py::object& callback, const py::handle& memory) {
   // Every argument left None is the library's segmentation default.
   const vision::SegmentationDefaults defaults = vision::segmentation_defaults();
-  const std::string schedule_text = schedule_argument.is_none()
-                                        ? defaults.schedule
-                                        : text_argument(schedule_argument, "schedule");
+  const std::string schedule_text =
+      schedule_argument.is_none() ? defaults.schedule : text_option(schedule_argument, "schedule");
   const std::string method = method_argument.is_none()
                                  ? std::string(vision::to_string(defaults.method))
-                                 : text_argument(method_argument, "method");
+                                 : text_option(method_argument, "method");
   const double lambda = real_or(lambda_argument, "lambda_", defaults.parameters.lambda);
   const double theta = real_or(theta_argument, "theta", defaults.parameters.theta);
   const double alpha = real_or(alpha_argument, "alpha", defaults.parameters.alpha);

@@ -44,13 +44,6 @@ std::vector<std::pair<std::string, py::handle>> option_items(
   return items;
 }
 
-std::string text_option(const py::handle& value, const std::string& name) {
-  if (!py::isinstance<py::str>(value))
-    throw py::type_error(name + ": expected a str, got " +
-                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
-  return value.cast<std::string>();
-}
-
 /// options['shift_moves']: True, False, or 'auto' (shift moves where some expansion move on the
 /// energy is not submodular, ExpansionOptions::shift_moves_unless_submodular).
 void set_shift_moves(ExpansionOptions& expansion, const py::handle& value,
@@ -96,6 +89,13 @@ std::string option_name(const std::string& key) {
 }
 
 }  // namespace
+
+std::string text_option(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value))
+    throw py::type_error(name + ": expected a str, got " +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+  return value.cast<std::string>();
+}
 
 SolverSpec solver_spec_from(const std::string& method, const py::handle& options,
                             const RunDefaults& defaults, bool on_grid) {

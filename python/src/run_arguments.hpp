@@ -31,6 +31,9 @@ namespace c2f::python {
 SolverSpec solver_spec_from(const std::string& method, const pybind11::handle& options,
                             const RunDefaults& defaults, bool on_grid);
 
+/// A text argument or option (`name`: TypeError for anything but a str).
+std::string text_option(const pybind11::handle& value, const std::string& name);
+
 /// The cooperative cut's solver options from `options` (None or a dict: aux, start,
 /// expansion_cycles, near_radius), as solver_spec_from; what is not named is `defaults`'
 /// (near_radius: defaults.near_radius_for the strategy in use).
