@@ -22,6 +22,15 @@ void RunFlags::declare(ToolOptions& options) {
                         " on a pixel grid, " +
                         std::string(to_string(defaults_.near_seeds_on(false))) + " elsewhere";
   }
+  plateau_tolerance_help_ =
+      "on coarse levels, a decrease over the --plateau steps counts only when larger than this "
+      "fraction of the energy, in [0, 1) (e.g. 1e-4: leave a level whose energy merely creeps "
+      "down)";
+  if (tolerance_depends_on_grid(defaults_)) {
+    plateau_tolerance_help_ += "; default " + format_real(defaults_.plateau_tolerance_on(true)) +
+                               " on a pixel grid, " +
+                               format_real(defaults_.plateau_tolerance_on(false)) + " elsewhere";
+  }
   options
       .text("solver", &solver_,
             "expansion (QPBO where a move is not submodular), swap (semi-metric terms only), lbp "
@@ -97,10 +106,7 @@ void RunFlags::declare(ToolOptions& options) {
             "defaults' number of such steps, or once its energy decrease per second over a sweep "
             "falls below what the original problem is expected to give (its first sweep's rate "
             "times its size over the original problem's)")
-      .real("plateau-tolerance", &plateau_tolerance_, {0.0, 1.0, false, true},
-            "on coarse levels, a decrease over the --plateau steps counts only when larger than "
-            "this fraction of the energy (e.g. 1e-4: leave a level whose energy merely creeps "
-            "down)")
+      .text("plateau-tolerance", &plateau_tolerance_, plateau_tolerance_help_.c_str())
       .integer("final-plateau", &final_plateau_, {0, kMaxSteps},
                "stop after this many steps without decrease on the original problem (0: one "
                "sweep: labels moves for expansion, three times that with --near-radius, label "
@@ -217,7 +223,7 @@ SolverSpec RunFlags::solver_spec(bool on_grid) const {
   return spec;
 }
 
-Options RunFlags::limits() const {
+Options RunFlags::limits(bool on_grid) const {
   Options options;
   if (plateau_ == "rate") {
     options.plateau_steps = {defaults_.plateau_steps};
@@ -231,7 +237,10 @@ Options RunFlags::limits() const {
                                   plateau_ + "'");
     }
   }
-  options.plateau_tolerance = plateau_tolerance_;
+  options.plateau_tolerance =
+      plateau_tolerance_.empty()
+          ? defaults_.plateau_tolerance_on(on_grid)
+          : parse_real_option("--plateau-tolerance", plateau_tolerance_, {0.0, 1.0, false, true});
   options.plateau_steps_at_original = final_plateau_;
   options.time_limit_seconds = time_limit_;
   options.max_total_steps = max_steps_;
@@ -241,7 +250,7 @@ Options RunFlags::limits() const {
 RunConfig RunFlags::config(bool on_grid) const {
   RunConfig config;
   config.solver = solver_spec(on_grid);
-  config.limits = limits();
+  config.limits = limits(on_grid);
   config.progress_rate = plateau_ == "rate";
   config.memory = memory_gib_ == 0.0
                       ? default_memory_budget()

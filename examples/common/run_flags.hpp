@@ -9,6 +9,7 @@
 
 #include "c2f/run/defaults.hpp"
 #include "c2f/run/run_config.hpp"
+#include "c2f/support/number_text.hpp"
 #include "tool_options.hpp"
 
 namespace c2f::examples {
@@ -25,7 +26,8 @@ class RunFlags {
         near_min_variables_(static_cast<long>(defaults.near_moves_min_variables)),
         shift_moves_(shift_moves_value(defaults)),
         plateau_(defaults.progress_rate ? "rate" : std::to_string(defaults.plateau_steps)),
-        plateau_tolerance_(defaults.plateau_tolerance) {}
+        plateau_tolerance_(
+            tolerance_depends_on_grid(defaults) ? "" : format_real(defaults.plateau_tolerance)) {}
 
   /// Declares the eighteen options in `options` (this object receives their values, so it
   /// must outlive options.parse()).
@@ -51,8 +53,13 @@ class RunFlags {
   [[nodiscard]] static bool seeds_depend_on_grid(const RunDefaults& defaults) {
     return defaults.near_seeds_on(true) != defaults.near_seeds_on(false);
   }
+  /// Whether `defaults`' coarse plateau tolerance on a pixel grid differs from that on other
+  /// graphs; then --plateau-tolerance has no single default (empty until given).
+  [[nodiscard]] static bool tolerance_depends_on_grid(const RunDefaults& defaults) {
+    return defaults.plateau_tolerance_on(true) != defaults.plateau_tolerance_on(false);
+  }
   [[nodiscard]] SolverSpec solver_spec(bool on_grid) const;
-  [[nodiscard]] Options limits() const;
+  [[nodiscard]] Options limits(bool on_grid) const;
 
   RunDefaults defaults_;
   std::string solver_ = "expansion", label_order_ = "sequential", maxflow_ = "dynamic",
@@ -71,8 +78,9 @@ class RunFlags {
   double time_limit_ = 0.0;      // seconds on the run clock, 0: none
   long max_steps_ = 0;           // steps in the whole run, 0: none
   std::string plateau_;          // steps without decrease that end a coarse level, or rate
-  double plateau_tolerance_;
-  int final_plateau_ = 0;  // on the original problem; 0: the solver's own convergence
+  std::string plateau_tolerance_;       // empty: the defaults' on a grid or not
+  std::string plateau_tolerance_help_;  // --plateau-tolerance's help, its defaults named
+  int final_plateau_ = 0;               // on the original problem; 0: the solver's own convergence
 };
 
 /// ", near moves of radius R and shift moves on the original problem only" (", near moves of

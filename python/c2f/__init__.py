@@ -78,8 +78,9 @@ def defaults(name: str = "pairwise") -> Dict[str, Any]:
         local in its variables' order, such as a lattice, and on any other), expansion's
         ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where near moves start on any
         other energy and on a grid energy), ``near_graphs``, ``near_min_variables`` and
-        ``shift_moves`` (on the original problem), ``plateau`` and ``plateau_tolerance``
-        (coarse levels). For 'segmentation': ``schedule``, ``method``, ``aux`` (how the
+        ``shift_moves`` (on the original problem), ``plateau``, ``plateau_tolerance`` and
+        ``grid_plateau_tolerance`` (coarse levels; the tolerance on any other energy and on a
+        grid energy). For 'segmentation': ``schedule``, ``method``, ``aux`` (how the
         cooperative cut's auxiliary variables move), ``near_radius`` (its near moves on the
         original problem with aux 'mm'; 'greedy' and 'ceres' make whole moves), ``lambda_``,
         ``theta`` and ``alpha``. Each is the configuration measured best on a tuning set and
@@ -168,7 +169,8 @@ def solve(
         (the driver's ``progress_rate``). None: the defaults' (4 steps).
     plateau_tolerance : float, optional
         On coarse levels, decreases below this fraction of abs(E) do not count. None: the
-        defaults'.
+        defaults' (``grid_plateau_tolerance`` on a grid energy, ``plateau_tolerance`` on any
+        other).
     start : str or ndarray, default 'unary_argmin'
         The first labeling: 'unary_argmin', 'zero', or a labeling of your own (an integer array
         of shape (N,) or the grid's (H, W)); on a coarse first level each group starts at the

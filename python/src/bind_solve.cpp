@@ -58,7 +58,7 @@ bool progress_rate_named(const py::handle& plateau) {
 }
 
 /// The driver's rules from c2f.solve's keywords (None: no limit; plateau and plateau_tolerance
-/// None: the defaults').
+/// None: the defaults', the tolerance's for a pixel grid where the model has a shape).
 Options limits_from(const ModelEnergy& model, const RunDefaults& defaults,
                     const py::handle& time_limit, const py::handle& max_steps,
                     const py::handle& plateau, const py::handle& plateau_tolerance,
@@ -71,7 +71,7 @@ Options limits_from(const ModelEnergy& model, const RunDefaults& defaults,
           ? defaults.plateau_steps
           : static_cast<int>(integer_argument(plateau, "plateau", 1, INT32_MAX))};
   limits.plateau_tolerance = plateau_tolerance.is_none()
-                                 ? defaults.plateau_tolerance
+                                 ? defaults.plateau_tolerance_on(!model.shape.empty())
                                  : real_argument(plateau_tolerance, "plateau_tolerance");
   if (py::isinstance<py::str>(start)) {
     try {
@@ -150,6 +150,7 @@ py::dict defaults_dict(const std::string& name) {
   out["plateau"] = defaults.progress_rate ? py::object(py::str("rate"))
                                           : py::object(py::int_(defaults.plateau_steps));
   out["plateau_tolerance"] = defaults.plateau_tolerance;
+  out["grid_plateau_tolerance"] = defaults.plateau_tolerance_on(true);
   return out;
 }
 

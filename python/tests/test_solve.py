@@ -145,11 +145,12 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     assert set(defaults) == {"grid_schedule", "local_schedule", "general_schedule",
                              "near_radius", "near_seeds",
                              "grid_near_seeds", "near_graphs", "near_min_variables",
-                             "shift_moves", "plateau", "plateau_tolerance"}
+                             "shift_moves", "plateau", "plateau_tolerance",
+                             "grid_plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
     explicit = c2f.solve(energy, defaults["grid_schedule"], plateau=defaults["plateau"],
-                         plateau_tolerance=defaults["plateau_tolerance"],
+                         plateau_tolerance=defaults["grid_plateau_tolerance"],
                          options={"near_radius": defaults["near_radius"],
                                   "near_seeds": defaults["grid_near_seeds"],
                                   "near_graphs": defaults["near_graphs"],
@@ -180,7 +181,8 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
         result = c2f.solve(read)
         np.testing.assert_array_equal(result.labeling.reshape(-1), cli)
         assert f"schedule {defaults[schedule]}" in (out / "summary.txt").read_text()
-        named = c2f.solve(read, defaults[schedule])
+        tolerance = defaults["grid_plateau_tolerance" if grid else "plateau_tolerance"]
+        named = c2f.solve(read, defaults[schedule], plateau_tolerance=tolerance)
         np.testing.assert_array_equal(result.trace["energy"], named.trace["energy"])
         np.testing.assert_array_equal(result.trace["variables"], named.trace["variables"])
     # There the local schedule's coarse level (three rounds of neighbours: two keep more than

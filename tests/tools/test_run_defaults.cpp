@@ -10,8 +10,8 @@
 #include "c2f/lift/schedule.hpp"
 #include "c2f/run/defaults.hpp"
 #include "c2f/run/stereo_run.hpp"
-#include "support/random_models.hpp"
 #include "run_flags.hpp"
+#include "support/random_models.hpp"
 #include "tool_options.hpp"
 
 using namespace c2f;
@@ -88,6 +88,21 @@ TEST_CASE("the run flags' defaults are the library's RunDefaults", "[tools][defa
   }
   CHECK_THROWS_WITH(config_with_flags(pairwise, {"--near-radius", "0", "--near-seeds", "label"}),
                     Catch::Contains("--near-seeds: has no effect without --near-radius"));
+  // Their coarse plateau's tolerance differs on a grid too; a named --plateau-tolerance is kept
+  // on either, and one outside [0, 1) is refused.
+  CHECK(pairwise.plateau_tolerance_on(true) != pairwise.plateau_tolerance_on(false));
+  for (const bool on_grid : {true, false}) {
+    CHECK(pairwise.config(on_grid).limits.plateau_tolerance ==
+          pairwise.plateau_tolerance_on(on_grid));
+    CHECK(config_with_flags(pairwise, {"--plateau-tolerance", "0.003"}, on_grid)
+              .limits.plateau_tolerance == 0.003);
+    CHECK(config_with_flags(pairwise, {"--plateau-tolerance", "0"}, on_grid)
+              .limits.plateau_tolerance == 0.0);
+  }
+  CHECK_THROWS_WITH(config_with_flags(pairwise, {"--plateau-tolerance", "1"}),
+                    Catch::Contains("--plateau-tolerance"));
+  CHECK_THROWS_WITH(config_with_flags(pairwise, {"--plateau-tolerance", "lots"}),
+                    Catch::Contains("--plateau-tolerance"));
   // The stereo defaults differ from a generic energy's: the loop above compares two configs.
   CHECK(vision::stereo_defaults().near_radius != pairwise_defaults().near_radius);
 }

@@ -20,7 +20,7 @@ struct RunDefaults {
   /// variables' order (edges_local: a lattice, a grid given without its shape); empty:
   /// general_schedule there too.
   std::string local_schedule;
-  int near_radius = 0;           ///< expansion's near moves, original problem only (0: none)
+  int near_radius = 0;  ///< expansion's near moves, original problem only (0: none)
   /// Where those near moves start (ExpansionOptions::near_seeds) on any graph but a pixel grid.
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
   /// Where they start on a pixel grid (empty: near_seeds).
@@ -35,9 +35,14 @@ struct RunDefaults {
   /// Shift moves also on an energy where some expansion move is not submodular
   /// (ExpansionOptions::shift_moves_unless_submodular), original problem only.
   bool shift_moves_unless_submodular = false;
-  int plateau_steps = 4;           ///< steps without decrease that end a coarse level
-  double plateau_tolerance = 0.0;  ///< the plateau rule's tolerance on coarse levels
-  bool progress_rate = false;      ///< RunConfig::progress_rate
+  int plateau_steps = 4;  ///< steps without decrease that end a coarse level
+  /// The plateau rule's tolerance on coarse levels (a decrease over plateau_steps counts only
+  /// when larger than this fraction of the energy), on a pixel grid too unless
+  /// grid_plateau_tolerance is set.
+  double plateau_tolerance = 0.0;
+  /// That tolerance on a pixel grid (empty: plateau_tolerance).
+  std::optional<double> grid_plateau_tolerance;
+  bool progress_rate = false;  ///< RunConfig::progress_rate
 
   /// The schedule text for `energy`: grid_schedule on a pixel grid (on_grid), else
   /// local_schedule (when set) where its edges are local (edges_local), else
@@ -47,6 +52,10 @@ struct RunDefaults {
   /// grid_near_seeds (when set) on a pixel grid, else near_seeds.
   [[nodiscard]] NearSeeds near_seeds_on(bool on_grid) const {
     return on_grid && grid_near_seeds ? *grid_near_seeds : near_seeds;
+  }
+  /// grid_plateau_tolerance (when set) on a pixel grid, else plateau_tolerance.
+  [[nodiscard]] double plateau_tolerance_on(bool on_grid) const {
+    return on_grid && grid_plateau_tolerance ? *grid_plateau_tolerance : plateau_tolerance;
   }
   /// A RunConfig with these moves and rules for an energy on a pixel grid or not: expansion on
   /// our max-flow with near and shift moves on the original problem only, no time or step
@@ -63,8 +72,8 @@ struct RunDefaults {
 /// (e.g. truncated quadratic); on the original problem near moves of radius 3 from their label
 /// (on a pixel grid of 16 labels or more without shift moves also from the labels next to it:
 /// NearSeeds::label_and_adjacent) where its edges are local (a grid, a lattice) and it has at
-/// least 200000 variables, whole moves elsewhere; a coarse level ends after 4 moves without
-/// decrease.
+/// least 200000 variables, whole moves elsewhere; a coarse level ends after 4 moves that
+/// together lower the energy by no more than 1e-4 of it (on a pixel grid: by nothing).
 [[nodiscard]] RunDefaults pairwise_defaults();
 
 }  // namespace c2f
