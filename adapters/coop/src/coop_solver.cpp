@@ -154,6 +154,9 @@ Labeling CoopSolver::expand_for(const CoopAuxiliary& h, std::span<const Label> s
     expansion_options.near_radius = options_.near_radius;
     expansion_options.near_seeds = NearSeeds::label;
     expansion_options.near_moves_min_variables = options_.near_moves_min_variables;
+    // A step that confirms convergence repeats the last whole sweep on E_h with little
+    // changed: resumed from its graphs it costs a fraction of a sweep from zero flow.
+    expansion_options.recycle_with_near_moves = true;
     const std::size_t problems = kept_problem_bytes(expansion_options, problem_size(pairwise))
                                      .value_or(static_cast<std::size_t>(-1));
     expansion_options.problem_memory_limit = options_.graph_memory_limit / 4;

@@ -174,12 +174,15 @@ std::optional<std::size_t> kept_problem_bytes(const ExpansionOptions& /*options*
 }
 
 std::size_t recycled_graph_limit(const ExpansionOptions& options) noexcept {
-  return options.near_radius > 0 ? 0 : options.graph_memory_limit;
+  return options.near_radius > 0 && !options.recycle_with_near_moves ? 0
+                                                                     : options.graph_memory_limit;
 }
 
 std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& options,
                                               const ProblemSize& size, GraphStorage storage) {
-  if (options.near_radius > 0) return std::size_t{0};  // recycled_graph_limit
+  if (options.near_radius > 0 && !options.recycle_with_near_moves) {
+    return std::size_t{0};  // recycled_graph_limit
+  }
   return graphs_bytes(label_count(size), size, storage);
 }
 

@@ -27,7 +27,8 @@ struct MoveOptions {
   /// default DynamicMaxFlow), each label (expansion) or label pair (swap) keeps its own move
   /// graphs from its second move on while they fit (binary_move.hpp), so a repeated move costs
   /// in proportion to what changed since; moves beyond the limit share one graph. 0 turns
-  /// recycling off; expansion with near moves recycles none (recycled_graph_limit). With exact
+  /// recycling off; expansion with near moves recycles none unless asked to
+  /// (recycled_graph_limit). With exact
   /// arithmetic results do not depend on it; with rounding, ties between minimum cuts may break
   /// differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
@@ -111,6 +112,13 @@ struct ExpansionOptions : MoveOptions {
   int near_radius = 0;
   /// See near_radius: 1e-4 was the best of 0, 1e-4 and 3e-4 on Teddy (docs/performance.md).
   double near_sweep_gain = 1e-4;
+  /// With near_radius > 0: the whole sweeps still recycle each label's move graph within
+  /// graph_memory_limit (false, the default: none, recycled_graph_limit). That pays where the
+  /// whole sweeps after near sweeps repeat with few changes and few labels, as in a cooperative
+  /// cut's majorise-minimise steps on a binary image. With first_move_own_graph each label's
+  /// first whole move builds the graph its later ones resume (CoopSolver sets both: the step
+  /// that confirms convergence resumes its graphs instead of solving them from zero flow).
+  bool recycle_with_near_moves = false;
   /// Where near moves start (NearSeeds); only with near_radius > 0.
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
   /// With near_radius > 0: make near moves only on an energy whose edges are local in its
@@ -237,7 +245,8 @@ inline constexpr double kMaxShareBetweenParts = 0.05;
 /// they save: on Teddy (flat, near radius 5, shift moves) 15.8-16.1 s with no recycled graphs,
 /// 17.0-17.2 s with 0.3 GiB of them, 18.4 s with all; with whole moves only, recycling all
 /// graphs was the faster (15.2 s against 18.0-19.8 s). A solver bound to an energy on which it
-/// makes no near moves (near_moves_only_if_local) recycles within graph_memory_limit.
+/// makes no near moves (near_moves_only_if_local) recycles within graph_memory_limit, and so
+/// does one with recycle_with_near_moves.
 [[nodiscard]] std::size_t recycled_graph_limit(const ExpansionOptions& options) noexcept;
 
 /// How a max-flow backend stores its graphs, for the memory estimates below: in flat arrays
