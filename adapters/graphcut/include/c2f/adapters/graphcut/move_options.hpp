@@ -28,9 +28,8 @@ struct MoveOptions {
   /// graphs from its second move on while they fit (binary_move.hpp), so a repeated move costs
   /// in proportion to what changed since; moves beyond the limit share one graph. 0 turns
   /// recycling off; expansion with near moves recycles none unless asked to
-  /// (recycled_graph_limit). With exact
-  /// arithmetic results do not depend on it; with rounding, ties between minimum cuts may break
-  /// differently.
+  /// (recycled_graph_limit). With exact arithmetic results do not depend on it; with rounding,
+  /// ties between minimum cuts may break differently.
   std::size_t graph_memory_limit = std::size_t{13} << 28;  // 3.25 GiB
   /// With recycling, false (the default): a key's first move re-solves one shared graph from
   /// whatever move it solved before, and the key gets a graph of its own, a copy of the graph
