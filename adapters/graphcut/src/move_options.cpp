@@ -163,6 +163,11 @@ std::size_t label_count(const ProblemSize& size) {
   return static_cast<std::size_t>(std::max(size.labels, 0));
 }
 
+/// Whether `options` make near moves and keep no move graphs with them (recycled_graph_limit).
+bool near_moves_keep_no_graphs(const ExpansionOptions& options) noexcept {
+  return options.near_radius > 0 && !options.recycle_with_near_moves;
+}
+
 }  // namespace
 
 std::optional<std::size_t> kept_problem_bytes(const ExpansionOptions& /*options*/,
@@ -174,15 +179,12 @@ std::optional<std::size_t> kept_problem_bytes(const ExpansionOptions& /*options*
 }
 
 std::size_t recycled_graph_limit(const ExpansionOptions& options) noexcept {
-  return options.near_radius > 0 && !options.recycle_with_near_moves ? 0
-                                                                     : options.graph_memory_limit;
+  return near_moves_keep_no_graphs(options) ? 0 : options.graph_memory_limit;
 }
 
 std::optional<std::size_t> wanted_graph_bytes(const ExpansionOptions& options,
                                               const ProblemSize& size, GraphStorage storage) {
-  if (options.near_radius > 0 && !options.recycle_with_near_moves) {
-    return std::size_t{0};  // recycled_graph_limit
-  }
+  if (near_moves_keep_no_graphs(options)) return std::size_t{0};
   return graphs_bytes(label_count(size), size, storage);
 }
 

@@ -86,9 +86,9 @@ class ExpansionSolver {
     shift_moves_ = makes_shift_moves(options_, energy);
     const std::size_t keys = static_cast<std::size_t>(energy.num_labels()) + shift_steps();
     near_radius_ = makes_near_moves(options_, energy) ? options_.near_radius : 0;
-    // recycled_graph_limit, for this energy: none with near moves unless asked for.
+    // recycled_graph_limit, for this energy (no near moves on it: the whole limit).
     const std::size_t graph_limit =
-        near_radius_ > 0 && !options_.recycle_with_near_moves ? 0 : options_.graph_memory_limit;
+        near_radius_ > 0 ? recycled_graph_limit(options_) : options_.graph_memory_limit;
     regions_ = {};
     if (options_.regions > 1 && near_radius_ > 0) {
       regions_.bind(energy, static_cast<std::size_t>(options_.regions), keys, graph_limit,
