@@ -66,6 +66,12 @@ void RunFlags::declare(ToolOptions& options) {
                "energy's edges between parts, else 1 (e.g. a random graph), 1 with another; 1: "
                "one part "
                "(docs/performance.md, \"The solve\")")
+      .text("bp-schedule", &bp_schedule_,
+            "lbp: sequential (variables in index order, each with the newest messages), "
+            "parallel (every message from the previous iteration's) or bands (bands of "
+            "consecutive variables, sequential within each, the messages between bands from the "
+            "previous iteration, the bands at once on --threads threads; the same output for "
+            "every thread count); default bands")
       .integer("near-radius", &near_radius_, {0, 1000000},
                "expansion: 0 (every move may change every variable) or r: a move to a label frees "
                "only the variables within r edges of that label (or, with --near-seeds "
@@ -164,6 +170,10 @@ SolverSpec RunFlags::solver_spec(bool on_grid) const {
                                 "' has none");
   if (regions_ > 1 && near_radius_ == 0)
     throw std::invalid_argument("--regions: has no effect without --near-radius");
+  if (kind != SolverKind::lbp && !bp_schedule_.empty())
+    throw std::invalid_argument("--bp-schedule with --solver " + solver_ +
+                                ": it schedules loopy BP's messages; solver '" + solver_ +
+                                "' sends none");
   if (kind != SolverKind::expansion && flow_parts_ != ExpansionOptions{}.flow_parts)
     throw std::invalid_argument("--flow-parts with --solver " + solver_ +
                                 ": it solves expansion's moves; solver '" + solver_ + "' has none");
@@ -208,7 +218,12 @@ SolverSpec RunFlags::solver_spec(bool on_grid) const {
         refuse("lbp visits every message in every step; the order '" + label_order_ +
                "' applies to expansion, swap and icm");
       }
-      spec.original = LbpOptions{};
+      spec.original = LbpOptions{
+          .schedule = bp_schedule_.empty()
+                          ? LbpOptions{}.schedule
+                          : with_flag("--bp-schedule",
+                                      [&] { return bp_schedule_from_string(bp_schedule_); }),
+          .threads = threads_};
       break;
     case SolverKind::icm: {
       if (order == VisitOrder::frequency)

@@ -70,6 +70,7 @@ class RunFlags {
   int regions_ = ExpansionOptions{}.regions;
   int flow_parts_ = ExpansionOptions{}.flow_parts;
   int near_radius_;
+  std::string bp_schedule_;      // sequential, parallel or bands; empty: LbpOptions' default
   std::string near_seeds_;       // label_and_cheapest, label, label_and_adjacent; empty: defaults'
   std::string near_seeds_help_;  // --near-seeds' help, its defaults named
   std::string near_graphs_;      // local or any

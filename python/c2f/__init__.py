@@ -155,7 +155,10 @@ def solve(
           default; 'all'), ``maxflow`` ('dynamic', ours with recycled graphs, the default;
           'boost'; 'kolmogorov' in builds with it);
         - swap: ``order``, ``seed``, ``tolerance``, ``maxflow``;
-        - lbp: ``schedule`` ('sequential' or 'parallel'), ``damping`` in [0, 1);
+        - lbp: ``schedule`` ('bands', the default: bands of consecutive variables, each sent
+          in order, the bands at once; 'sequential'; 'parallel'), ``damping`` in [0, 1),
+          ``threads`` (0: all cores; 'sequential' sends on one), ``band_variables``
+          (variables per band; default the larger of 4096 and a sixteenth of them);
         - icm: ``order`` ('sequential' or 'random'), ``seed``, ``tolerance``.
     time_limit : float, optional
         Stop once the run clock passes this many seconds (None: no limit).
@@ -189,9 +192,9 @@ def solve(
         At most this many GiB of the budget for recycled move graphs (0: no recycling; None:
         all that the budget leaves).
     threads : int, optional
-        The cores expansion solves on (``options['threads']``, which may be given instead but
-        not as well; None: that option's default, 0: every core). The result is the same bits
-        for every count. Only expansion takes it.
+        The cores expansion or lbp solves on (``options['threads']``, which may be given
+        instead but not as well; None: that option's default, 0: every core). The result is
+        the same bits for every count. Only expansion and lbp take it.
 
     Returns
     -------
@@ -212,8 +215,9 @@ def solve(
     The GIL is released while the solver runs.
     """
     if threads is not None:
-        if method != "expansion":
-            raise ValueError(f"threads: only expansion solves on several threads, not {method!r}")
+        if method not in ("expansion", "lbp"):
+            raise ValueError("threads: only expansion and lbp solve on several threads, "
+                             f"not {method!r}")
         if options is not None and "threads" in options:
             raise ValueError("threads: given as well as options['threads']; give one")
         options = dict(options or {}, threads=threads)

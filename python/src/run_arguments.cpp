@@ -179,10 +179,16 @@ SolverSpec solver_spec_from(const std::string& method, const py::handle& options
     }
     case SolverKind::lbp: {
       LbpOptions lbp;
-      for (const auto& [key, value] : option_items(options, owner, {"schedule", "damping"})) {
+      for (const auto& [key, value] :
+           option_items(options, owner, {"schedule", "damping", "threads", "band_variables"})) {
         const std::string name = option_name(key);
         if (key == "schedule") {
           lbp.schedule = named_value(value, name, bp_schedule_from_string);
+        } else if (key == "threads") {
+          lbp.threads = static_cast<int>(integer_argument(value, name, 0, 1024));
+        } else if (key == "band_variables") {
+          lbp.band_variables =
+              static_cast<std::size_t>(integer_argument(value, name, 1, INT64_MAX));
         } else {
           lbp.damping = real_argument(value, name);
         }

@@ -365,6 +365,32 @@ def test_the_solve_gives_the_same_bits_on_one_thread_and_on_several(rng):
         c2f.solve(energy, options={"threads": -1})
 
 
+def test_loopy_bp_in_bands_gives_the_same_bits_on_one_thread_and_on_several(rng):
+    # 160 x 110 pixels in bands of 4096 variables (the floor of the default): 5 bands.
+    energy = c2f.Energy.grid(rng.random((160, 110, 5)), c2f.Term.potts(), weight=0.3)
+    runs = [c2f.solve(energy, "flat", method="lbp", options={"schedule": "bands"},
+                      threads=threads, max_steps=15)
+            for threads in (1, 2, 3)]
+    assert "solve: BP messages by bands of 4096 variables on 1 thread" in runs[0].summary
+    assert "solve: BP messages by bands of 4096 variables on 3 threads" in runs[2].summary
+    for run in runs[1:]:
+        assert np.array_equal(run.labeling, runs[0].labeling)
+        assert np.array_equal(run.trace["energy"], runs[0].trace["energy"])
+    assert runs[0].energy == energy.evaluate(runs[0].labeling)
+    assert np.all(np.diff(runs[0].trace["energy"]) <= 0.0)
+    sequential = c2f.solve(energy, "flat", method="lbp", options={"schedule": "sequential"},
+                           max_steps=3)
+    assert "solve: BP messages in variable order on one thread" in sequential.summary
+    small = c2f.solve(energy, "flat", method="lbp",
+                      options={"schedule": "bands", "band_variables": 2000, "threads": 2},
+                      max_steps=3)
+    assert "solve: BP messages by bands of 2000 variables on 2 threads" in small.summary
+    with pytest.raises(ValueError, match="band_variables"):
+        c2f.solve(energy, method="lbp", options={"band_variables": 0})
+    with pytest.raises(ValueError, match="only expansion and lbp"):
+        c2f.solve(energy, method="swap", threads=2)
+
+
 def test_the_max_flow_in_parts_gives_the_same_bits_on_one_thread_and_on_several(rng):
     # 160 x 110 pixels: whole moves' max-flow in 4 bands of rows (ExpansionOptions::flow_parts).
     energy = c2f.Energy.grid(rng.random((160, 110, 6)), c2f.Term.truncated_quadratic(4.0, 6),

@@ -174,6 +174,16 @@ TEST_CASE("c2f-stereo writes the same bytes on one thread and on several",
     CHECK(read_bytes(big / schedule / "run1" / "summary.txt")
               .find("solve: moves by 4 regions on 2 threads") != std::string::npos);
   }
+  // Loopy BP by bands of 4096 of the 19200 variables (LbpOptions' default layout): 5 bands.
+  const std::string lbp_inputs = (big / "left.png").string() + " " + (big / "right.png").string() +
+                                 " --gt " + (big / "gt.png").string() +
+                                 " --gt-divisor 4 --labels 16";
+  check_two_runs_agree(C2F_STEREO_BINARY,
+                       lbp_inputs + " --schedule flat --solver lbp --max-steps 6", big / "lbp",
+                       {"--threads 1", "--threads 3"});
+  CHECK(read_bytes(big / "lbp" / "run1" / "summary.txt")
+            .find("solve: BP messages by bands of 4096 variables on 3 threads") !=
+        std::string::npos);
 }
 
 TEST_CASE("c2f-segment writes the same bytes twice", "[cli][determinism][segment]") {

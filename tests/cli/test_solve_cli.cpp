@@ -130,6 +130,10 @@ TEST_CASE("c2f-solve refuses bad models and options by name", "[solve][cli][malf
            {grid + out + " --flow-parts 4 --maxflow boost",
             "--flow-parts: only our max-flow (--maxflow dynamic) solves in parts"},
            {grid + out + " --flow-parts 256", "--flow-parts"},
+           {grid + out + " --bp-schedule bands",
+            "--bp-schedule with --solver expansion: it schedules loopy BP's messages"},
+           {grid + out + " --solver lbp --bp-schedule async",
+            "--bp-schedule: unknown BP schedule 'async'"},
            // c2f-solve's defaults make whole moves (shift moves only where an expansion move is
            // not submodular: --shift-moves auto), so these flags are asked for, not defaults;
            // --near-radius 0 says so again.

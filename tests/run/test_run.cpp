@@ -218,6 +218,33 @@ TEST_CASE("run() is coarse_to_fine with the solver the spec names, step for step
   CHECK_THAT(report.memory_report(), Catch::Contains(", floor ") && Catch::Contains(" used"));
 }
 
+TEST_CASE("run() reports loopy BP's schedule, bands and threads", "[run][lbp]") {
+  Rng rng(32);
+  const PairwiseEnergy energy = random_grid_energy(rng, 100, 90, 4);  // 9000 variables
+  RunConfig config;
+  config.limits.max_total_steps = 4;
+  const auto report_of = [&](BpSchedule schedule, int threads, std::size_t band_variables) {
+    LbpOptions lbp{schedule, 0.0};
+    lbp.threads = threads;
+    lbp.band_variables = band_variables;
+    config.solver.original = lbp;
+    PartitionList flat;
+    return run(energy, flat, config);
+  };
+  const RunReport bands = report_of(BpSchedule::bands, 3, 0);
+  CHECK(bands.bp_band_variables == LbpOptions::kMinBandVariables);  // 3 bands
+  CHECK(bands.threads_line() == "solve: BP messages by bands of 4096 variables on 3 threads");
+  // No more threads than bands.
+  CHECK(report_of(BpSchedule::bands, 3, 5000).threads_line() ==
+        "solve: BP messages by bands of 5000 variables on 2 threads");
+  CHECK(report_of(BpSchedule::sequential, 3, 0).threads_line() ==
+        "solve: BP messages in variable order on one thread");
+  CHECK(report_of(BpSchedule::parallel, 2, 0).threads_line() ==
+        "solve: BP messages from the previous iteration's on 2 threads");
+  CHECK(report_of(BpSchedule::bands, 1, 0).summary.labeling == bands.summary.labeling);
+  CHECK(detail::partition_threads(LbpOptions{.threads = 2}) == 2);
+}
+
 TEST_CASE("a run's graph memory is what the budget leaves, at most what the config says",
           "[run][memory]") {
   Rng rng(32);

@@ -1,6 +1,7 @@
 #include "c2f/adapters/lbp/lbp.hpp"
 #include "c2f/support/enum_names.hpp"
 #include "c2f/support/memory_need.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,14 @@
 #include <stdexcept>
 
 namespace c2f {
+namespace {
+
+/// Edges per task of the copy of the messages between bands.
+constexpr std::size_t kCopyChunk = 1024;
+/// Variables per task of decoding.
+constexpr std::size_t kDecodeChunk = 4096;
+
+}  // namespace
 
 std::string_view to_string(BpSchedule schedule) {
   switch (schedule) {
@@ -15,17 +24,20 @@ std::string_view to_string(BpSchedule schedule) {
       return "sequential";
     case BpSchedule::parallel:
       return "parallel";
+    case BpSchedule::bands:
+      return "bands";
   }
   return "unknown";
 }
 
 BpSchedule bp_schedule_from_string(std::string_view text) {
-  constexpr BpSchedule kAll[] = {BpSchedule::sequential, BpSchedule::parallel};
+  constexpr BpSchedule kAll[] = {BpSchedule::sequential, BpSchedule::parallel, BpSchedule::bands};
   return enum_from_string(text, kAll, "BP schedule");
 }
 
 std::string LbpOptions::validate() const {
   if (!(damping >= 0.0 && damping < 1.0)) return "damping must be in [0, 1)";
+  if (threads < 0) return "threads must be >= 0 (0: the machine's cores)";
   return {};
 }
 
@@ -48,10 +60,30 @@ void LbpSolver::bind(const PairwiseEnergy& energy, std::span<const Label> start)
   const auto edges = energy.edges();
   incidence_ = EdgeIncidence(energy);
   messages_.assign(2 * edges.size() * num_labels_, 0.0);
-  if (options_.schedule == BpSchedule::parallel) next_messages_.assign(messages_.size(), 0.0);
-  belief_.resize(num_labels_);
-  h_.resize(num_labels_);
-  scratch_.resize(num_labels_);
+  const std::size_t n = energy.num_variables();
+  switch (options_.schedule) {
+    case BpSchedule::sequential:
+      band_ = std::max<std::size_t>(n, 1);
+      break;
+    case BpSchedule::parallel:
+      band_ = 1;
+      break;
+    case BpSchedule::bands:
+      band_ = options_.band_variables > 0
+                  ? options_.band_variables
+                  : std::max(LbpOptions::kMinBandVariables,
+                             (n + LbpOptions::kDefaultBands - 1) / LbpOptions::kDefaultBands);
+      break;
+  }
+  edges_between_bands_.clear();
+  if (options_.schedule == BpSchedule::bands) {
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (edges[e].u / band_ != edges[e].v / band_)
+        edges_between_bands_.push_back(static_cast<std::uint32_t>(e));
+    }
+  }
+  const bool buffered = options_.schedule == BpSchedule::parallel || !edges_between_bands_.empty();
+  next_messages_.assign(buffered ? messages_.size() : 0, 0.0);
   best_.assign(start.begin(), start.end());
   decoded_ = best_;
   best_energy_ = energy.evaluate_unchecked(best_);
@@ -70,7 +102,7 @@ void LbpSolver::compute_belief(std::size_t v, std::span<const double> messages,
 
 // out(l_to) = min over l_from of h(l_from) + cost of the edge, normalised to minimum 0.
 void LbpSolver::compute_message(const Edge& edge, bool from_first, std::span<const double> h,
-                                std::span<double> out) {
+                                std::span<double> out) const {
   const PairwiseTerm& term = energy_->terms()[edge.term];
   const double w = edge.weight;
   const std::size_t L = num_labels_;
@@ -108,36 +140,99 @@ void LbpSolver::compute_message(const Edge& edge, bool from_first, std::span<con
   for (std::size_t l = 0; l < L; ++l) out[l] -= out_min;
 }
 
-double LbpSolver::step() {
-  if (energy_ == nullptr) throw std::logic_error("LbpSolver::step: call bind() first");
-  const std::size_t n = energy_->num_variables();
+double LbpSolver::send_from(std::size_t first, std::size_t last, bool in_place, Scratch& scratch) {
   const auto edges = energy_->edges();
-  const bool parallel = options_.schedule == BpSchedule::parallel;
-  std::vector<double>& target = parallel ? next_messages_ : messages_;
   const double damping = options_.damping;
   double message_change = 0.0;
-  for (std::size_t v = 0; v < n; ++v) {
-    compute_belief(v, messages_, belief_);
+  for (std::size_t v = first; v < last; ++v) {
+    compute_belief(v, messages_, scratch.belief);
     for (const Incidence& inc : incidence_.of(v)) {
+      const Edge& edge = edges[inc.edge];
+      const std::size_t to = inc.is_first ? edge.v : edge.u;
       const double* in = messages_.data() + message_index(inc.edge, !inc.is_first);
-      for (std::size_t l = 0; l < num_labels_; ++l) h_[l] = belief_[l] - in[l];
-      compute_message(edges[inc.edge], inc.is_first, h_, scratch_);
-      double* out = target.data() + message_index(inc.edge, inc.is_first);
-      const double* old = messages_.data() + message_index(inc.edge, inc.is_first);
+      for (std::size_t l = 0; l < num_labels_; ++l) scratch.h[l] = scratch.belief[l] - in[l];
+      compute_message(edge, inc.is_first, scratch.h, scratch.out);
+      const std::size_t at = message_index(inc.edge, inc.is_first);
+      const bool here = in_place && to >= first && to < last;
+      double* out = (here ? messages_ : next_messages_).data() + at;
+      const double* old = messages_.data() + at;
       for (std::size_t l = 0; l < num_labels_; ++l) {
-        const double value = (1.0 - damping) * scratch_[l] + damping * old[l];
+        const double value = (1.0 - damping) * scratch.out[l] + damping * old[l];
         message_change = std::max(message_change, std::abs(value - old[l]));
         out[l] = value;
       }
     }
   }
-  if (parallel) messages_.swap(next_messages_);
-  for (std::size_t v = 0; v < n; ++v) {
-    compute_belief(v, messages_, belief_);
-    decoded_[v] =
-        static_cast<Label>(std::min_element(belief_.begin(), belief_.end()) - belief_.begin());
+  return message_change;
+}
+
+void LbpSolver::decode() {
+  parallel_for_chunks(
+      energy_->num_variables(), kDecodeChunk,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        std::vector<double> belief(num_labels_);
+        for (std::size_t v = first; v < last; ++v) {
+          compute_belief(v, messages_, belief);
+          decoded_[v] =
+              static_cast<Label>(std::min_element(belief.begin(), belief.end()) - belief.begin());
+        }
+      },
+      options_.threads);
+}
+
+double LbpSolver::decoded_energy() const {
+  constexpr std::size_t kChunk = PairwiseEnergy::kEvaluationChunk;
+  const std::size_t n = energy_->num_variables();
+  const std::size_t m = energy_->edges().size();
+  const std::size_t unary_chunks = (n + kChunk - 1) / kChunk;
+  std::vector<double> sums(unary_chunks + (m + kChunk - 1) / kChunk);
+  parallel_for(
+      sums.size(),
+      [&](std::size_t c) {
+        sums[c] = c < unary_chunks
+                      ? energy_->unary_sum(decoded_, c * kChunk, std::min(n, (c + 1) * kChunk))
+                      : energy_->pairwise_sum(decoded_, (c - unary_chunks) * kChunk,
+                                              std::min(m, (c - unary_chunks + 1) * kChunk));
+      },
+      options_.threads);
+  double total = 0.0;  // in evaluate_unchecked's order, so the same bits
+  for (const double sum : sums) total += sum;
+  return total;
+}
+
+double LbpSolver::step() {
+  if (energy_ == nullptr) throw std::logic_error("LbpSolver::step: call bind() first");
+  const std::size_t n = energy_->num_variables();
+  // Each band's task sends from its own variables; `sequential` is one band sent in place,
+  // `parallel` bands of one variable whose every message waits in next_messages_.
+  const bool in_place = options_.schedule != BpSchedule::parallel;
+  const std::size_t chunk = options_.schedule == BpSchedule::parallel ? kParallelChunk : band_;
+  const std::size_t tasks = (n + chunk - 1) / chunk;
+  std::vector<double> change(tasks, 0.0);
+  parallel_for(
+      tasks,
+      [&](std::size_t t) {
+        Scratch scratch(num_labels_);
+        change[t] = send_from(t * chunk, std::min(n, (t + 1) * chunk), in_place, scratch);
+      },
+      options_.schedule == BpSchedule::sequential ? 1 : options_.threads);
+  const double message_change =
+      change.empty() ? 0.0 : *std::max_element(change.begin(), change.end());
+  if (options_.schedule == BpSchedule::parallel) {
+    messages_.swap(next_messages_);
+  } else if (!edges_between_bands_.empty()) {
+    parallel_for_chunks(
+        edges_between_bands_.size(), kCopyChunk,
+        [&](std::size_t, std::size_t first, std::size_t last) {
+          for (std::size_t i = first; i < last; ++i) {
+            const std::size_t at = message_index(edges_between_bands_[i], true);
+            std::copy_n(next_messages_.data() + at, 2 * num_labels_, messages_.data() + at);
+          }
+        },
+        options_.threads);
   }
-  const double decoded_energy = energy_->evaluate_unchecked(decoded_);
+  decode();
+  const double decoded_energy = this->decoded_energy();
   last_ = {};
   last_.message_change = message_change;
   if (decoded_energy < best_energy_) {

@@ -52,6 +52,17 @@ std::string RunReport::threads_line() const {
   const auto on = [](unsigned threads) {
     return " on " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
   };
+  if (bp_schedule) {
+    switch (*bp_schedule) {
+      case BpSchedule::sequential:
+        return "solve: BP messages in variable order on one thread";
+      case BpSchedule::parallel:
+        return "solve: BP messages from the previous iteration's" + on(solve_threads);
+      case BpSchedule::bands:
+        return "solve: BP messages by bands of " + std::to_string(bp_band_variables) +
+               " variables" + on(solve_threads);
+    }
+  }
   const std::string near =
       near_radius <= 0 ? "" : near_moves_text(near_radius, near_seeds, SeedsAs::in_use);
   const std::string shifts = shift_moves ? " with shift moves" : "";

@@ -78,6 +78,11 @@ struct RunReport {
   /// they start on it (near_seeds_in_use).
   int near_radius = 0;
   NearSeeds near_seeds = NearSeeds::label_and_cheapest;
+  /// Under loopy BP on the original problem: its schedule and the variables per band its
+  /// messages were sent in (LbpSolver::band_variables); std::nullopt and 0 for other solvers.
+  /// solve_threads is then the threads that sent the messages.
+  std::optional<BpSchedule> bp_schedule;
+  std::size_t bp_band_variables = 0;
 
   /// "memory budget 5.9 GiB (a quarter of ...), recycled move graphs up to 2.1 GiB, kept move
   /// problems 12.0 MiB" (the second part for solvers that recycle, the third when problems are
@@ -92,7 +97,9 @@ struct RunReport {
   /// move over every variable on one thread" (the original problem's binding), with ", max-flow
   /// in 4 parts on 2 threads" after the moves when the max-flow of moves over every variable is
   /// solved in parts, and ending " with shift moves" (" and shift moves" after the regions' near
-  /// moves) when it makes them, as the tools' summaries write it.
+  /// moves) when it makes them, as the tools' summaries write it. Under loopy BP: "solve: BP
+  /// messages by bands of 19200 variables on 2 threads", "... in variable order on one thread"
+  /// or "... from the previous iteration's on 2 threads".
   [[nodiscard]] std::string threads_line() const;
 };
 

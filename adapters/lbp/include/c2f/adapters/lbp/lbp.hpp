@@ -10,6 +10,7 @@
 // O(L^2) otherwise.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -26,6 +27,10 @@ namespace c2f {
 enum class BpSchedule {
   sequential,  ///< variables in index order; each sends with the newest incoming messages
   parallel,    ///< every message of an iteration computed from the previous iteration's
+  /// Bands of consecutive variables (LbpOptions::band_variables), each band as `sequential`
+  /// within itself, a message from another band taken from the previous iteration: the bands
+  /// are sent at once on LbpOptions::threads threads.
+  bands,
 };
 
 std::string_view to_string(BpSchedule schedule);
@@ -33,8 +38,22 @@ std::string_view to_string(BpSchedule schedule);
 BpSchedule bp_schedule_from_string(std::string_view text);
 
 struct LbpOptions {
-  BpSchedule schedule = BpSchedule::sequential;
+  /// `bands` by default: on the grids and the stereo energy measured it came as low as
+  /// `sequential` in as many iterations or lower, and its bands run on every core
+  /// (docs/performance.md, "The solve").
+  BpSchedule schedule = BpSchedule::bands;
   double damping = 0.0;  ///< new = (1 - damping) * computed + damping * old, in [0, 1)
+  /// Threads of an iteration's passes (0: the machine's cores): the messages of the `parallel`
+  /// and `bands` schedules, decoding and the energy on every schedule (`sequential` sends its
+  /// messages on one). Results are the same bits for every count.
+  int threads = 0;
+  /// Variables per band of the `bands` schedule (the last band shorter); 0: the default,
+  /// the larger of kMinBandVariables and a sixteenth of the variables. Depends on the problem
+  /// only, never on `threads`.
+  std::size_t band_variables = 0;
+
+  static constexpr std::size_t kMinBandVariables = 4096;
+  static constexpr std::size_t kDefaultBands = 16;
 
   /// Empty when usable, else a message naming the field.
   [[nodiscard]] std::string validate() const;
@@ -53,6 +72,9 @@ struct LbpStep : StepOutcome {
 
 class LbpSolver {
  public:
+  /// Variables per task of the `parallel` schedule's messages.
+  static constexpr std::size_t kParallelChunk = 1024;
+
   /// Throws std::invalid_argument when options.validate() reports a problem.
   explicit LbpSolver(LbpOptions options = {});
 
@@ -77,12 +99,29 @@ class LbpSolver {
   /// What the last step() did: how many variables of the best labeling changed (when it
   /// improved) and the largest message change.
   [[nodiscard]] const LbpStep& last_step() const noexcept { return last_; }
+  /// The variables per band of the `bands` schedule on the bound energy (all of them for
+  /// `sequential`, 1 for `parallel`); 0 before bind().
+  [[nodiscard]] std::size_t band_variables() const noexcept { return band_; }
 
  private:
+  /// A task's buffers of one value per label.
+  struct Scratch {
+    std::vector<double> belief, h, out;
+    explicit Scratch(std::size_t labels) : belief(labels), h(labels), out(labels) {}
+  };
+
   void compute_belief(std::size_t v, std::span<const double> messages,
                       std::span<double> belief) const;
   void compute_message(const Edge& edge, bool from_first, std::span<const double> h,
-                       std::span<double> out);
+                       std::span<double> out) const;
+  /// Sends every message out of variables [first, last) in index order, reading messages_.
+  /// A message to a variable inside [first, last) is written to messages_ when `in_place`,
+  /// every other to next_messages_. Returns the largest change of a message entry.
+  double send_from(std::size_t first, std::size_t last, bool in_place, Scratch& scratch);
+  /// decoded_ from the beliefs, by chunks on options_.threads threads.
+  void decode();
+  /// energy_->evaluate_unchecked(decoded_), its chunks summed on options_.threads threads.
+  [[nodiscard]] double decoded_energy() const;
   [[nodiscard]] std::size_t message_index(std::uint32_t edge, bool into_second) const noexcept {
     return (2 * static_cast<std::size_t>(edge) + (into_second ? 0 : 1)) * num_labels_;
   }
@@ -92,7 +131,10 @@ class LbpSolver {
   std::size_t num_labels_ = 0;
   EdgeIncidence incidence_;
   std::vector<double> messages_, next_messages_;
-  std::vector<double> belief_, h_, scratch_;
+  std::size_t band_ = 0;  ///< variables per band (bands of the schedule, see band_variables())
+  /// Under `bands`: the edges whose ends lie in different bands, whose messages next_messages_
+  /// holds until the iteration ends.
+  std::vector<std::uint32_t> edges_between_bands_;
   Labeling decoded_, best_;
   double best_energy_ = 0.0;
   LbpStep last_;
