@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "c2f/core/pairwise_energy.hpp"
+#include "support/random_models.hpp"
 
 using namespace c2f;
 
@@ -29,6 +30,17 @@ TEST_CASE("evaluate sums unaries and weighted pairwise costs", "[core][energy]")
   CHECK(e.evaluate(Labeling{1, 0, 0}) == 4.0);
   // x = (0, 1, 0): orientation matters for the table: cost(1, 0) = 1
   CHECK(e.evaluate(Labeling{0, 1, 0}) == 1.0 + 3.0 + 2.0 + 2.0 + 0.5);
+}
+
+TEST_CASE("evaluate_unchecked on threads gives the serial sum's bits", "[core][energy]") {
+  c2f::test::Rng rng(71);
+  // 110 x 90 = 9900 variables and about 19600 edges: several chunks of each.
+  const PairwiseEnergy energy = c2f::test::random_grid_energy(rng, 110, 90, 5);
+  std::vector<Label> x(energy.num_variables());
+  for (Label& l : x) l = std::uniform_int_distribution<Label>(0, 4)(rng);
+  const double serial = energy.evaluate_unchecked(x);
+  for (const int threads : {1, 2, 3, 0}) CHECK(energy.evaluate_unchecked(x, threads) == serial);
+  CHECK(serial == Approx(energy.evaluate(x)));
 }
 
 TEST_CASE("evaluate rejects labelings that do not fit the energy", "[core][energy][validation]") {

@@ -11,6 +11,8 @@
 namespace c2f {
 namespace {
 
+/// Variables per task of the `parallel` schedule's messages.
+constexpr std::size_t kParallelChunk = 1024;
 /// Edges per task of the copy of the messages between bands.
 constexpr std::size_t kCopyChunk = 1024;
 /// Variables per task of decoding.
@@ -180,24 +182,16 @@ void LbpSolver::decode() {
       options_.threads);
 }
 
-double LbpSolver::decoded_energy() const {
-  constexpr std::size_t kChunk = PairwiseEnergy::kEvaluationChunk;
-  const std::size_t n = energy_->num_variables();
-  const std::size_t m = energy_->edges().size();
-  const std::size_t unary_chunks = (n + kChunk - 1) / kChunk;
-  std::vector<double> sums(unary_chunks + (m + kChunk - 1) / kChunk);
-  parallel_for(
-      sums.size(),
-      [&](std::size_t c) {
-        sums[c] = c < unary_chunks
-                      ? energy_->unary_sum(decoded_, c * kChunk, std::min(n, (c + 1) * kChunk))
-                      : energy_->pairwise_sum(decoded_, (c - unary_chunks) * kChunk,
-                                              std::min(m, (c - unary_chunks + 1) * kChunk));
-      },
-      options_.threads);
-  double total = 0.0;  // in evaluate_unchecked's order, so the same bits
-  for (const double sum : sums) total += sum;
-  return total;
+std::size_t LbpSolver::task_variables() const noexcept {
+  return options_.schedule == BpSchedule::parallel ? kParallelChunk : band_;
+}
+
+unsigned LbpSolver::message_threads() const {
+  if (options_.schedule == BpSchedule::sequential || energy_ == nullptr) return 1;
+  const std::size_t per_task = task_variables();
+  const std::size_t tasks =
+      std::max<std::size_t>((energy_->num_variables() + per_task - 1) / per_task, 1);
+  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(options_.threads), tasks));
 }
 
 double LbpSolver::step() {
@@ -206,7 +200,7 @@ double LbpSolver::step() {
   // Each band's task sends from its own variables; `sequential` is one band sent in place,
   // `parallel` bands of one variable whose every message waits in next_messages_.
   const bool in_place = options_.schedule != BpSchedule::parallel;
-  const std::size_t chunk = options_.schedule == BpSchedule::parallel ? kParallelChunk : band_;
+  const std::size_t chunk = task_variables();
   const std::size_t tasks = (n + chunk - 1) / chunk;
   std::vector<double> change(tasks, 0.0);
   parallel_for(
@@ -232,7 +226,7 @@ double LbpSolver::step() {
         options_.threads);
   }
   decode();
-  const double decoded_energy = this->decoded_energy();
+  const double decoded_energy = energy_->evaluate_unchecked(decoded_, options_.threads);
   last_ = {};
   last_.message_change = message_change;
   if (decoded_energy < best_energy_) {

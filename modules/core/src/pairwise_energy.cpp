@@ -1,4 +1,5 @@
 #include "c2f/core/pairwise_energy.hpp"
+#include "c2f/support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -135,6 +136,28 @@ double PairwiseEnergy::evaluate_unchecked(std::span<const Label> labeling) const
     total += unary_sum(labeling, first, std::min(first + kEvaluationChunk, num_variables_));
   for (std::size_t first = 0; first < edges_.size(); first += kEvaluationChunk)
     total += pairwise_sum(labeling, first, std::min(first + kEvaluationChunk, edges_.size()));
+  return total;
+}
+
+double PairwiseEnergy::evaluate_unchecked(std::span<const Label> labeling, int threads) const {
+  const std::size_t unary_chunks = (num_variables_ + kEvaluationChunk - 1) / kEvaluationChunk;
+  std::vector<double> sums(unary_chunks +
+                           (edges_.size() + kEvaluationChunk - 1) / kEvaluationChunk);
+  parallel_for(
+      sums.size(),
+      [&](std::size_t c) {
+        if (c < unary_chunks) {
+          const std::size_t first = c * kEvaluationChunk;
+          sums[c] = unary_sum(labeling, first, std::min(first + kEvaluationChunk, num_variables_));
+        } else {
+          const std::size_t first = (c - unary_chunks) * kEvaluationChunk;
+          sums[c] =
+              pairwise_sum(labeling, first, std::min(first + kEvaluationChunk, edges_.size()));
+        }
+      },
+      threads);
+  double total = 0.0;  // in evaluate_unchecked's order, from zero
+  for (const double sum : sums) total += sum;
   return total;
 }
 

@@ -15,14 +15,6 @@ unsigned solve_threads(const SolverOptions& options, std::size_t regions) {
       std::min<std::size_t>(resolved_threads(expansion->threads), (regions + 1) / 2));
 }
 
-unsigned bp_threads(const LbpOptions& options, std::size_t variables, std::size_t band_variables) {
-  if (options.schedule == BpSchedule::sequential || band_variables == 0) return 1;
-  const std::size_t per_task =
-      options.schedule == BpSchedule::parallel ? LbpSolver::kParallelChunk : band_variables;
-  const std::size_t tasks = std::max<std::size_t>((variables + per_task - 1) / per_task, 1);
-  return static_cast<unsigned>(std::min<std::size_t>(resolved_threads(options.threads), tasks));
-}
-
 int partition_threads(const SolverOptions& options) {
   if (const auto* expansion = std::get_if<ExpansionOptions>(&options)) return expansion->threads;
   if (const auto* lbp = std::get_if<LbpOptions>(&options)) return lbp->threads;

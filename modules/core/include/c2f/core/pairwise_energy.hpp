@@ -81,6 +81,9 @@ class PairwiseEnergy {
   /// order, those sums added in order from zero), so that EnergyTally can evaluate a labeling
   /// that differs in a few variables chunk by chunk to the same bits.
   [[nodiscard]] double evaluate_unchecked(std::span<const Label> labeling) const noexcept;
+  /// evaluate_unchecked with its chunks summed on up to `threads` threads (0: the machine's
+  /// cores), then added in the same order: the same bits for every count.
+  [[nodiscard]] double evaluate_unchecked(std::span<const Label> labeling, int threads) const;
 
   /// The variables and the edges evaluate_unchecked sums apart, chunk by chunk.
   static constexpr std::size_t kEvaluationChunk = 4096;

@@ -47,14 +47,15 @@ std::size_t regions_of(const Solver& solver) {
   }
 }
 
-/// The variables per band a solver's last binding sent BP messages in (band_variables), 0 for
-/// one that sends none.
+/// Under loopy BP: the schedule, the bands and the threads of the messages a solver's last
+/// binding sent (LbpSolver), into `report` (solve_threads the messages' threads); nothing for
+/// a solver that sends none.
 template <class Solver>
-std::size_t bp_band_variables_of(const Solver& solver) {
-  if constexpr (requires { solver.band_variables(); }) {
-    return solver.band_variables();
-  } else {
-    return 0;
+void report_bp_messages(const Solver& solver, RunReport& report) {
+  if constexpr (requires { solver.message_threads(); }) {
+    report.bp_schedule = solver.schedule();
+    report.bp_band_variables = solver.band_variables();
+    report.solve_threads = solver.message_threads();
   }
 }
 
@@ -83,12 +84,6 @@ std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
 /// The threads a run of `options` solves `regions` regions on: half of them at once, at most
 /// ExpansionOptions::threads (resolved); 1 without regions.
 [[nodiscard]] unsigned solve_threads(const SolverOptions& options, std::size_t regions);
-
-/// The threads loopy BP under `options` sends its messages on for `variables` variables in
-/// bands of `band_variables` (LbpSolver::band_variables): one under 'sequential', else one per
-/// band (or chunk of 1024 variables under 'parallel') up to LbpOptions::threads (resolved).
-[[nodiscard]] unsigned bp_threads(const LbpOptions& options, std::size_t variables,
-                                  std::size_t band_variables);
 
 /// The threads the levels of a run of `options` are built on (ScheduleProvider::set_threads):
 /// ExpansionOptions::threads or LbpOptions::threads (0: the machine's cores), 1 for any other
@@ -146,12 +141,7 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
     report.solve_threads = detail::solve_threads(spec.original, report.regions);
     report.flow_parts = detail::flow_parts_of(detail::original_of(solvers), energy);
     report.flow_threads = detail::flow_threads(spec.original, report.flow_parts);
-    if (const auto* lbp = std::get_if<LbpOptions>(&spec.original)) {
-      report.bp_schedule = lbp->schedule;
-      report.bp_band_variables = detail::bp_band_variables_of(detail::original_of(solvers));
-      report.solve_threads =
-          detail::bp_threads(*lbp, energy.num_variables(), report.bp_band_variables);
-    }
+    detail::report_bp_messages(detail::original_of(solvers), report);
     return summary;
   };
   report.summary = std::visit(

@@ -72,9 +72,6 @@ struct LbpStep : StepOutcome {
 
 class LbpSolver {
  public:
-  /// Variables per task of the `parallel` schedule's messages.
-  static constexpr std::size_t kParallelChunk = 1024;
-
   /// Throws std::invalid_argument when options.validate() reports a problem.
   explicit LbpSolver(LbpOptions options = {});
 
@@ -102,6 +99,11 @@ class LbpSolver {
   /// The variables per band of the `bands` schedule on the bound energy (all of them for
   /// `sequential`, 1 for `parallel`); 0 before bind().
   [[nodiscard]] std::size_t band_variables() const noexcept { return band_; }
+  /// The schedule of the messages.
+  [[nodiscard]] BpSchedule schedule() const noexcept { return options_.schedule; }
+  /// The threads an iteration sends its messages on: 1 under `sequential` (and before
+  /// bind()), else one per band (`parallel`: per 1024 variables) up to LbpOptions::threads.
+  [[nodiscard]] unsigned message_threads() const;
 
  private:
   /// A task's buffers of one value per label.
@@ -120,8 +122,8 @@ class LbpSolver {
   double send_from(std::size_t first, std::size_t last, bool in_place, Scratch& scratch);
   /// decoded_ from the beliefs, by chunks on options_.threads threads.
   void decode();
-  /// energy_->evaluate_unchecked(decoded_), its chunks summed on options_.threads threads.
-  [[nodiscard]] double decoded_energy() const;
+  /// The variables each task of an iteration's messages sends from.
+  [[nodiscard]] std::size_t task_variables() const noexcept;
   [[nodiscard]] std::size_t message_index(std::uint32_t edge, bool into_second) const noexcept {
     return (2 * static_cast<std::size_t>(edge) + (into_second ? 0 : 1)) * num_labels_;
   }
