@@ -455,6 +455,125 @@ std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes_between(
 
 }  // namespace
 
+namespace {
+
+/// `terminals` and `edges` (change_in_parts' lists) listed by part for change_by_parts, in their
+/// order: node i in part[i], an edge in its nodes' part or between parts.
+ChangesByPart listed_by_part(std::span<const TerminalChange> terminals,
+                             std::span<const EdgeChange> edges,
+                             const std::vector<std::uint8_t>& part,
+                             const std::vector<FlowEdge>& graph_edges, std::size_t parts) {
+  ChangesByPart by_part;
+  by_part.clear(parts);
+  for (const TerminalChange& change : terminals)
+    by_part.terminals[part[change.node]].push_back(change);
+  for (const EdgeChange& change : edges) {
+    const FlowEdge& edge = graph_edges[change.edge];
+    const bool inside = part[edge.from] == part[edge.to];
+    by_part.edges[inside ? part[edge.from] : parts].push_back(change);
+  }
+  return by_part;
+}
+
+}  // namespace
+
+TEST_CASE("dynamic max-flow: changes listed by part make the graph change_in_parts makes",
+          "[maxflow][dynamic][parts][threads]") {
+  // The same changes in the same order per part: the same flow and trees, so the re-solves
+  // find the same augmenting paths and the same cut, on any thread count.
+  Rng rng(616);
+  for (int trial = 0; trial < 6; ++trial) {
+    auto problem = random_flow_problem(rng, 3000, 12000);
+    change_capacities(rng, problem.caps, 1.0, true);
+    const std::size_t parts = 2 + static_cast<std::size_t>(trial) % 4;
+    const auto part = node_parts(rng, problem.num_nodes, parts, trial % 2 == 0);
+    DynamicMaxFlow sorted;
+    sorted.build(problem.num_nodes, problem.edges);
+    sorted.cut_into_parts(part);
+    sorted.solve_cut_in_parts(problem.caps, 1);
+    for (const int threads : {1, 2, 3}) {
+      INFO("trial " << trial << ", " << threads << " threads");
+      DynamicMaxFlow sorting(sorted), listed(sorted);
+      FlowCapacities caps = problem.caps;
+      Rng changes(static_cast<std::uint64_t>(trial));
+      for (int round = 0; round < 4; ++round) {
+        const FlowCapacities before = caps;
+        change_capacities(changes, caps, round % 2 == 0 ? 0.05 : 0.5, true);
+        const auto [terminals, edges] = changes_between(before, caps);
+        sorting.change_in_parts(terminals, edges, threads);
+        listed.change_by_parts(listed_by_part(terminals, edges, part, problem.edges, parts),
+                               threads);
+        sorting.resolve_in_parts(threads);
+        listed.resolve_in_parts(threads);
+        CHECK(listed.last_solve().changed_nodes == terminals.size());
+        CHECK(listed.last_solve().changed_edges == edges.size());
+        CHECK(listed.last_solve().augmentations == sorting.last_solve().augmentations);
+        CHECK(listed.last_solve().arcs_scanned == sorting.last_solve().arcs_scanned);
+        CHECK(source_set(listed) == source_set(sorting));
+        BoostMaxFlow boost;
+        boost.build(problem.num_nodes, problem.edges);
+        CHECK(cut_capacity(caps, problem.edges, source_set(listed)) == boost.solve(caps));
+      }
+    }
+  }
+}
+
+TEST_CASE("dynamic max-flow: changes listed in the wrong part are refused",
+          "[maxflow][dynamic][parts]") {
+  Rng rng(717);
+  auto problem = random_flow_problem(rng, 40, 120);
+  std::vector<std::uint8_t> part(problem.num_nodes);
+  for (std::size_t i = 0; i < part.size(); ++i) part[i] = i < 20 ? 0 : 1;
+  DynamicMaxFlow dynamic;
+  dynamic.build(problem.num_nodes, problem.edges);
+  CHECK_THROWS_WITH(dynamic.change_by_parts(ChangesByPart{}, 1), Catch::Contains("solve() first"));
+  dynamic.cut_into_parts(part);
+  dynamic.solve_cut_in_parts(problem.caps, 2);
+  const std::vector<char> solved = source_set(dynamic);
+  ChangesByPart changes;
+  changes.clear(3);
+  CHECK_THROWS_WITH(dynamic.change_by_parts(changes, 2),
+                    Catch::Contains("3 and 4 lists of changes for a graph in 2 parts"));
+  // An edge inside a part listed between parts: refused before anything changes.
+  std::size_t inside = 0, between = 0;
+  while (part[problem.edges[inside].from] != part[problem.edges[inside].to]) ++inside;
+  while (part[problem.edges[between].from] == part[problem.edges[between].to]) ++between;
+  changes.clear(2);
+  changes.terminals[0].push_back({3, 100.0});
+  changes.edges[2].push_back({inside, 1.0, 0.0});
+  CHECK_THROWS_WITH(
+      dynamic.change_by_parts(changes, 2),
+      Catch::Contains("names edge " + std::to_string(inside) + ", which is not between parts"));
+  dynamic.resolve_in_parts(2);
+  CHECK(dynamic.last_solve().changed_nodes == 0);
+  CHECK(source_set(dynamic) == solved);
+  // A node of part 1 in part 0's list, and an edge between parts in a part's list: refused
+  // after the other parts' changes, and the flow is dropped until the next solve.
+  for (const bool node : {true, false}) {
+    changes.clear(2);
+    if (node) {
+      changes.terminals[0].push_back({25, 1.0});
+    } else {
+      changes.edges[1].push_back({between, 1.0, 0.0});
+    }
+    CHECK_THROWS_WITH(dynamic.change_by_parts(changes, 2),
+                      Catch::Contains(node ? "names node 25, which is not in that part"
+                                           : "names edge " + std::to_string(between) +
+                                                 ", which is not inside that part"));
+    CHECK_THROWS_WITH(dynamic.resolve_in_parts(2), Catch::Contains("solve() first"));
+    dynamic.solve_cut_in_parts(problem.caps, 2);
+    CHECK(source_set(dynamic) == solved);
+  }
+  // One part: one list each and no edges between parts.
+  DynamicMaxFlow whole;
+  whole.build(problem.num_nodes, problem.edges);
+  whole.solve_cut(problem.caps);
+  changes.clear(1);
+  changes.edges[1].push_back({between, 1.0, 0.0});
+  CHECK_THROWS_WITH(whole.change_by_parts(changes, 1),
+                    Catch::Contains("edges between parts changed in a graph of one part"));
+}
+
 TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on any threads",
           "[maxflow][dynamic][parts][threads]") {
   Rng rng(515);

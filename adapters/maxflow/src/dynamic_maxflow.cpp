@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <ranges>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -863,10 +864,10 @@ struct DynamicMaxFlow::Impl {
   }
 
   /// DynamicMaxFlow::change_in_parts with more than one part. The changes are sorted by part
-  /// first (by chunks on the threads, each part's in their order); then part k's changes are
-  /// made on one thread, its touched nodes listed apart and joined in part order, and then the
-  /// changes of edges between parts in their order. Throws std::out_of_range, changing
-  /// nothing, when a change names a node or edge the graph does not have.
+  /// first (by chunks on the threads, each part's in their order); then made as
+  /// change_each_part makes them, and then the changes of edges between parts in their order.
+  /// Throws std::out_of_range, changing nothing, when a change names a node or edge the graph
+  /// does not have.
   void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,
                        int threads) {
     const std::vector<std::uint8_t>& part = parts->of_node;
@@ -887,18 +888,93 @@ struct DynamicMaxFlow::Impl {
         },
         threads);
     if (edges_by_part.out_of_range) check_changes({}, edges);
+    change_each_part(
+        [&](std::size_t k) {
+          return std::views::transform(terminals_by_part.of(k),
+                                       [&](std::uint32_t c) { return terminals[c]; });
+        },
+        [&](std::size_t k) {
+          return std::views::transform(edges_by_part.of(k),
+                                       [&](std::uint32_t c) { return edges[c]; });
+        },
+        /*check=*/false, threads);
+    for (const std::uint32_t c : edges_by_part.of(between_parts))
+      change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, touched);
+    stats.changed_nodes += terminals.size();
+    stats.changed_edges += edges.size();
+  }
+
+  /// DynamicMaxFlow::change_by_parts with more than one part: the edges between parts checked,
+  /// each part's changes made (change_each_part, checked as they go), then the edges between
+  /// parts in their order.
+  void change_by_parts(const ChangesByPart& changes, int threads) {
+    const std::span<const EdgeChange> between = changes.edges[parts->count];
+    for (std::size_t c = 0; c < between.size(); ++c) {
+      const std::size_t e = between[c].edge;
+      if (e >= num_edges || parts->of_edge[e] != parts->count) {
+        throw std::invalid_argument("DynamicMaxFlow::change_by_parts: change " + std::to_string(c) +
+                                    " of the edges between parts names edge " + std::to_string(e) +
+                                    ", which is not between parts");
+      }
+    }
+    const std::string misplaced = change_each_part(
+        [&](std::size_t k) { return std::span(changes.terminals[k]); },
+        [&](std::size_t k) { return std::span(changes.edges[k]); }, /*check=*/true, threads);
+    if (!misplaced.empty()) {
+      has_flow = false;
+      touched.clear();
+      touched_by_part.clear();
+      orphans.clear();
+      throw std::invalid_argument("DynamicMaxFlow::change_by_parts: " + misplaced +
+                                  "; the flow is dropped (solve again)");
+    }
+    for (const EdgeChange& change : between)
+      change_edge(change.edge, change.delta_forward, change.delta_backward, touched);
+    for (const std::vector<TerminalChange>& list : changes.terminals)
+      stats.changed_nodes += list.size();
+    for (const std::vector<EdgeChange>& list : changes.edges) stats.changed_edges += list.size();
+  }
+
+  /// Makes each part's changes on one thread (up to `threads` at once): part k's terminal
+  /// changes (the range terminals_of(k)), then its edge changes (edges_of(k)), in their order,
+  /// its touched nodes listed apart and joined in part order after. With `check`, a part stops
+  /// at its first change that names a node or edge outside it; returns the lowest such part's
+  /// description ("" when every change was made).
+  template <class TerminalsOf, class EdgesOf>
+  std::string change_each_part(const TerminalsOf& terminals_of, const EdgesOf& edges_of, bool check,
+                               int threads) {
+    const std::vector<std::uint8_t>& part = parts->of_node;
     if (touched.empty()) stats = {};  // the first change since the last solve
     touched_by_part.clear();          // ordered below only when nothing was touched before
     const bool ordered = touched.empty();
     std::vector<OnOwnLine<std::vector<Index>>> listed(parts->count);
+    std::vector<std::string> misplaced(parts->count);
     parallel_for(
         parts->count,
         [&](std::size_t k) {
           std::vector<Index>& list = listed[k].value;
-          for (const std::uint32_t c : terminals_by_part.of(k))
-            change_terminal(terminals[c].node, terminals[c].delta, list);
-          for (const std::uint32_t c : edges_by_part.of(k))
-            change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, list);
+          std::size_t c = 0;
+          for (const TerminalChange& change : terminals_of(k)) {
+            if (check && (change.node >= num_nodes || part[change.node] != k)) {
+              misplaced[k] = "terminal change " + std::to_string(c) + " of part " +
+                             std::to_string(k) + " names node " + std::to_string(change.node) +
+                             ", which is not in that part";
+              return;
+            }
+            change_terminal(change.node, change.delta, list);
+            ++c;
+          }
+          c = 0;
+          for (const EdgeChange& change : edges_of(k)) {
+            if (check && (change.edge >= num_edges || parts->of_edge[change.edge] != k)) {
+              misplaced[k] = "edge change " + std::to_string(c) + " of part " + std::to_string(k) +
+                             " names edge " + std::to_string(change.edge) +
+                             ", which is not inside that part";
+              return;
+            }
+            change_edge(change.edge, change.delta_forward, change.delta_backward, list);
+            ++c;
+          }
         },
         threads);
     if (ordered) touched_by_part.push_back(touched.size());
@@ -907,10 +983,9 @@ struct DynamicMaxFlow::Impl {
       touched.insert(touched.end(), list.begin(), list.end());
       if (ordered) touched_by_part.push_back(touched.size());
     }
-    for (const std::uint32_t c : edges_by_part.of(between_parts))
-      change_edge(edges[c].edge, edges[c].delta_forward, edges[c].delta_backward, touched);
-    stats.changed_nodes += terminals.size();
-    stats.changed_edges += edges.size();
+    for (const std::string& problem : misplaced)
+      if (!problem.empty()) return problem;
+    return {};
   }
 
   /// Restores the search-tree invariants at the touched nodes (Search::repair).
@@ -1093,6 +1168,27 @@ void DynamicMaxFlow::change_in_parts(std::span<const TerminalChange> terminals,
   for (const TerminalChange& change : terminals) m.change_terminal(change.node, change.delta);
   for (const EdgeChange& change : edges)
     m.change_edge(change.edge, change.delta_forward, change.delta_backward);
+}
+
+void DynamicMaxFlow::change_by_parts(const ChangesByPart& changes, int threads) {
+  Impl& m = *impl_;
+  if (!m.has_flow) throw std::logic_error("DynamicMaxFlow::change_by_parts: solve() first");
+  const std::size_t parts = num_parts();
+  if (changes.terminals.size() != parts || changes.edges.size() != parts + 1) {
+    throw std::invalid_argument(
+        "DynamicMaxFlow::change_by_parts: " + std::to_string(changes.terminals.size()) + " and " +
+        std::to_string(changes.edges.size()) + " lists of changes for a graph in " +
+        std::to_string(parts) + " parts (one per part, and the edges' one more)");
+  }
+  if (parts > 1) {
+    m.change_by_parts(changes, threads);
+    return;
+  }
+  if (!changes.edges[1].empty()) {
+    throw std::invalid_argument(
+        "DynamicMaxFlow::change_by_parts: edges between parts changed in a graph of one part");
+  }
+  change_in_parts(changes.terminals[0], changes.edges[0], threads);
 }
 
 void DynamicMaxFlow::resolve_in_parts(int threads) {

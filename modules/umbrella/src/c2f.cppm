@@ -31,6 +31,7 @@ using c2f::BoostMaxFlow;
 using c2f::bp_schedule_from_string;
 using c2f::BpSchedule;
 using c2f::budget_or_default;
+using c2f::ChangesByPart;
 using c2f::cheapest_label;
 using c2f::check_capacities;
 using c2f::check_topology;

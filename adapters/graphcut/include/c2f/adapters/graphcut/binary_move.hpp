@@ -70,6 +70,7 @@ class BinaryMoveSolver {
     check_topology(num_nodes, pairs, "BinaryMoveSolver::bind", parts_threads_);
     num_nodes_ = num_nodes;
     parts_ = 1;
+    pairs_of_part_.clear();
     pairs_.assign(pairs.begin(), pairs.end());
     doubled_pairs_.clear();
     doubled_ready_ = false;
@@ -100,6 +101,7 @@ class BinaryMoveSolver {
   void solve_in_parts(std::size_t parts, int threads) {
     parts_ = std::max<std::size_t>(1, std::min<std::size_t>(parts, 255));
     parts_threads_ = threads;
+    pairs_of_part_.clear();
   }
 
   /// Frees every graph (they are built again on the next solve); recycling goes on as
@@ -380,6 +382,12 @@ class BinaryMoveSolver {
   /// are found by bands on the parts' threads and listed in index order (nodes, then pairs);
   /// a backend that can (DynamicMaxFlow::change_in_parts) makes them by parts on those threads.
   void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
+    if constexpr (PartedMaxFlow<Backend>) {
+      if (parts_ > 1) {
+        change_graph_by_parts(graph, kind, p);
+        return;
+      }
+    }
     terminal_changes_.clear();
     detail::append_by_bands(
         num_nodes_, band_terminals_, terminal_changes_,
@@ -410,6 +418,56 @@ class BinaryMoveSolver {
         g.change_terminal(change.node, change.delta);
       for (const EdgeChange& change : edge_changes_)
         g.change_edge(change.edge, change.delta_forward, change.delta_backward);
+    }
+  }
+
+  /// change_graph in parts (parts_ > 1): part k's changes found on one thread, its nodes in
+  /// index order and then the pairs inside it (pairs_of_part_) in theirs, all parts at once on
+  /// the parts' threads; then the pairs between parts. Made by the backend's change_by_parts
+  /// (each part's on one thread, no sorting): the same changes, in the same order per part, as
+  /// the joined lists change_in_parts would sort.
+  void change_graph_by_parts(MoveGraph& graph, GraphKind kind,
+                             std::span<const double> p) requires PartedMaxFlow<Backend> {
+    if (pairs_of_part_.empty()) list_pairs_by_part();
+    changes_by_part_.clear(parts_);
+    const auto list_pairs = [&](std::span<const std::uint32_t> pairs,
+                                std::vector<EdgeChange>& out) {
+      for (const std::uint32_t e : pairs) {
+        if (p[e] == graph.pair_values[e]) continue;
+        list_pair_change(kind, e, graph.pair_values[e], p[e], out);
+        graph.pair_values[e] = p[e];
+      }
+    };
+    detail::for_each_band(  // bands of one part
+        parts_,
+        [&](std::size_t k, std::size_t, std::size_t) {
+          std::vector<TerminalChange>& terminals = changes_by_part_.terminals[k];
+          for (std::size_t i = first_node_of_part(k); i < first_node_of_part(k + 1); ++i) {
+            if (node_values_[i] == graph.node_values[i]) continue;
+            list_node_change(kind, i, graph.node_values[i], node_values_[i], terminals);
+            graph.node_values[i] = node_values_[i];
+          }
+          list_pairs(pairs_of_part_[k], changes_by_part_.edges[k]);
+        },
+        parts_threads_, 1);
+    list_pairs(pairs_of_part_[parts_], changes_by_part_.edges[parts_]);
+    graph.graph.change_by_parts(changes_by_part_, parts_threads_);
+  }
+
+  /// The first node of part k (node_parts: node i is in part i * parts_ / n), n for k = parts_.
+  [[nodiscard]] std::size_t first_node_of_part(std::size_t k) const noexcept {
+    return (k * num_nodes_ + parts_ - 1) / parts_;
+  }
+
+  /// pairs_of_part_: for each part the pairs whose nodes are both in it, then the pairs
+  /// between parts, each list ascending. A pair's QPBO edges join the same parts as the pair
+  /// (node n + i is in node i's part), so the lists serve both kinds of graph.
+  void list_pairs_by_part() {
+    pairs_of_part_.assign(parts_ + 1, {});
+    for (std::size_t e = 0; e < pairs_.size(); ++e) {
+      const std::size_t from = pairs_[e].from * parts_ / num_nodes_;
+      const std::size_t to = pairs_[e].to * parts_ / num_nodes_;
+      pairs_of_part_[from == to ? from : parts_].push_back(static_cast<std::uint32_t>(e));
     }
   }
 
@@ -482,6 +540,10 @@ class BinaryMoveSolver {
   std::vector<std::vector<EdgeChange>> band_edges_;
   DefaultInitVector<TerminalChange> terminal_changes_;
   DefaultInitVector<EdgeChange> edge_changes_;
+  // change_graph_by_parts' pairs by part (found on its first call after bind or solve_in_parts)
+  // and its changes.
+  std::vector<std::vector<std::uint32_t>> pairs_of_part_;
+  ChangesByPart changes_by_part_;
   detail::MoveGraphs<Backend> graphs_;
 };
 

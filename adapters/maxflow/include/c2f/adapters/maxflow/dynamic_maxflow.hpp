@@ -91,6 +91,17 @@ class DynamicMaxFlow {
   /// std::out_of_range for a node or edge the graph does not have (nothing changed then).
   void change_in_parts(std::span<const TerminalChange> terminals, std::span<const EdgeChange> edges,
                        int threads);
+  /// After a solve: change_in_parts with the changes already listed by part (ChangesByPart:
+  /// a list per part, then the edges between parts), which saves sorting them. Each part's
+  /// changes are made on one thread, in their order, each after checking it names a node or
+  /// edge of its list's part; then the edges between parts, all checked first. The same graph
+  /// as change_in_parts with the lists joined in part order. Throws std::invalid_argument when
+  /// the lists do not match num_parts(), or when an edge of the last list is not between parts
+  /// (nothing changed then); when a part's list names a node or edge outside the part, throws
+  /// std::invalid_argument after the other parts' changes, and the flow is dropped (solve()
+  /// again before changing or resolving). With one part: change_in_parts(terminals[0],
+  /// edges[0]), and edges[1] must be empty.
+  void change_by_parts(const ChangesByPart& changes, int threads);
   /// The minimum cut after the changes since the last solve or resolve, from the current flow.
   void resolve();
   /// resolve() in the two stages of solve_cut_in_parts: the touched nodes of every part searched
@@ -145,11 +156,12 @@ concept PartedMaxFlow = ReusingMaxFlow<G> &&
     requires(G& g, const G& cg, std::size_t n, std::span<const FlowEdge> edges,
              std::span<const std::uint8_t> part, const FlowCapacities& caps,
              std::span<const TerminalChange> terminals, std::span<const EdgeChange> changes,
-             std::span<char> in_source, int threads) {
+             const ChangesByPart& by_part, std::span<char> in_source, int threads) {
   g.build(n, edges, threads);
   g.cut_into_parts(part, threads);
   g.solve_cut_in_parts(caps, threads);
   g.change_in_parts(terminals, changes, threads);
+  g.change_by_parts(by_part, threads);
   g.resolve_in_parts(threads);
   cg.source_set(in_source, threads);
 };

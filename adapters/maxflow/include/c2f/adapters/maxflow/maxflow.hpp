@@ -33,6 +33,24 @@ struct EdgeChange {
   double delta_backward;
 };
 
+/// A batch of changes of a graph cut into parts, listed by part (DynamicMaxFlow::
+/// change_by_parts): for each part k, terminals[k] changes nodes of part k and edges[k] edges
+/// whose nodes are both in part k; edges[parts] changes the edges between parts. Each list in
+/// the order its changes are to be made.
+struct ChangesByPart {
+  std::vector<std::vector<TerminalChange>> terminals;  ///< one list per part
+  std::vector<std::vector<EdgeChange>> edges;          ///< one per part, then the edges between
+
+  /// `parts` lists of terminal changes and parts + 1 of edge changes, all empty (keeps their
+  /// memory).
+  void clear(std::size_t parts) {
+    terminals.resize(parts);
+    edges.resize(parts + 1);
+    for (std::vector<TerminalChange>& list : terminals) list.clear();
+    for (std::vector<EdgeChange>& list : edges) list.clear();
+  }
+};
+
 /// Every capacity of one solve: per node the arc from the source and the arc to the sink, per
 /// edge the capacity of from -> to (forward) and of to -> from (backward). All finite, >= 0.
 /// Cutting a node to the sink side costs `source[i]`, to the source side `sink[i]`.
