@@ -1,6 +1,7 @@
 // Region moves (ExpansionOptions::regions): the layout keeps every edge within one region or two
 // adjacent ones, a phase's move is exact per region against brute force, and expansion with
-// regions gives the same bits on 1, 2 and 3 threads and converges where whole moves find nothing.
+// regions gives the same bits on 1, 2 and 3 threads, converges where whole moves find nothing,
+// and keeps its recycled graphs within the memory limit.
 
 #include <catch2/catch.hpp>
 
@@ -216,6 +217,44 @@ TEST_CASE("expansion with regions gives the same bits on 1, 2 and 3 threads and 
   CHECK(energies[2] == energies[0]);
   CHECK(results[1] == results[0]);
   CHECK(results[2] == results[0]);
+}
+
+TEST_CASE("expansion with regions keeps its recycled graphs within the memory limit",
+          "[expansion][regions][memory]") {
+  // The regions' moves over every variable (here the shift moves of every sweep) recycle
+  // graphs of their own, within graph_memory_limit split between the regions; the whole moves'
+  // graphs are never held at the same time. So what the solver keeps never exceeds the limit,
+  // on any thread count.
+  Rng rng(11);
+  const PairwiseEnergy energy = random_grid_energy(rng, 130, 100, 5);
+  const Labeling start = random_labeling(rng, energy.num_variables(), 5);
+  const auto most_kept = [&](std::size_t limit, int threads) {
+    ExpansionOptions options;
+    options.near_radius = 2;
+    options.shift_moves = true;
+    options.regions = 16;
+    options.threads = threads;
+    options.recycle_with_near_moves = true;
+    options.problem_memory_limit = 0;  // so that kept_bytes() counts the graphs only
+    options.graph_memory_limit = limit;
+    ExpansionSolver<> solver(options);
+    solver.bind(energy, start);
+    REQUIRE(solver.region_count() == 3);
+    std::size_t most = 0;
+    for (int step = 0; step < 70; ++step) {
+      solver.step();
+      most = std::max(most, solver.kept_bytes());
+    }
+    return most;
+  };
+  const std::size_t unlimited = most_kept(std::size_t{1} << 40, 2);
+  REQUIRE(unlimited > 0);
+  for (const int threads : {1, 2}) {
+    INFO(threads << " threads");
+    const std::size_t most = most_kept(unlimited / 2, threads);
+    CHECK(most <= unlimited / 2);
+    CHECK(most > 0);
+  }
 }
 
 TEST_CASE("regions and threads are validated", "[expansion][regions][validation]") {

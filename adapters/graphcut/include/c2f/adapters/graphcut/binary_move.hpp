@@ -380,7 +380,8 @@ class BinaryMoveSolver {
   /// Changes a solved graph from the problem it holds to (node_values_, p): only the nodes and
   /// pairs whose coefficients differ, by the differences of the capacities above. The changes
   /// are found by bands on the parts' threads and listed in index order (nodes, then pairs);
-  /// a backend that can (DynamicMaxFlow::change_in_parts) makes them by parts on those threads.
+  /// a backend that can (PartedMaxFlow) makes them by parts on those threads. In parts they
+  /// are found and made by parts (change_graph_by_parts).
   void change_graph(MoveGraph& graph, GraphKind kind, std::span<const double> p) {
     if constexpr (PartedMaxFlow<Backend>) {
       if (parts_ > 1) {
