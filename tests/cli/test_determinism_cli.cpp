@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string>
 
+#include "c2f/core/uai.hpp"
+#include "support/random_models.hpp"
 #include "support/run_tool.hpp"
 #include "support/synthetic_segmentation.hpp"
 #include "support/synthetic_stereo.hpp"
@@ -184,6 +186,29 @@ TEST_CASE("c2f-stereo writes the same bytes on one thread and on several",
   CHECK(read_bytes(big / "lbp" / "run1" / "summary.txt")
             .find("solve: BP messages by bands of 4096 variables on 3 threads") !=
         std::string::npos);
+}
+
+TEST_CASE("c2f-solve writes the same bytes on one thread and on several",
+          "[cli][determinism][solve][threads]") {
+  // A 140 x 120 grid model: 4 max-flow parts of at least 4096 variables, its whole moves'
+  // graphs recycled and changed by parts (flat), and a coarse level before them (the default).
+  const fs::path dir = fs::temp_directory_path() / "c2f-test-determinism-solve";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  c2f::test::Rng rng(23);
+  const c2f::PairwiseEnergy energy = c2f::test::random_grid_energy(rng, 140, 120, 6);
+  {
+    std::ofstream out(dir / "grid.uai");
+    c2f::write_uai(energy, out);
+  }
+  const std::string model = (dir / "grid.uai").string() + " --grid 140x120 -q";
+  for (const std::string schedule : {"flat", "default"}) {
+    const std::string flags = schedule == "flat" ? " --schedule flat" : "";
+    check_two_runs_agree(C2F_SOLVE_BINARY, model + flags, dir / schedule,
+                         {"--threads 1", "--threads 3"});
+    CHECK(read_bytes(dir / schedule / "run1" / "summary.txt")
+              .find("max-flow in 4 parts on 3 threads") != std::string::npos);
+  }
 }
 
 TEST_CASE("c2f-segment writes the same bytes twice", "[cli][determinism][segment]") {
