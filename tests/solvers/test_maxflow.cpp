@@ -453,10 +453,6 @@ std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes_between(
   return changes;
 }
 
-}  // namespace
-
-namespace {
-
 /// `terminals` and `edges` (change_in_parts' lists) listed by part for change_by_parts, in their
 /// order: node i in part[i], an edge in its nodes' part or between parts.
 ChangesByPart listed_by_part(std::span<const TerminalChange> terminals,

@@ -247,14 +247,20 @@ class BinaryMoveSolver {
     return graph;
   }
 
-  /// Each node's part for solve_in_parts: node i in part i * parts / n, node n + i (QPBO) with i.
+  /// The part of variable i (and of its QPBO complement n + i) when moves are solved in parts:
+  /// bands of indices, i * parts / n.
+  [[nodiscard]] std::size_t part_of(std::size_t i) const noexcept {
+    return i * parts_ / num_nodes_;
+  }
+
+  /// Each node's part for solve_in_parts (part_of; node n + i (QPBO) with i).
   [[nodiscard]] std::vector<std::uint8_t> node_parts(GraphKind kind) const {
     std::vector<std::uint8_t> part(graph_nodes(kind));
     detail::for_each_band(
         num_nodes_,
         [&](std::size_t, std::size_t first, std::size_t last) {
           for (std::size_t i = first; i < last; ++i)
-            part[i] = static_cast<std::uint8_t>(i * parts_ / num_nodes_);
+            part[i] = static_cast<std::uint8_t>(part_of(i));
         },
         parts_threads_);
     if (kind == GraphKind::qpbo)
@@ -455,7 +461,7 @@ class BinaryMoveSolver {
     graph.graph.change_by_parts(changes_by_part_, parts_threads_);
   }
 
-  /// The first node of part k (node_parts: node i is in part i * parts_ / n), n for k = parts_.
+  /// The first node of part k (the least i with part_of(i) = k), n for k = parts_.
   [[nodiscard]] std::size_t first_node_of_part(std::size_t k) const noexcept {
     return (k * num_nodes_ + parts_ - 1) / parts_;
   }
@@ -466,8 +472,8 @@ class BinaryMoveSolver {
   void list_pairs_by_part() {
     pairs_of_part_.assign(parts_ + 1, {});
     for (std::size_t e = 0; e < pairs_.size(); ++e) {
-      const std::size_t from = pairs_[e].from * parts_ / num_nodes_;
-      const std::size_t to = pairs_[e].to * parts_ / num_nodes_;
+      const std::size_t from = part_of(pairs_[e].from);
+      const std::size_t to = part_of(pairs_[e].to);
       pairs_of_part_[from == to ? from : parts_].push_back(static_cast<std::uint32_t>(e));
     }
   }
