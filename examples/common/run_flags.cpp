@@ -109,9 +109,11 @@ void RunFlags::declare(ToolOptions& options) {
       .integer("max-steps", &max_steps_, {0, kMaxSteps}, "solver steps in the whole run (0: none)")
       .text("plateau", &plateau_,
             "refine a coarse level after this many steps without decrease; rate: after the "
-            "defaults' number of such steps, or once its energy decrease per second over a sweep "
-            "falls below what the original problem is expected to give (its first sweep's rate "
-            "times its size over the original problem's)")
+            "defaults' number of such steps, or sooner, after its first sweep, once its energy "
+            "decrease per variable moved over its last 4 steps is no more than what the "
+            "original problem is expected to give (what single-variable changes of the "
+            "labeling it would hand down would gain, over a sweep of whole moves on the "
+            "original variables)")
       .text("plateau-tolerance", &plateau_tolerance_, plateau_tolerance_help_.c_str())
       .integer("final-plateau", &final_plateau_, {0, kMaxSteps},
                "stop after this many steps without decrease on the original problem (0: one "

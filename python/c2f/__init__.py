@@ -78,9 +78,10 @@ def defaults(name: str = "pairwise") -> Dict[str, Any]:
         local in its variables' order, such as a lattice, and on any other), expansion's
         ``near_radius``, ``near_seeds`` and ``grid_near_seeds`` (where near moves start on any
         other energy and on a grid energy), ``near_graphs``, ``near_min_variables`` and
-        ``shift_moves`` (on the original problem), ``plateau``, ``plateau_tolerance`` and
-        ``grid_plateau_tolerance`` (coarse levels; the tolerance on any other energy and on a
-        grid energy). For 'segmentation': ``schedule``, ``method``, ``aux`` (how the
+        ``shift_moves`` (on the original problem), ``plateau`` ('rate' or a number of steps),
+        ``plateau_steps`` (the steps of the plateau rule, 'rate' or not), ``plateau_tolerance``
+        and ``grid_plateau_tolerance`` (coarse levels; the tolerance on any other energy and on
+        a grid energy). For 'segmentation': ``schedule``, ``method``, ``aux`` (how the
         cooperative cut's auxiliary variables move), ``near_radius`` (its near moves on the
         original problem with aux 'mm'; 'greedy' and 'ceres' make whole moves), ``lambda_``,
         ``theta`` and ``alpha``. Each is the configuration measured best on a tuning set and
@@ -166,10 +167,12 @@ def solve(
         Stop after this many solver steps over all levels (None: no limit).
     plateau : int or 'rate', optional
         A coarse level is refined after this many steps without a decrease (the original
-        problem ends where the solver has converged: one sweep of its moves). 'rate': also
-        once its energy decrease per second over a sweep falls below its first sweep's times
-        its size over the original problem's, what the original problem is expected to give
-        (the driver's ``progress_rate``). None: the defaults' (4 steps).
+        problem ends where the solver has converged: one sweep of its moves). 'rate': 4
+        steps, or sooner, after its first sweep, once its energy decrease per variable moved
+        over its last 4 steps is no more than what the original problem is expected to give
+        (what single-variable changes of the labeling it would hand down would gain, over a
+        sweep of whole moves on the original variables: the driver's ``progress_rate``).
+        None: the defaults' ('rate' for the pairwise defaults, 4 for the stereo ones).
     plateau_tolerance : float, optional
         On coarse levels, decreases below this fraction of abs(E) do not count. None: the
         defaults' (``grid_plateau_tolerance`` on a grid energy, ``plateau_tolerance`` on any

@@ -149,6 +149,7 @@ py::dict defaults_dict(const std::string& name) {
                                                                 : py::object(py::bool_(false));
   out["plateau"] = defaults.progress_rate ? py::object(py::str("rate"))
                                           : py::object(py::int_(defaults.plateau_steps));
+  out["plateau_steps"] = defaults.plateau_steps;
   out["plateau_tolerance"] = defaults.plateau_tolerance;
   out["grid_plateau_tolerance"] = defaults.plateau_tolerance_on(true);
   return out;

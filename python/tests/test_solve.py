@@ -145,7 +145,7 @@ def test_the_defaults_are_the_librarys_and_c2f_solve_runs_the_same(rng, tmp_path
     assert set(defaults) == {"grid_schedule", "local_schedule", "general_schedule",
                              "near_radius", "near_seeds",
                              "grid_near_seeds", "near_graphs", "near_min_variables",
-                             "shift_moves", "plateau", "plateau_tolerance",
+                             "shift_moves", "plateau", "plateau_steps", "plateau_tolerance",
                              "grid_plateau_tolerance"}
     energy = c2f.Energy.grid(rng.random((12, 16, 5)), c2f.Term.truncated_linear(3.0), weight=0.7)
     implicit = c2f.solve(energy)
@@ -309,14 +309,18 @@ def test_near_moves_only_on_energies_of_the_size_asked(rng):
 
 
 def test_plateau_rate_can_only_leave_a_coarse_level_sooner(rng):
-    """plateau='rate' adds the progress-rate rule to the plateau rule: the first level follows
-    the same steps until either rule fires, so it never takes more steps."""
+    """plateau='rate' (the pairwise defaults') adds the progress-rate rule to the plateau rule:
+    the first level follows the same steps until either rule fires, so it never takes more
+    steps; a number of steps alone turns the rule off."""
     energy = c2f.Energy.grid(rng.random((40, 50, 8)), c2f.Term.truncated_linear(2.0), weight=0.6)
-    plain = c2f.solve(energy, "paper")
+    assert c2f.defaults()["plateau"] == "rate"
+    plain = c2f.solve(energy, "paper", plateau=c2f.defaults()["plateau_steps"])
     rated = c2f.solve(energy, "paper", plateau="rate")
+    by_default = c2f.solve(energy, "paper")
     def first(result):  # steps on the first (coarsest) level
         return int(np.sum(result.trace["level"] == 0))
 
+    assert first(by_default) == first(rated)
     assert first(rated) <= first(plain)
     n = first(rated)
     np.testing.assert_array_equal(rated.trace["energy"][:n], plain.trace["energy"][:n])

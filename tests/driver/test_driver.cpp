@@ -330,55 +330,82 @@ TEST_CASE("a plateau tolerance leaves creeping coarse levels but not the origina
 
 TEST_CASE("the progress-rate rule leaves a coarse level slower than the next is expected to be",
           "[driver][rules]") {
-  // A level of 25 variables of 100, one step a second, windows of 2 steps: the first window
-  // falls 10 per second, so the original problem is expected to give 10 * 25 / 100 = 2.5.
-  const std::vector<double> energies{100.0, 90.0, 80.0, 75.0, 72.0, 70.0, 69.0};
+  // A level of 25 variables of 100 (every one in group 0, labelled 3), each step a move over
+  // the 25, sweeps of 2 steps: the next level's first sweep is expected to work over
+  // 50 * 100 / 25 = 200 variables.
+  const std::vector<double> energies{100.0, 90.0, 80.0, 75.0, 72.0, 70.0, 69.0, 68.5, 68.4};
   const std::vector<VariableIndex> group_of(100, 0);
+  const std::vector<Label> level_labeling{3};
+  const auto event_at = [&](std::span<const double> history, std::size_t step, bool at_original) {
+    StepEvent event = rule_event(static_cast<double>(step), 0, at_original, static_cast<long>(step),
+                                 static_cast<long>(step), history.subspan(0, step + 1));
+    event.num_variables = 25;
+    event.step_variables = step > 0 ? 25 : 0;
+    event.level_labeling = level_labeling;
+    if (!at_original) event.group_of = group_of;
+    return event;
+  };
   const auto decisions = [&](Rule rule, bool at_original) {
     std::vector<Decision> out;
-    for (std::size_t step = 0; step < energies.size(); ++step) {
-      StepEvent event =
-          rule_event(static_cast<double>(step), 0, at_original, static_cast<long>(step),
-                     static_cast<long>(step), std::span<const double>(energies.data(), step + 1));
-      event.num_variables = 25;
-      if (!at_original) event.group_of = group_of;
-      out.push_back(rule(event).decision);
-    }
+    for (std::size_t step = 0; step < energies.size(); ++step)
+      out.push_back(rule(event_at(energies, step, at_original)).decision);
     return out;
   };
   using enum Decision;
-  // Steps 4 and 5 fall 4 and 2.5 per second over their windows (not below 2.5); step 6, 1.5.
+  // Without an estimate of its own the next level is expected to gain what the first sweep
+  // gained (20), 0.1 per variable moved. Over windows of 2 steps (50 variables moved) the level
+  // falls 0.4, 0.3, 0.16 per variable at steps 2 to 4 and 0.1 at step 5: not above, so it is
+  // left there.
   CHECK(decisions(progress_rate({2}), false) ==
         std::vector<Decision>{continue_level, continue_level, continue_level, continue_level,
-                              continue_level, continue_level, refine});
+                              continue_level, refine, refine, refine, refine});
   CHECK(decisions(progress_rate({2}), true) ==
         std::vector<Decision>(energies.size(), continue_level));
-  // Windows of 3 steps are compared from step 6 on: the first falls 25 / 3 per second (2.08
-  // expected of the next level), steps 3 to 6 fall 2 per second.
-  CHECK(decisions(progress_rate({3}), false) ==
+  // With an estimate: asked once, at the end of the first sweep, with the labeling the level
+  // would hand down. A gain of 4 is 0.02 per variable; windows of 2 steps fall 0.03 at step 7
+  // and 0.012 at step 8.
+  int asked = 0;
+  const NextLevelGain gain_of_four = [&](std::span<const Label> ground) {
+    ++asked;
+    CHECK(ground.size() == 100);
+    CHECK(std::ranges::all_of(ground, [](Label l) { return l == 3; }));
+    return 4.0;
+  };
+  CHECK(decisions(progress_rate({2}, gain_of_four), false) ==
         std::vector<Decision>{continue_level, continue_level, continue_level, continue_level,
-                              continue_level, continue_level, refine});
-  // A level that starts without a decrease has no rate to compare with.
-  const std::vector<double> level{5.0, 5.0, 5.0, 4.0, 3.0, 3.0, 3.0};
-  Rule fresh = progress_rate({2});
-  for (std::size_t step = 0; step < level.size(); ++step) {
-    StepEvent event =
-        rule_event(static_cast<double>(step), 0, false, static_cast<long>(step),
-                   static_cast<long>(step), std::span<const double>(level.data(), step + 1));
-    event.num_variables = 25;
-    event.group_of = group_of;
-    CHECK(fresh(event).decision == continue_level);
-  }
+                              continue_level, continue_level, continue_level, continue_level,
+                              refine});
+  CHECK(asked == 1);
+  // Sweeps of 8 steps: nothing is compared before step 8, and then over the last 4 steps
+  // ((72 - 68.4) / 100 = 0.036 per variable against 4 / 800 = 0.005).
+  asked = 0;
+  CHECK(decisions(progress_rate({8}, gain_of_four), false) ==
+        std::vector<Decision>(energies.size(), continue_level));
+  CHECK(asked == 1);
+  // A level that has stopped decreasing is left even when nothing is expected of the next one.
+  const std::vector<double> level{5.0, 4.0, 3.0, 3.0, 3.0};
+  Rule nothing_expected = progress_rate({2}, [](std::span<const Label>) { return 0.0; });
+  std::vector<Decision> flat_out;
+  for (std::size_t step = 0; step < level.size(); ++step)
+    flat_out.push_back(nothing_expected(event_at(level, step, false)).decision);
+  CHECK(flat_out == std::vector<Decision>{continue_level, continue_level, continue_level,
+                                          continue_level, refine});
+  // Each level is judged on its own steps: a second level starts afresh at its step 0.
+  Rule twice = progress_rate({2});
+  CHECK(decisions(twice, false).back() == refine);
+  CHECK(decisions(twice, false) == decisions(progress_rate({2}), false));
   // Through Options, beside the plateau rule.
   Options options;
-  options.progress_window_steps = 2;
+  options.progress_sweep_steps = 2;
+  options.next_level_gain = gain_of_four;
   Rule through_options = [rules = options.rules()](const StepEvent& event) {
     return rules.decide(event);
   };
+  CHECK(decisions(through_options, false)[7] == continue_level);
   CHECK(decisions(through_options, false).back() == refine);
-  options.progress_window_steps = -1;
-  CHECK_THAT(options.validate(), Catch::Contains("progress_window_steps must be >= 0"));
-  CHECK_THROWS_WITH(progress_rate({0}), Catch::Contains("every window must be >= 1 step"));
+  options.progress_sweep_steps = -1;
+  CHECK_THAT(options.validate(), Catch::Contains("progress_sweep_steps must be >= 0"));
+  CHECK_THROWS_WITH(progress_rate({0}), Catch::Contains("every sweep must be >= 1 step"));
 }
 
 TEST_CASE("options and rules validate their fields", "[driver][options][validation]") {

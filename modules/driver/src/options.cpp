@@ -37,8 +37,8 @@ std::string Options::validate() const {
     return "plateau_tolerance_at_original must be finite and >= 0";
   }
   if (max_steps_per_level < 0) return "max_steps_per_level must be >= 0 (0: no limit)";
-  if (progress_window_steps < 0)
-    return "progress_window_steps must be >= 0 (0: no progress-rate rule)";
+  if (progress_sweep_steps < 0)
+    return "progress_sweep_steps must be >= 0 (0: no progress-rate rule)";
   if (max_total_steps < 0) return "max_total_steps must be >= 0 (0: no limit)";
   if (!std::isfinite(time_limit_seconds) || time_limit_seconds < 0.0) {
     return "time_limit_seconds must be finite and >= 0 (0: no limit)";
@@ -65,7 +65,8 @@ Rules Options::rules() const {
     rules.add(no_decrease({plateau_steps_at_original}, plateau_tolerance, 0,
                           plateau_tolerance_at_original));
   }
-  if (progress_window_steps > 0) rules.add(progress_rate({progress_window_steps}));
+  if (progress_sweep_steps > 0)
+    rules.add(progress_rate({progress_sweep_steps}, next_level_gain));
   if (max_steps_per_level > 0) rules.add(level_step_limit(max_steps_per_level));
   if (max_total_steps > 0) rules.add(total_step_limit(max_total_steps));
   if (time_limit_seconds > 0.0) rules.add(time_limit(time_limit_seconds));

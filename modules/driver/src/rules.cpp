@@ -3,10 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 namespace c2f {
+
+namespace {
+
+/// Steps over which progress_rate measures a level's current progress per unit of work.
+constexpr std::size_t kProgressRateWindow = 4;
+
+}  // namespace
 
 std::string_view to_string(TerminationReason reason) {
   switch (reason) {
@@ -64,34 +73,50 @@ Rule no_decrease(std::vector<int> steps_per_level, double tolerance, int steps_a
   };
 }
 
-Rule progress_rate(std::vector<int> window_per_level) {
-  if (window_per_level.empty()) throw std::invalid_argument("progress_rate: no window");
-  for (int k : window_per_level) {
+Rule progress_rate(std::vector<int> sweep_per_level, NextLevelGain next_gain) {
+  if (sweep_per_level.empty()) throw std::invalid_argument("progress_rate: no sweep length");
+  for (int k : sweep_per_level) {
     if (k < 1) {
-      throw std::invalid_argument("progress_rate: every window must be >= 1 step, got " +
+      throw std::invalid_argument("progress_rate: every sweep must be >= 1 step, got " +
                                   std::to_string(k));
     }
   }
-  // The run-clock time of each step of the level being solved (rules see every step, from 0).
-  std::vector<double> times;
-  return [ks = std::move(window_per_level), times](const StepEvent& p) mutable -> Verdict {
+  // Of the level being solved (rules see every step, from 0): the work done by each step, the
+  // next level's expected decrease per unit of work once the first sweep is done, and scratch
+  // for the labeling.
+  struct LevelState {
+    std::vector<double> work;
+    std::optional<double> expected_next;
+    Labeling ground;
+  };
+  return [ks = std::move(sweep_per_level), next_gain = std::move(next_gain),
+          level = LevelState{}](const StepEvent& p) mutable -> Verdict {
     if (p.at_original || p.group_of.empty()) return {};
-    if (p.step == 0) times.clear();
-    times.push_back(p.time_s);
+    if (p.step == 0) {
+      level.work.assign(1, 0.0);
+      level.expected_next.reset();
+    } else {
+      level.work.push_back(level.work.back() + static_cast<double>(p.step_variables));
+    }
     const auto index = std::min<std::size_t>(static_cast<std::size_t>(p.level), ks.size() - 1);
     const auto k = static_cast<std::size_t>(ks[index]);
     const auto& energies = p.level_energies;
     const std::size_t now = energies.size() - 1;
-    if (now < 2 * k || times.size() != energies.size()) return {};
-    const auto rate = [&](std::size_t from, std::size_t to) {
-      const double seconds = times[to] - times[from];
-      return seconds > 0.0 ? (energies[from] - energies[to]) / seconds : 0.0;
-    };
-    const double first = rate(0, k);
-    if (!(first > 0.0)) return {};
-    const double expected_next =
-        first * static_cast<double>(p.num_variables) / static_cast<double>(p.group_of.size());
-    if (rate(now - k, now) >= expected_next) return {};
+    if (now < k || level.work.size() != energies.size()) return {};
+    if (!level.expected_next) {
+      const double gain =
+          next_gain ? next_gain(p.ground_labeling(level.ground)) : energies[0] - energies[k];
+      const double next_work = level.work[k] * static_cast<double>(p.group_of.size()) /
+                               static_cast<double>(p.num_variables);
+      level.expected_next = next_work > 0.0 ? std::max(0.0, gain) / next_work : 0.0;
+    }
+    const std::size_t window = std::min<std::size_t>(kProgressRateWindow, k);
+    const double work = level.work[now] - level.work[now - window];
+    const double decrease = energies[now - window] - energies[now];
+    const double rate = work > 0.0
+                            ? decrease / work
+                            : (decrease > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    if (rate > *level.expected_next) return {};
     return {Decision::refine, TerminationReason::converged};
   };
 }

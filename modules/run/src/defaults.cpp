@@ -42,6 +42,10 @@ RunDefaults pairwise_defaults() {
   // level's plateau tolerance").
   defaults.plateau_tolerance = 1e-4;
   defaults.grid_plateau_tolerance = 0.0;
+  // A coarse level is also left once it gains per variable moved no more than the original
+  // problem is expected to (docs/history/results-2026-12.md, "Leaving a coarse level when it
+  // gains less than the original problem would").
+  defaults.progress_rate = true;
   return defaults;
 }
 

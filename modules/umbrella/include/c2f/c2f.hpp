@@ -21,6 +21,7 @@
 #include "c2f/core/energy_tally.hpp"
 #include "c2f/core/grid.hpp"
 #include "c2f/core/labeling.hpp"
+#include "c2f/core/local_gain.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/pairwise_term.hpp"

@@ -43,10 +43,13 @@ struct Options {
   double plateau_tolerance = 0.0;
   /// The same on the original problem (0: the run converges only on a strict plateau).
   double plateau_tolerance_at_original = 0.0;
-  /// When > 0, a coarse level is also refined once its progress per second over windows of
-  /// this many steps falls below what the next level is expected to give (progress_rate in
-  /// c2f/driver/rules.hpp). 0: no such rule.
-  int progress_window_steps = 0;
+  /// When > 0, a coarse level is also refined, after its first sweep of this many steps, once
+  /// its progress per variable moved has fallen to what the next level is expected to give
+  /// (progress_rate in c2f/driver/rules.hpp). 0: no such rule.
+  int progress_sweep_steps = 0;
+  /// With progress_sweep_steps > 0: what the next level is expected to gain over its first
+  /// sweep (progress_rate's next_gain; unset: the level's own first sweep's decrease).
+  NextLevelGain next_level_gain;
   /// Refine after this many steps on one level (0: no limit).
   long max_steps_per_level = 0;
   /// Stop after this many steps in the whole run (0: no limit).

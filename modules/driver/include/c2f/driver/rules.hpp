@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -46,17 +47,26 @@ using Rule = std::function<Verdict(const StepEvent&)>;
 /// (std::invalid_argument otherwise).
 Rule no_decrease(std::vector<int> steps_per_level, double tolerance = 0.0,
                  int steps_at_original = 0, double tolerance_at_original = 0.0);
-/// Refine a coarse level once its progress per second has fallen below what the next level is
-/// expected to give. Progress per second is the energy decrease over a window of k steps
-/// (k = window_per_level[level], the last entry serving deeper levels) over the run-clock
-/// seconds they took. The next level is expected to start as this one did, with steps that cost
-/// in proportion to its variables: this level's rate over its first window times its variables
-/// over the original problem's. (The original problem is the finest the next level can be, so
-/// before an intermediate level the expectation is low and the rule leaves late rather than
-/// early.) Compared from the end of the second window on (step >= 2k); never on the original
-/// problem, nor on a level whose first window did not decrease the energy. Every k must be >= 1
-/// (std::invalid_argument otherwise).
-Rule progress_rate(std::vector<int> window_per_level);
+/// What the next level is expected to gain over its first sweep, from the labeling of the
+/// original variables a coarse level would hand down (e.g. local_gain of the original energy,
+/// c2f/core/local_gain.hpp). Called on the run clock.
+using NextLevelGain = std::function<double(std::span<const Label> ground)>;
+
+/// Refine a coarse level once its progress has fallen to what the next level is expected to
+/// give. Progress is measured per unit of work, the variables the steps' moves worked over
+/// (StepEvent::step_variables), not per second: a move's time grows with the variables it
+/// moves, and work, unlike the clock, is the same on every machine and thread count, so a run
+/// takes the same steps each time. The level's first sweep (k = sweep_per_level[level] steps,
+/// the last entry serving deeper levels) always runs. At its end the next level's rate is
+/// estimated, once: `next_gain` of the labeling the level would hand down then (unset: the
+/// first sweep's own decrease, as if the next level started as this one did) over the work of
+/// the next level's first sweep, taken as this first sweep's work times the original variables
+/// over the level's (a sweep of whole moves on the original problem; near moves do less, so
+/// the estimate is low and the rule leaves no sooner than it should). From step k on, the
+/// level's decrease over its last min(4, k) steps per unit of their work is compared with that
+/// rate, and the level is refined once it is not above it. Never on the original problem.
+/// Every k must be >= 1 (std::invalid_argument otherwise).
+Rule progress_rate(std::vector<int> sweep_per_level, NextLevelGain next_gain = {});
 /// Refine after `max_steps` steps on a level.
 Rule level_step_limit(long max_steps);
 /// Stop after `max_steps` steps in the whole run.

@@ -73,7 +73,9 @@ struct RunDefaults {
 /// (on a pixel grid of 16 labels or more without shift moves also from the labels next to it:
 /// NearSeeds::label_and_adjacent) where its edges are local (a grid, a lattice) and it has at
 /// least 200000 variables, whole moves elsewhere; a coarse level ends after 4 moves that
-/// together lower the energy by no more than 1e-4 of it (on a pixel grid: by nothing).
+/// together lower the energy by no more than 1e-4 of it (on a pixel grid: by nothing), or
+/// sooner, after its first sweep, once it gains per variable moved no more than the original
+/// problem is expected to (progress_rate).
 [[nodiscard]] RunDefaults pairwise_defaults();
 
 }  // namespace c2f

@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 
+#include "c2f/core/local_gain.hpp"
 #include "c2f/core/memory_budget.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/driver/coarse_to_fine.hpp"
@@ -105,6 +107,11 @@ std::size_t flow_parts_of(const Solver& solver, const PairwiseEnergy& energy) {
 /// original problem's, so one sweep of their moves on `energy` is one on any coarse level.
 [[nodiscard]] std::size_t coarse_sweep_steps(const SolverSpec& spec, const PairwiseEnergy& energy);
 
+/// At most this many local costs (variables x labels) visited by the progress-rate rule's
+/// estimate of the original problem's first-sweep gain (local_gain): 2 MiB of doubles, a few
+/// milliseconds plus a pass over the edges.
+inline constexpr std::size_t kLocalGainCosts = std::size_t{1} << 18;
+
 /// Minimises `energy` over the partitions `levels` provides (none: flat) as `config` says. Throws
 /// RunConfigError naming the field of a configuration that is not usable or a budget the floor
 /// does not fit, and what coarse_to_fine throws (e.g. a start labeling of the wrong size).
@@ -127,9 +134,12 @@ RunReport run(const PairwiseEnergy& energy, P& levels, const RunConfig& config,
   const ProblemSize size = problem_size(energy);
   Options options = config.limits;
   if (config.progress_rate) {
-    options.progress_window_steps = static_cast<int>(
+    options.progress_sweep_steps = static_cast<int>(
         std::min<std::size_t>(coarse_sweep_steps(spec, energy),
                               static_cast<std::size_t>(std::numeric_limits<int>::max())));
+    options.next_level_gain = [&energy](std::span<const Label> ground) {
+      return local_gain(energy, ground, kLocalGainCosts);
+    };
   }
   options.coarse_level_fits = coarse_level_admission(spec, size, report.plan);
   if constexpr (requires { levels.set_threads(1); })

@@ -34,10 +34,11 @@ struct RunConfig {
   Options limits;
   /// The bytes the whole run may take; unset: the machine's default (default_memory_budget).
   std::optional<MemoryBudget> memory = std::nullopt;
-  /// Whether a coarse level is also left once its progress per second over a sweep of its
-  /// solver's moves falls below what the next level is expected to give (the driver's
-  /// progress_rate rule, windows of coarse_sweep_steps); the plateau rule of `limits` still
-  /// applies.
+  /// Whether a coarse level is also left, after its first sweep of its solver's moves
+  /// (coarse_sweep_steps), once its energy decrease per variable moved has fallen to what the
+  /// original problem is expected to give: the local gain (local_gain) of the labeling it would
+  /// hand down, over a sweep of whole moves on the original variables (the driver's
+  /// progress_rate rule). The plateau rule of `limits` still applies.
   bool progress_rate = false;
   /// At most this many bytes of the budget for the graph-cut solvers' recycled move graphs;
   /// unset: all that the budget leaves above the run's floor and expansion's kept move
