@@ -2,67 +2,15 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdlib>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace c2f {
-
-namespace {
-
-/// Adds weight * cost(l, other) (or cost(other, l) when the variable is the edge's v) for every
-/// label l to costs: the term's kind is decided once per edge, not per label.
-void add_edge_costs(const PairwiseTerm& term, double weight, Label other, bool variable_first,
-                    std::span<double> costs) {
-  const auto L = static_cast<Label>(costs.size());
-  switch (term.kind()) {
-    case TermKind::potts:
-      for (Label l = 0; l < L; ++l) costs[static_cast<std::size_t>(l)] += weight;
-      costs[static_cast<std::size_t>(other)] -= weight;
-      return;
-    case TermKind::table: {
-      const std::vector<double>& table = term.table_costs();
-      const auto n = static_cast<std::size_t>(L);
-      const auto b = static_cast<std::size_t>(other);
-      for (std::size_t l = 0; l < n; ++l)
-        costs[l] += weight * (variable_first ? table[l * n + b] : table[b * n + l]);
-      return;
-    }
-    case TermKind::truncated_linear: {
-      const double truncation = term.truncation();
-      for (Label l = 0; l < L; ++l) {
-        const double distance = std::abs(l - other);
-        costs[static_cast<std::size_t>(l)] +=
-            weight * (distance < truncation ? distance : truncation);
-      }
-      return;
-    }
-    case TermKind::tsgo_step:
-      for (Label l = 0; l < L; ++l) costs[static_cast<std::size_t>(l)] += weight;
-      for (Label l = std::max(0, other - 1); l <= std::min(L - 1, other + 1); ++l)
-        costs[static_cast<std::size_t>(l)] -= weight * (l == other ? 1.0 : 5.0 / 6.0);
-      return;
-  }
-}
-
-}  // namespace
 
 double local_gain(const PairwiseEnergy& energy, std::span<const Label> labeling,
                   std::size_t max_costs) {
   const std::size_t n = energy.num_variables();
   const auto L = static_cast<std::size_t>(energy.num_labels());
-  if (labeling.size() != n) {
-    throw std::invalid_argument("local_gain: the labeling has " + std::to_string(labeling.size()) +
-                                " labels, the energy " + std::to_string(n) + " variables");
-  }
-  for (std::size_t v = 0; v < n; ++v) {
-    if (labeling[v] < 0 || static_cast<std::size_t>(labeling[v]) >= L) {
-      throw std::invalid_argument("local_gain: variable " + std::to_string(v) + " has label " +
-                                  std::to_string(labeling[v]) + ", outside [0, " +
-                                  std::to_string(L - 1) + "]");
-    }
-  }
+  validate_labeling(labeling, n, energy.num_labels(), "local_gain: labeling");
   if (n == 0) return 0.0;
   std::size_t stride = 1;
   if (max_costs > 0 && n * L > max_costs)
@@ -73,15 +21,16 @@ double local_gain(const PairwiseEnergy& energy, std::span<const Label> labeling,
   for (std::size_t i = 0; i < visited; ++i)
     for (std::size_t l = 0; l < L; ++l)
       costs[i * L + l] = energy.unary(i * stride, static_cast<Label>(l));
-  const auto terms = energy.terms();
   for (const Edge& e : energy.edges()) {
     if ((e.u & skip) == 0) {
-      add_edge_costs(terms[e.term], e.weight, labeling[e.v], true,
-                     std::span<double>(costs).subspan(e.u / stride * L, L));
+      double* const row = costs.data() + e.u / stride * L;
+      for (std::size_t l = 0; l < L; ++l)
+        row[l] += energy.pairwise_cost(e, static_cast<Label>(l), labeling[e.v]);
     }
     if ((e.v & skip) == 0) {
-      add_edge_costs(terms[e.term], e.weight, labeling[e.u], false,
-                     std::span<double>(costs).subspan(e.v / stride * L, L));
+      double* const row = costs.data() + e.v / stride * L;
+      for (std::size_t l = 0; l < L; ++l)
+        row[l] += energy.pairwise_cost(e, labeling[e.u], static_cast<Label>(l));
     }
   }
   double gain = 0.0;
