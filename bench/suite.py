@@ -373,6 +373,8 @@ def stereo_instances(args, tools: Path) -> List[Instance]:
                      f"--flat-near-radius={defaults['near_radius']}"]
             if defaults["shift_moves"]:
                 flags += ["--c2f-shift-moves", "--flat-shift-moves"]
+            if defaults["plateau"] == "rate":
+                flags += ["--c2f-progress-rate"]
             row = run_tool([str(tools / "c2f-bench-stereo"), "run", scene, "--data", str(data),
                             "--out", str(folder), "--time-limit", str(args.time_limit),
                             "--header"] + flags)[0]

@@ -3,6 +3,7 @@
 //
 //   c2f-bench-stereo run SCENE [--data DIR] [--out DIR] [--time-limit S] [--schedule TEXT]
 //                    [--label-order sequential|random|frequency] [--coarse-tolerance T]
+//                    [--c2f-progress-rate]
 //                    [--maxflow dynamic|boost|kolmogorov] [--downscale K] [--labels L]
 //                    [--flat-near-radius R] [--c2f-near-radius R] [--flat-shift-moves]
 //                    [--c2f-shift-moves] [--near-levels original|all] [--threads N]
@@ -119,6 +120,7 @@ struct Settings {
   double time_limit = 600;
   VisitOrder label_order = VisitOrder::sequential;
   double coarse_tolerance = 0.0;
+  bool c2f_progress_rate = false;  ///< RunConfig::progress_rate of the coarse-to-fine run
   MaxFlowKind maxflow = MaxFlowKind::dynamic;
   int downscale = 1;              ///< shrink the views by this factor (the scaling study)
   int labels = 0;                 ///< 0: the scene's range, else 85
@@ -161,6 +163,7 @@ Run solve(const TsgoProblem& problem, const StereoScene& scene, const std::strin
   config.solver = expansion_spec(expansion, settings.near_levels, settings.maxflow);
   config.limits.plateau_steps = {4};
   config.limits.plateau_tolerance = settings.coarse_tolerance;  // the original: converged
+  config.progress_rate = settings.c2f_progress_rate;            // no coarse level in the flat run
   config.limits.time_limit_seconds = settings.time_limit;
   config.memory = settings.memory;
   config.energy_name = "the " + schedule + " run";
@@ -419,6 +422,8 @@ int main(int argc, char** argv) {
         .text("label-order", &label_order, "sequential, random or frequency")
         .real("coarse-tolerance", &settings.coarse_tolerance, {0.0, 1.0, false, true},
               "plateau tolerance on coarse levels")
+        .flag("c2f-progress-rate", &settings.c2f_progress_rate,
+              "leave a coarse level also by the progress-rate rule (as c2f-stereo --plateau rate)")
         .text("maxflow", &maxflow, "dynamic, boost or kolmogorov")
         .integer("downscale", &settings.downscale, {1, 16}, "shrink the views by this factor")
         .integer("labels", &settings.labels, {0, 256},

@@ -438,9 +438,9 @@ TEST_CASE("dynamic max-flow built and cut on several threads is the graph built 
 namespace {
 
 /// The changes from `before` to `after` as change_in_parts takes them, in index order.
-std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes_between(
+std::pair<LargeVector<TerminalChange>, LargeVector<EdgeChange>> changes_between(
     const FlowCapacities& before, const FlowCapacities& after) {
-  std::pair<std::vector<TerminalChange>, std::vector<EdgeChange>> changes;
+  std::pair<LargeVector<TerminalChange>, LargeVector<EdgeChange>> changes;
   for (std::size_t i = 0; i < after.source.size(); ++i) {
     const double delta = (after.source[i] - after.sink[i]) - (before.source[i] - before.sink[i]);
     if (delta != 0.0) changes.first.push_back({static_cast<FlowNode>(i), delta});
@@ -627,8 +627,8 @@ TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on 
   DynamicMaxFlow dynamic;
   auto problem = random_flow_problem(rng, 10, 20);
   dynamic.build(problem.num_nodes, problem.edges);
-  const std::vector<TerminalChange> bad_node{{10, 1.0}};
-  const std::vector<EdgeChange> bad_edge{{20, 1.0, 0.0}};
+  const LargeVector<TerminalChange> bad_node{{10, 1.0}};
+  const LargeVector<EdgeChange> bad_edge{{20, 1.0, 0.0}};
   CHECK_THROWS_WITH(dynamic.change_in_parts(bad_node, {}, 1), Catch::Contains("solve() first"));
   dynamic.solve(problem.caps);
   CHECK_THROWS_WITH(dynamic.change_in_parts(bad_node, {}, 1), Catch::Contains("node 10 of 10"));
@@ -638,8 +638,8 @@ TEST_CASE("dynamic max-flow: changes made by parts re-solve to the exact cut on 
   dynamic.solve_cut_in_parts(problem.caps, 2);
   const std::vector<char> solved = source_set(dynamic);
   const std::size_t augmentations = dynamic.last_solve().augmentations;
-  const std::vector<TerminalChange> good_then_bad{{0, 5.0}, {10, 1.0}};
-  const std::vector<EdgeChange> good_edge{{0, 1.0, 0.0}};
+  const LargeVector<TerminalChange> good_then_bad{{0, 5.0}, {10, 1.0}};
+  const LargeVector<EdgeChange> good_edge{{0, 1.0, 0.0}};
   CHECK_THROWS_WITH(dynamic.change_in_parts(good_then_bad, good_edge, 2),
                     Catch::Contains("node 10 of 10"));
   CHECK_THROWS_WITH(dynamic.change_in_parts(std::span(good_then_bad).first(1), bad_edge, 2),

@@ -930,9 +930,9 @@ struct DynamicMaxFlow::Impl {
     }
     for (const EdgeChange& change : between)
       change_edge(change.edge, change.delta_forward, change.delta_backward, touched);
-    for (const std::vector<TerminalChange>& list : changes.terminals)
+    for (const LargeVector<TerminalChange>& list : changes.terminals)
       stats.changed_nodes += list.size();
-    for (const std::vector<EdgeChange>& list : changes.edges) stats.changed_edges += list.size();
+    for (const LargeVector<EdgeChange>& list : changes.edges) stats.changed_edges += list.size();
   }
 
   /// Makes each part's changes on one thread (up to `threads` at once): part k's terminal

@@ -17,6 +17,7 @@
 #include "c2f/core/anytime_solver.hpp"
 #include "c2f/core/default_init_allocator.hpp"
 #include "c2f/core/edge_incidence.hpp"
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/core/energy.hpp"
 #include "c2f/core/energy_tally.hpp"
 #include "c2f/core/grid.hpp"

@@ -3,7 +3,8 @@
 // std::vector<float, DefaultInitAllocator<float>>(n) allocates n floats and leaves them
 // unwritten. The first write is then the one that touches the memory (and takes its page
 // faults), on whichever thread makes it, instead of a serial pass of zeros before it. The
-// contract is the caller's: every element is written before it is read.
+// contract is the caller's: every element is written before it is read. Large blocks are on
+// huge pages (HugePageAllocator).
 
 #include <memory>
 #include <new>
@@ -11,12 +12,14 @@
 #include <utility>
 #include <vector>
 
+#include "c2f/core/huge_page_allocator.hpp"
+
 namespace c2f {
 
 template <typename T>
-class DefaultInitAllocator : public std::allocator<T> {
+class DefaultInitAllocator : public HugePageAllocator<T> {
  public:
-  using std::allocator<T>::allocator;
+  using HugePageAllocator<T>::HugePageAllocator;
 
   /// Default-initialisation: nothing is written for a trivial U.
   template <typename U>

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -35,7 +36,7 @@ class EdgeIncidence {
     }
     for (std::size_t v = 0; v + 1 < offsets_.size(); ++v) offsets_[v + 1] += offsets_[v];
     incidences_.resize(offsets_.back());
-    std::vector<std::size_t> cursor(offsets_.begin(), offsets_.end() - 1);
+    LargeVector<std::size_t> cursor(offsets_.begin(), offsets_.end() - 1);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       const auto index = static_cast<std::uint32_t>(i);
       incidences_[cursor[edges[i].u]++] = {index, edges[i].v, true};
@@ -48,8 +49,8 @@ class EdgeIncidence {
   }
 
  private:
-  std::vector<std::size_t> offsets_;
-  std::vector<Incidence> incidences_;
+  LargeVector<std::size_t> offsets_;
+  LargeVector<Incidence> incidences_;
 };
 
 }  // namespace c2f

@@ -56,7 +56,7 @@ class ColourPassing {
  private:
   UnaryCosts unaries_;
   int num_labels_;
-  std::vector<ColourFactor> factors_;
+  LargeVector<ColourFactor> factors_;
   int labels_;
   int iterations_ = 0;
   std::vector<std::uint32_t> variable_colour_;

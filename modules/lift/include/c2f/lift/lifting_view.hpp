@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 #include "c2f/core/unary_costs.hpp"
@@ -26,7 +27,7 @@ struct LiftingView {
   std::size_t num_variables = 0;
   int num_labels = 0;
   UnaryCosts unaries;  ///< row-major num_variables x num_labels, the energy's own
-  std::vector<ColourFactor> factors;
+  LargeVector<ColourFactor> factors;
   /// The energy itself when it is a PairwiseEnergy (the reference's local grouping reads its
   /// grid edges); null for other kinds.
   const PairwiseEnergy* pairwise = nullptr;

@@ -38,6 +38,7 @@
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
 #include "c2f/core/default_init_allocator.hpp"
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
 namespace c2f {
@@ -398,7 +399,7 @@ class BinaryMoveSolver {
     terminal_changes_.clear();
     detail::append_by_bands(
         num_nodes_, band_terminals_, terminal_changes_,
-        [&](std::size_t first, std::size_t last, std::vector<TerminalChange>& out) {
+        [&](std::size_t first, std::size_t last, LargeVector<TerminalChange>& out) {
           for (std::size_t i = first; i < last; ++i) {
             if (node_values_[i] == graph.node_values[i]) continue;
             list_node_change(kind, i, graph.node_values[i], node_values_[i], out);
@@ -409,7 +410,7 @@ class BinaryMoveSolver {
     edge_changes_.clear();
     detail::append_by_bands(
         pairs_.size(), band_edges_, edge_changes_,
-        [&](std::size_t first, std::size_t last, std::vector<EdgeChange>& out) {
+        [&](std::size_t first, std::size_t last, LargeVector<EdgeChange>& out) {
           for (std::size_t e = first; e < last; ++e) {
             if (p[e] == graph.pair_values[e]) continue;
             list_pair_change(kind, e, graph.pair_values[e], p[e], out);
@@ -438,7 +439,7 @@ class BinaryMoveSolver {
     if (pairs_of_part_.empty()) list_pairs_by_part();
     changes_by_part_.clear(parts_);
     const auto list_pairs = [&](std::span<const std::uint32_t> pairs,
-                                std::vector<EdgeChange>& out) {
+                                LargeVector<EdgeChange>& out) {
       for (const std::uint32_t e : pairs) {
         if (p[e] == graph.pair_values[e]) continue;
         list_pair_change(kind, e, graph.pair_values[e], p[e], out);
@@ -448,7 +449,7 @@ class BinaryMoveSolver {
     detail::for_each_band(  // bands of one part
         parts_,
         [&](std::size_t k, std::size_t, std::size_t) {
-          std::vector<TerminalChange>& terminals = changes_by_part_.terminals[k];
+          LargeVector<TerminalChange>& terminals = changes_by_part_.terminals[k];
           for (std::size_t i = first_node_of_part(k); i < first_node_of_part(k + 1); ++i) {
             if (node_values_[i] == graph.node_values[i]) continue;
             list_node_change(kind, i, graph.node_values[i], node_values_[i], terminals);
@@ -480,7 +481,7 @@ class BinaryMoveSolver {
 
   /// The terminal changes of node i's coefficient going from `before` to `after`.
   void list_node_change(GraphKind kind, std::size_t i, double before, double after,
-                        std::vector<TerminalChange>& out) const {
+                        LargeVector<TerminalChange>& out) const {
     if (kind == GraphKind::plain) {
       out.push_back({static_cast<FlowNode>(i), after - before});
       return;
@@ -492,7 +493,7 @@ class BinaryMoveSolver {
 
   /// The edge changes of pair e's coefficient going from `before` to `after`.
   static void list_pair_change(GraphKind kind, std::size_t e, double before, double after,
-                               std::vector<EdgeChange>& out) {
+                               LargeVector<EdgeChange>& out) {
     if (kind == GraphKind::plain) {
       out.push_back({e, after - before, 0.0});
       return;
@@ -532,19 +533,19 @@ class BinaryMoveSolver {
   std::size_t num_nodes_ = 0;
   std::size_t parts_ = 1;  ///< solve_in_parts
   int parts_threads_ = 1;
-  std::vector<FlowEdge> pairs_;
+  LargeVector<FlowEdge> pairs_;
   std::vector<FlowEdge> doubled_pairs_;  // the QPBO graph's edges, once some move needs them
   bool doubled_ready_ = false;
   // Work arrays of every move, whichever graph solves it.
-  std::vector<double> node_values_;  // d, or QPBO's adjusted d
+  LargeVector<double> node_values_;  // d, or QPBO's adjusted d
   FlowCapacities plain_caps_;
   FlowCapacities qpbo_caps_;
-  std::vector<char> in_source_;           // the last solve's source set
+  LargeVector<char> in_source_;           // the last solve's source set
   std::vector<std::uint8_t> band_flags_;  // scan_coefficients' findings per band
   std::vector<std::size_t> band_counts_;  // unlabelled variables per band of a QPBO move
   // change_graph's changes, per band and then joined (unwritten until the bands' copies).
-  std::vector<std::vector<TerminalChange>> band_terminals_;
-  std::vector<std::vector<EdgeChange>> band_edges_;
+  std::vector<LargeVector<TerminalChange>> band_terminals_;
+  std::vector<LargeVector<EdgeChange>> band_edges_;
   DefaultInitVector<TerminalChange> terminal_changes_;
   DefaultInitVector<EdgeChange> edge_changes_;
   // change_graph_by_parts' pairs by part (found on its first call after bind or solve_in_parts)

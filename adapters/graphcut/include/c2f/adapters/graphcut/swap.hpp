@@ -72,8 +72,8 @@ class SwapSolver {
     if (state_.energy == nullptr) throw std::logic_error("SwapSolver::step: call bind() first");
     const PairwiseEnergy& energy = *state_.energy;
     const Labeling& labeling = state_.labeling;
-    std::vector<double>& d = state_.d;
-    std::vector<double>& p = state_.p;
+    LargeVector<double>& d = state_.d;
+    LargeVector<double>& p = state_.p;
     const auto [alpha, beta] = cycle_.next();
     auto in_move = [&](Label l) { return l == alpha || l == beta; };
     for (std::size_t i = 0; i < d.size(); ++i) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "c2f/core/huge_page_allocator.hpp"
+
 namespace c2f {
 
 using FlowNode = std::uint32_t;
@@ -38,16 +40,16 @@ struct EdgeChange {
 /// whose nodes are both in part k; edges[parts] changes the edges between parts. Each list in
 /// the order its changes are to be made.
 struct ChangesByPart {
-  std::vector<std::vector<TerminalChange>> terminals;  ///< one list per part
-  std::vector<std::vector<EdgeChange>> edges;          ///< one per part, then the edges between
+  std::vector<LargeVector<TerminalChange>> terminals;  ///< one list per part
+  std::vector<LargeVector<EdgeChange>> edges;          ///< one per part, then the edges between
 
   /// `parts` lists of terminal changes and parts + 1 of edge changes, all empty (keeps their
   /// memory).
   void clear(std::size_t parts) {
     terminals.resize(parts);
     edges.resize(parts + 1);
-    for (std::vector<TerminalChange>& list : terminals) list.clear();
-    for (std::vector<EdgeChange>& list : edges) list.clear();
+    for (LargeVector<TerminalChange>& list : terminals) list.clear();
+    for (LargeVector<EdgeChange>& list : edges) list.clear();
   }
 };
 
@@ -55,10 +57,10 @@ struct ChangesByPart {
 /// edge the capacity of from -> to (forward) and of to -> from (backward). All finite, >= 0.
 /// Cutting a node to the sink side costs `source[i]`, to the source side `sink[i]`.
 struct FlowCapacities {
-  std::vector<double> source;
-  std::vector<double> sink;
-  std::vector<double> forward;
-  std::vector<double> backward;
+  LargeVector<double> source;
+  LargeVector<double> sink;
+  LargeVector<double> forward;
+  LargeVector<double> backward;
 
   /// Sizes the arrays for a graph (keeps their memory when it shrinks or stays).
   void resize(std::size_t num_nodes, std::size_t num_edges);

@@ -35,8 +35,8 @@ void for_each_band(std::size_t count,
 /// hold kBandSize entries or more): the same result for every thread count. A `joined` whose
 /// allocator default-initialises (DefaultInitVector) grows without a serial pass of zeros
 /// before the copies.
-template <class T, class Allocator, class List>
-void append_by_bands(std::size_t count, std::vector<std::vector<T>>& lists,
+template <class T, class ListAllocator, class Allocator, class List>
+void append_by_bands(std::size_t count, std::vector<std::vector<T, ListAllocator>>& lists,
                      std::vector<T, Allocator>& joined, const List& list, int threads,
                      std::size_t band = kBandSize) {
   const std::size_t bands = band_count(count, band);

@@ -13,6 +13,7 @@
 
 #include "c2f/adapters/maxflow/dynamic_maxflow.hpp"
 #include "c2f/adapters/maxflow/maxflow.hpp"
+#include "c2f/core/huge_page_allocator.hpp"
 
 namespace c2f::detail {
 
@@ -26,7 +27,7 @@ struct MoveGraph {
   Backend graph;
   bool built = false;   ///< the topology is in place
   bool solved = false;  ///< node_values and pair_values hold its last problem
-  std::vector<double> node_values, pair_values;
+  LargeVector<double> node_values, pair_values;
 };
 
 /// A copy of `graph`; a backend that can (DynamicMaxFlow) faults its new memory in on up to

@@ -14,6 +14,7 @@
 #include "c2f/adapters/graphcut/binary_move.hpp"
 #include "c2f/adapters/graphcut/move_options.hpp"
 #include "c2f/core/energy_tally.hpp"
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/core/labeling.hpp"
 #include "c2f/core/pairwise_energy.hpp"
 
@@ -41,8 +42,8 @@ struct MoveState {
   /// `labeling`'s energy by chunks, for moves that list what they change (tally_changes()).
   EnergyTally tally;
   BinaryMoveSolver<Backend> moves;
-  std::vector<double> d, p;    ///< the move's binary problem (see binary_move.hpp)
-  std::vector<MoveLabel> out;  ///< its solution
+  LargeVector<double> d, p;    ///< the move's binary problem (see binary_move.hpp)
+  LargeVector<MoveLabel> out;  ///< its solution
 
   /// Validates `start` against the energy (messages begin with `context`), takes it as the
   /// current labeling and fixes the move graphs' topology; moves with keys 0..num_keys-1 may
