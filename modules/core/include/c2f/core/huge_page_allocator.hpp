@@ -5,8 +5,9 @@
 // 4 KiB. On a grid of millions of variables the solver's arrays (unaries, edge incidences, move
 // problems, max-flow graphs) are hundreds of megabytes written once each, and the faults of
 // 4 KiB pages took most of a run's time on some machines (docs/performance.md, "Huge pages for
-// the large arrays"). Smaller blocks, and systems without the advice, take std::allocator's
-// path. The advice is a request: where the kernel gives no huge page the block is as any other.
+// the large arrays"). Smaller blocks take std::allocator's path; where the system has no such
+// advice a large block is only aligned. The advice is a request: where the kernel gives no huge
+// page the block is as any other.
 
 #include <cstddef>
 #include <cstdlib>
