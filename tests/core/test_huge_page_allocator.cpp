@@ -16,10 +16,8 @@ using namespace c2f;
 
 namespace {
 
-constexpr std::size_t kTwoMiB = std::size_t{2} << 20;
-
 bool aligned_to_huge_page(const void* p) {
-  return reinterpret_cast<std::uintptr_t>(p) % kTwoMiB == 0;
+  return reinterpret_cast<std::uintptr_t>(p) % kHugePageBytes == 0;
 }
 
 /// The system's transparent huge page mode ("always", "madvise", "never"), or nothing where the

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "c2f/core/default_init_allocator.hpp"
+#include "c2f/core/huge_page_allocator.hpp"
 #include "c2f/support/parallel_for.hpp"
 
 namespace c2f {
@@ -149,37 +150,31 @@ ByPart sort_by_part(std::size_t size, std::size_t buckets, const BucketOf& bucke
   return sorted;
 }
 
-/// Fills `to` with `from`, by chunks on up to `threads` threads. When the block is large, asks
-/// the kernel for transparent huge pages and, on up to `threads` threads at once, for the pages
-/// themselves (MADV_POPULATE_WRITE, by ranges of 2 MiB): a graph of many megabytes otherwise
-/// costs a page fault per page as one thread first writes it, and the kernel's zeroing of those
-/// pages dominates copying it (22% of a flat whole-move run on a 480x640 grid of 32 labels).
-/// Both are requests: pages the kernel does not give ahead are faulted in by the copy, as
-/// without them.
+/// Fills `to` with `from`, by chunks on up to `threads` threads. A large block is on huge pages
+/// already (DefaultInitVector's HugePageAllocator: 2 MiB-aligned, advised MADV_HUGEPAGE); this
+/// also asks, on up to `threads` threads at once, for the pages themselves
+/// (MADV_POPULATE_WRITE, by ranges of 2 MiB): a graph of many megabytes otherwise costs a page
+/// fault per page as one thread first writes it, and the kernel's zeroing of those pages
+/// dominates copying it (22% of a flat whole-move run on a 480x640 grid of 32 labels). A
+/// request: pages the kernel does not give ahead are faulted in by the copy, as without it.
 template <class T>
 void assign_huge(DefaultInitVector<T>& to, const DefaultInitVector<T>& from, int threads) {
   to.clear();
   to.shrink_to_fit();
   to.reserve(from.size());
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::size_t kHuge = std::size_t{2} << 20;
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
   const std::size_t bytes = from.size() * sizeof(T);
-  if (bytes >= 2 * kHuge) {
+  if (threads != 1 && bytes >= kHugePageMinBytes) {
     const auto begin = reinterpret_cast<std::uintptr_t>(to.data());
-    const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
-    const std::uintptr_t last = (begin + bytes) & ~(kHuge - 1);
+    const std::uintptr_t first = (begin + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+    const std::uintptr_t last = (begin + bytes) & ~(kHugePageBytes - 1);
     if (last > first) {
-      madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-#if defined(MADV_POPULATE_WRITE)
-      if (threads != 1) {
-        parallel_for_chunks((last - first) / kHuge, 1,
-                            [&](std::size_t, std::size_t from_page, std::size_t to_page) {
-                              madvise(reinterpret_cast<void*>(first + from_page * kHuge),
-                                      (to_page - from_page) * kHuge, MADV_POPULATE_WRITE);
-                            },
-                            threads);
-      }
-#endif
+      parallel_for_chunks((last - first) / kHugePageBytes, 1,
+                          [&](std::size_t, std::size_t from_page, std::size_t to_page) {
+                            madvise(reinterpret_cast<void*>(first + from_page * kHugePageBytes),
+                                    (to_page - from_page) * kHugePageBytes, MADV_POPULATE_WRITE);
+                          },
+                          threads);
     }
   }
 #endif

@@ -96,6 +96,7 @@ using c2f::grid_run_memory_need;
 using c2f::GridShape;
 using c2f::GroupIds;
 using c2f::HugePageAllocator;
+using c2f::kHugePageBytes;
 using c2f::kHugePageMinBytes;
 using c2f::IcmOptions;
 using c2f::IcmSolver;

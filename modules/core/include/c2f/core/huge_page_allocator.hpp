@@ -10,15 +10,16 @@
 // page the block is as any other.
 
 #include <cstddef>
-#include <cstdlib>
 #include <memory>
 #include <new>
 #include <vector>
 
 namespace c2f {
 
-/// Blocks from this size on are aligned to 2 MiB and advised for huge pages.
-inline constexpr std::size_t kHugePageMinBytes = std::size_t{4} << 20;
+/// A transparent huge page: 2 MiB.
+inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
+/// Blocks from this size on are aligned to kHugePageBytes and advised for huge pages.
+inline constexpr std::size_t kHugePageMinBytes = 2 * kHugePageBytes;
 
 namespace detail {
 /// A block of `bytes` (>= kHugePageMinBytes) aligned to 2 MiB, its whole 2 MiB pages advised
