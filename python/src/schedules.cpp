@@ -49,7 +49,7 @@ ScheduleProvider schedule_provider(const Schedule& schedule, const ModelEnergy& 
   }
   return ScheduleProvider(
       schedule, shape,
-      model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide, {}, schedule));
+      model.guide.empty() ? SuperpixelSource{} : vision::slic_source(model.guide));
 }
 
 DensePartition partition_from(const py::handle& object, const std::string& name,

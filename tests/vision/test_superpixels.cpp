@@ -1,6 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <opencv2/imgproc.hpp>
+#include <utility>
+#include <vector>
 
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/partition_image.hpp"
@@ -74,31 +78,63 @@ TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[visio
   CHECK_THROWS_WITH(slic_hierarchy(image, {12, 24}), Catch::Contains("region sizes must decrease"));
   CHECK_THROWS_WITH(slic_partition(image, 1), Catch::Contains("region size must be >= 2"));
   CHECK_THROWS_WITH(slic_partition(cv::Mat(), 8), Catch::Contains("non-empty 8-bit 3-channel"));
-  // Regions larger than the image crashed inside OpenCV; they are refused by name.
+  // Regions larger than the image are refused by name.
   CHECK_THROWS_WITH(
       slic_partition(image, 49),
       Catch::Contains("region size 49 is larger than the 64x48 image's shorter side"));
   CHECK(slic_partition(image, 48).num_variables() == 64 * 48);
 }
 
-TEST_CASE("a schedule's superpixel levels computed at once are those computed one by one",
-          "[vision][slic]") {
+TEST_CASE("SLIC superpixels are the same on every thread count, and connected", "[vision][slic]") {
   cv::Mat image = quadrants();
   cv::RNG noise(3);
   cv::Mat speckle(image.size(), CV_8UC3);
   noise.fill(speckle, cv::RNG::UNIFORM, 0, 40);
   image += speckle;
-  const Schedule schedule = Schedule::parse("slic:16 slic:8 slic:4");
-  const SuperpixelSource together = slic_source(image, {}, schedule);
-  for (const int size : {16, 8, 4}) CHECK(together(size) == slic_partition(image, size));
-  // A size asked again, or one the schedule does not name, is computed on its own.
-  CHECK(together(8) == slic_partition(image, 8));
-  CHECK(together(12) == slic_partition(image, 12));
-  // A size that cannot be computed throws when its level asks for it, not before.
-  const SuperpixelSource too_large = slic_source(image, {}, Schedule::parse("slic:8 slic:49"));
-  CHECK(too_large(8) == slic_partition(image, 8));
-  CHECK_THROWS_WITH(too_large(49), Catch::Contains("region size 49 is larger than the 64x48"));
-  CHECK_THROWS_WITH(slic_source(cv::Mat(4, 4, CV_8UC1), {}, schedule)(16),
+  for (const SlicAlgorithm algorithm : {SlicAlgorithm::slico, SlicAlgorithm::slic}) {
+    SlicOptions options;
+    options.algorithm = algorithm;
+    for (const int size : {16, 8, 4}) {
+      const DensePartition one = slic_partition(image, size, options, 1);
+      CHECK(slic_partition(image, size, options, 2) == one);
+      CHECK(slic_partition(image, size, options, 3) == one);
+      // Every superpixel is one 4-connected piece.
+      std::vector<int> pieces(one.num_groups(), 0);
+      std::vector<bool> seen(one.num_variables(), false);
+      for (VariableIndex start = 0; start < one.num_variables(); ++start) {
+        if (seen[start]) continue;
+        ++pieces[one.group_of(start)];
+        std::vector<VariableIndex> stack{start};
+        seen[start] = true;
+        while (!stack.empty()) {
+          const VariableIndex v = stack.back();
+          stack.pop_back();
+          const std::size_t x = v % 64, y = v / 64;
+          const std::array<std::pair<std::size_t, bool>, 4> around{
+              {{v - 1, x > 0}, {v + 1, x + 1 < 64}, {v - 64, y > 0}, {v + 64, y + 1 < 48}}};
+          for (const auto& [u, inside] : around) {
+            if (inside && !seen[u] && one.group_of(u) == one.group_of(v)) {
+              seen[u] = true;
+              stack.push_back(u);
+            }
+          }
+        }
+      }
+      CHECK(std::ranges::all_of(pieces, [](int count) { return count == 1; }));
+      // SLICO: about (64 / size) x (48 / size) of them, pieces below a quarter of size^2
+      // merged. (SLIC's fixed compactness lets the speckle split clusters into pieces, which
+      // merge into fewer superpixels.)
+      if (algorithm == SlicAlgorithm::slico) {
+        CHECK(one.num_groups() >= static_cast<std::size_t>((64 / size) * (48 / size)) / 2);
+      }
+    }
+  }
+  // A source builds what slic_partition builds, on the threads its level names.
+  const SuperpixelSource source = slic_source(image);
+  CHECK(source(8, 2) == slic_partition(image, 8));
+  CHECK(source(12, 1) == slic_partition(image, 12));
+  CHECK_THROWS_WITH(source(49, 1), Catch::Contains("region size 49 is larger than the 64x48"));
+  CHECK_THROWS_WITH(slic_source(cv::Mat(4, 4, CV_8UC1))(16, 1),
                     Catch::Contains("non-empty 8-bit 3-channel"));
 }
 

@@ -37,8 +37,9 @@ DensePartition LevelBuilder::build(const LevelSpec& spec, const LiftingView& vie
 }
 
 unsigned LevelBuilder::last_threads() const noexcept {
-  return std::holds_alternative<AggregatedLevel>(last_built_.partition) ? resolved_threads(threads_)
-                                                                        : 1;
+  const bool split = std::holds_alternative<AggregatedLevel>(last_built_.partition) ||
+                     std::holds_alternative<SlicLevel>(last_built_.partition);
+  return split ? resolved_threads(threads_) : 1;
 }
 
 DensePartition LevelBuilder::build_one(const LevelSpec& spec, const LiftingView& view,
@@ -111,7 +112,8 @@ DensePartition LevelBuilder::colour_passing(const ColourPassingLevel& level,
 
 DensePartition LevelBuilder::superpixels(const LevelSpec& spec, const DensePartition* previous) {
   const GridShape shape = grid_of(spec);
-  DensePartition superpixels = superpixels_(std::get<SlicLevel>(spec.partition).region_size);
+  DensePartition superpixels =
+      superpixels_(std::get<SlicLevel>(spec.partition).region_size, threads_);
   require_grid_size(superpixels.num_variables(), shape,
                     "schedule: level " + LevelSpec{spec.partition}.to_string(),
                     "superpixel partition");

@@ -28,11 +28,11 @@ class LevelBuilder {
   /// The level the last build() made: its spec, or for agg:R,MAX,SHARE the fixed agg:RADIUS
   /// it chose (with its /cc).
   [[nodiscard]] const LevelSpec& last_built() const noexcept { return last_built_; }
-  /// The threads the last build() ran on: resolved_threads(threads) for an agg level, 1 for
-  /// the others.
+  /// The threads the last build() ran on: resolved_threads(threads) for an agg or slic level,
+  /// 1 for the others.
   [[nodiscard]] unsigned last_threads() const noexcept;
-  /// Builds agg levels (on a grid and off one) on up to `threads` threads (0: the machine's
-  /// cores); the partitions are the same for every count.
+  /// Builds agg levels (on a grid and off one) and slic levels on up to `threads` threads (0:
+  /// the machine's cores); the partitions are the same for every count.
   void set_threads(int threads) noexcept { threads_ = threads; }
 
  private:

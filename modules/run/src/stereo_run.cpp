@@ -35,7 +35,7 @@ StereoRunReport run_stereo(const TsgoProblem& problem, const Schedule& schedule,
                            const RunConfig& config, const Observer& observer) {
   const GridShape shape{static_cast<std::size_t>(problem.guide.cols),
                         static_cast<std::size_t>(problem.guide.rows)};
-  ScheduleProvider levels(schedule, shape, slic_source(problem.guide, {}, schedule));
+  ScheduleProvider levels(schedule, shape, slic_source(problem.guide));
   RunReport report = run(problem.energy, levels, config, observer);
   return {std::move(report), levels.reports()};
 }

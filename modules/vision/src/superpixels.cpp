@@ -1,20 +1,14 @@
 #include "c2f/vision/superpixels.hpp"
-#include "c2f/support/enum_names.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <exception>
-#include <map>
 #include <memory>
-#include <opencv2/core/utility.hpp>
-#include <opencv2/imgproc.hpp>
-#include <opencv2/ximgproc/slic.hpp>
-#include <optional>
 #include <stdexcept>
 #include <string>
-#include <variant>
+
+#include "slic_clustering.hpp"
 
 namespace c2f::vision {
 
@@ -61,41 +55,29 @@ void require_colour_image(const cv::Mat& image) {
 
 /// slic_partition of the image whose CIE Lab (lab_of_bgr) is `lab`.
 DensePartition slic_partition_of_lab(const cv::Mat& lab, int region_size,
-                                     const SlicOptions& options) {
+                                     const SlicOptions& options, int threads) {
   if (region_size < 2) throw std::invalid_argument("slic_partition: region size must be >= 2");
-  // OpenCV's SLIC reads out of bounds for regions much larger than the image; a region larger
-  // than the image's shorter side is refused.
+  // A region larger than the image's shorter side leaves at most a strip of superpixels: a
+  // mistake in the schedule, refused by name.
   if (region_size > std::min(lab.cols, lab.rows)) {
     throw std::invalid_argument("slic_partition: region size " + std::to_string(region_size) +
                                 " is larger than the " + std::to_string(lab.cols) + "x" +
                                 std::to_string(lab.rows) + " image's shorter side");
   }
-  const int algorithm =
-      options.algorithm == SlicAlgorithm::slic ? cv::ximgproc::SLIC : cv::ximgproc::SLICO;
-  auto slic = cv::ximgproc::createSuperpixelSLIC(lab, algorithm, region_size, options.ruler);
-  slic->iterate(options.iterations);
-  slic->enforceLabelConnectivity(options.min_element_percent);
-  cv::Mat labels;
-  slic->getLabels(labels);
-  std::vector<std::int64_t> ids(static_cast<std::size_t>(labels.rows) * labels.cols);
-  for (int y = 0; y < labels.rows; ++y) {
-    const int* row = labels.ptr<int>(y);
-    for (int x = 0; x < labels.cols; ++x)
-      ids[static_cast<std::size_t>(y) * labels.cols + x] = row[x];
-  }
-  return DensePartition::from_ids(ids);
+  return DensePartition::from_ids(detail::slic_labels(lab, region_size, options, threads));
 }
 
 }  // namespace
 
-DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options) {
+DensePartition slic_partition(const cv::Mat& image, int region_size, const SlicOptions& options,
+                              int threads) {
   require_colour_image(image);
-  return slic_partition_of_lab(lab_of_bgr(image), region_size, options);
+  return slic_partition_of_lab(lab_of_bgr(image), region_size, options, threads);
 }
 
 std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
                                            const std::vector<int>& region_sizes,
-                                           const SlicOptions& options) {
+                                           const SlicOptions& options, int threads) {
   if (region_sizes.empty()) throw std::invalid_argument("slic_hierarchy: no region sizes");
   for (std::size_t i = 1; i < region_sizes.size(); ++i) {
     if (region_sizes[i] >= region_sizes[i - 1]) {
@@ -108,7 +90,7 @@ std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
   const cv::Mat lab = lab_of_bgr(image);
   std::vector<DensePartition> levels;
   for (const int size : region_sizes) {
-    DensePartition superpixels = slic_partition_of_lab(lab, size, options);
+    DensePartition superpixels = slic_partition_of_lab(lab, size, options, threads);
     if (levels.empty()) {
       levels.push_back(std::move(superpixels));
       continue;
@@ -124,66 +106,16 @@ namespace {
 struct SlicCache {
   cv::Mat image;
   SlicOptions options;
-  std::vector<int> together;  ///< sizes computed at once on the first call for one of them
-  bool together_done = false;
   cv::Mat lab;  ///< converted on the first call (on the run's clock) and kept
-  std::map<int, DensePartition> ready;
-  std::map<int, std::exception_ptr> failed;
 
-  DensePartition superpixels(int region_size) {
+  DensePartition superpixels(int region_size, int threads) {
     if (lab.empty()) {
       require_colour_image(image);
       lab = lab_of_bgr(image);
     }
-    if (!together_done && std::ranges::find(together, region_size) != together.end()) {
-      together_done = true;
-      compute_together();
-    }
-    if (const auto error = failed.find(region_size); error != failed.end()) {
-      const std::exception_ptr thrown = error->second;
-      failed.erase(error);
-      std::rethrow_exception(thrown);
-    }
-    if (const auto done = ready.find(region_size); done != ready.end()) {
-      DensePartition partition = std::move(done->second);
-      ready.erase(done);
-      return partition;
-    }
-    return slic_partition_of_lab(lab, region_size, options);
-  }
-
-  /// One size per task of OpenCV's own parallel loop: OpenCV runs a parallel loop nested in
-  /// another serially, so each size's SLIC runs on the thread of its task.
-  void compute_together() {
-    const auto count = static_cast<int>(together.size());
-    std::vector<std::optional<DensePartition>> results(together.size());
-    std::vector<std::exception_ptr> errors(together.size());
-    cv::parallel_for_(
-        cv::Range(0, count),
-        [&](const cv::Range& range) {
-          for (int i = range.start; i < range.end; ++i) {
-            const auto k = static_cast<std::size_t>(i);
-            try {
-              results[k] = slic_partition_of_lab(lab, together[k], options);
-            } catch (...) {
-              errors[k] = std::current_exception();
-            }
-          }
-        },
-        count);
-    for (std::size_t k = 0; k < together.size(); ++k) {
-      if (errors[k]) {
-        failed.emplace(together[k], errors[k]);
-      } else {
-        ready.emplace(together[k], std::move(*results[k]));
-      }
-    }
+    return slic_partition_of_lab(lab, region_size, options, threads);
   }
 };
-
-SuperpixelSource source_of(std::shared_ptr<SlicCache> cache) {
-  return [cache = std::move(cache)](int region_size) { return cache->superpixels(region_size); };
-}
 
 }  // namespace
 
@@ -191,21 +123,9 @@ SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options) {
   auto cache = std::make_shared<SlicCache>();
   cache->image = image.clone();
   cache->options = options;
-  return source_of(std::move(cache));
-}
-
-SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options, const Schedule& schedule) {
-  auto cache = std::make_shared<SlicCache>();
-  cache->image = image.clone();
-  cache->options = options;
-  for (const LevelSpec& level : schedule.levels) {
-    if (const auto* slic = std::get_if<SlicLevel>(&level.partition);
-        slic != nullptr &&
-        std::ranges::find(cache->together, slic->region_size) == cache->together.end())
-      cache->together.push_back(slic->region_size);
-  }
-  if (cache->together.size() < 2) cache->together.clear();  // nothing to compute at once
-  return source_of(std::move(cache));
+  return [cache = std::move(cache)](int region_size, int threads) {
+    return cache->superpixels(region_size, threads);
+  };
 }
 
 }  // namespace c2f::vision

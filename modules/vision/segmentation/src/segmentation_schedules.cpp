@@ -18,7 +18,7 @@ std::vector<SchedulePreset> segmentation_schedule_presets(int num_labels) {
 ScheduleProvider segmentation_levels(Schedule schedule, const SegmentationScene& scene) {
   SlicOptions options;
   options.iterations = kSegmentationSlicIterations;
-  SuperpixelSource superpixels = slic_source(scene.image, options, schedule);
+  SuperpixelSource superpixels = slic_source(scene.image, options);
   ScheduleProvider levels(std::move(schedule), scene.shape(), std::move(superpixels));
   // Class 0 for unseeded pixels, 1 + l for the seeds of label l.
   std::vector<int> classes(scene.seeds.size());

@@ -26,12 +26,13 @@ struct LevelReport {
   std::string level;
   std::size_t num_groups;  ///< groups of the partition produced
   double seconds;          ///< time to build it
-  unsigned threads = 1;    ///< threads it was built on (set_threads: agg levels; 1 for others)
+  unsigned threads = 1;    ///< threads it was built on (set_threads: agg and slic levels; 1 else)
 };
 
-/// Builds SLIC superpixels for a region size (supplied by the vision module, which owns the
-/// image); returns one group id per pixel as a partition.
-using SuperpixelSource = std::function<DensePartition(int region_size)>;
+/// Builds SLIC superpixels for a region size on up to `threads` threads (0: the machine's cores;
+/// the same partition for every count), supplied by the vision module, which owns the image;
+/// returns one group id per pixel as a partition.
+using SuperpixelSource = std::function<DensePartition(int region_size, int threads)>;
 
 namespace detail {
 class LevelBuilder;
@@ -92,7 +93,7 @@ class ScheduleProvider {
     return partition;
   }
 
-  /// Builds the levels that can be split among threads (agg levels) on up to
+  /// Builds the levels that can be split among threads (agg and slic levels) on up to
   /// `threads` threads (0: the machine's cores; 1 until set); the partitions are the same for
   /// every count. run() sets the solve's threads.
   void set_threads(int threads) noexcept;

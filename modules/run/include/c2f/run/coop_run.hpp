@@ -72,6 +72,8 @@ RunReport run(const CoopEnergy& energy, P& levels, const CoopRunConfig& config,
   CoopSolverOptions options = config.solver;
   options.graph_memory_limit = report.plan.graph_memory;
   CoopSolver solver(options);
+  // The levels (superpixels) are built on the solve's threads.
+  if constexpr (requires { levels.set_threads(1); }) levels.set_threads(options.threads);
   report.summary = coarse_to_fine(energy, levels, solver, config.limits, observer);
   report.optional_memory_used = solver.kept_bytes();
   report.flow_parts = solver.flow_parts(energy);

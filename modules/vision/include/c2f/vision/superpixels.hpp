@@ -1,5 +1,5 @@
 #pragma once
-// SLIC / SLICO superpixels (OpenCV ximgproc) as partitions.
+// SLIC / SLICO superpixels as partitions (our own clustering, on several threads).
 
 #include <opencv2/core.hpp>
 #include <string_view>
@@ -15,7 +15,7 @@ enum class SlicAlgorithm { slic, slico };
 struct SlicOptions {
   SlicAlgorithm algorithm = SlicAlgorithm::slico;
   float ruler = 10.0F;  ///< compactness (SLIC only; SLICO adapts it)
-  int iterations = 10;
+  int iterations = 10;  ///< clustering rounds (at least 1)
   int min_element_percent =
       25;  ///< enforce connectivity: merge segments smaller than this % of the region
 };
@@ -29,28 +29,24 @@ struct SlicOptions {
 cv::Mat lab_of_bgr(const cv::Mat& bgr);
 
 /// Superpixels of an 8-bit colour image with the given region size (pixels per side), as a
-/// partition of its pixels (v = y * width + x). Throws std::invalid_argument for an empty or
-/// non-8-bit-3-channel image, region_size < 2, or a region larger than the image's shorter side.
+/// partition of its pixels (v = y * width + x): SLIC or SLICO clustering of its Lab colours
+/// (lab_of_bgr) and positions, each superpixel 4-connected (the algorithm:
+/// src/slic_clustering.hpp). On min(resolved_threads(threads), rows) threads, with the same
+/// result for every count. Throws std::invalid_argument for an empty or non-8-bit-3-channel
+/// image, region_size < 2, or a region larger than the image's shorter side.
 DensePartition slic_partition(const cv::Mat& image, int region_size,
-                              const SlicOptions& options = {});
+                              const SlicOptions& options = {}, int threads = 0);
 
 /// Superpixels for each region size (coarsest first), nested explicitly: every level's group is
 /// (previous level's group, own superpixel), so each level refines the one before it. Throws
 /// std::invalid_argument when the sizes are empty or do not decrease.
 std::vector<DensePartition> slic_hierarchy(const cv::Mat& image,
                                            const std::vector<int>& region_sizes,
-                                           const SlicOptions& options = {});
+                                           const SlicOptions& options = {}, int threads = 0);
 
-/// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image. The image is copied
-/// and converted to Lab once, on the first call.
+/// A SuperpixelSource for ScheduleProvider (slic:S levels) on this image: slic_partition of
+/// each size a level asks for, on the threads it names. The image is copied, and converted to
+/// Lab once, on the first call (on the run's clock).
 SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options = {});
-
-/// The same for the slic:S levels of `schedule`: the first call for one of their sizes computes
-/// the superpixels of all of them at once, each size on a thread of its own (OpenCV's SLIC
-/// gains nothing from a second thread here: 001_oct's slic:8 took 76 ms on one and 100 ms on
-/// two), and keeps the others for their levels. The partitions are those slic_partition gives
-/// (OpenCV's SLIC does not depend on its threads); a size that cannot be computed throws when
-/// its level asks for it, as with the source above.
-SuperpixelSource slic_source(const cv::Mat& image, SlicOptions options, const Schedule& schedule);
 
 }  // namespace c2f::vision
