@@ -103,7 +103,8 @@ struct Clustering {
   /// Every pixel to the nearest centre whose window holds it, rows [first, last).
   void assign_rows(int first, int last) {
     const int reach = region_size;
-    const float spatial_scale = 1.0F / static_cast<float>(region_size * region_size);
+    const auto side = static_cast<float>(region_size);
+    const float spatial_scale = 1.0F / (side * side);
     for (std::size_t k = 0; k < centres.size(); ++k) {
       const Centre centre = centres[k];
       const int centre_x = static_cast<int>(centre.x), centre_y = static_cast<int>(centre.y);
