@@ -1,11 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <array>
 #include <opencv2/imgproc.hpp>
-#include <utility>
-#include <vector>
 
+#include "c2f/lift/connected_components.hpp"
 #include "c2f/lift/schedule_provider.hpp"
 #include "c2f/vision/partition_image.hpp"
 #include "c2f/vision/superpixels.hpp"
@@ -78,6 +75,16 @@ TEST_CASE("SLIC superpixels follow colour edges and nest in a schedule", "[visio
   CHECK_THROWS_WITH(slic_hierarchy(image, {12, 24}), Catch::Contains("region sizes must decrease"));
   CHECK_THROWS_WITH(slic_partition(image, 1), Catch::Contains("region size must be >= 2"));
   CHECK_THROWS_WITH(slic_partition(cv::Mat(), 8), Catch::Contains("non-empty 8-bit 3-channel"));
+  SlicOptions bad;
+  bad.iterations = 0;
+  CHECK_THROWS_WITH(slic_partition(image, 8, bad), Catch::Contains("iterations must be >= 1"));
+  bad = {};
+  bad.min_element_percent = 101;
+  CHECK_THROWS_WITH(slic_partition(image, 8, bad), Catch::Contains("min_element_percent"));
+  bad = {};
+  bad.algorithm = SlicAlgorithm::slic;
+  bad.ruler = 0.0F;
+  CHECK_THROWS_WITH(slic_partition(image, 8, bad), Catch::Contains("ruler must be finite"));
   // Regions larger than the image are refused by name.
   CHECK_THROWS_WITH(
       slic_partition(image, 49),
@@ -98,29 +105,8 @@ TEST_CASE("SLIC superpixels are the same on every thread count, and connected", 
       const DensePartition one = slic_partition(image, size, options, 1);
       CHECK(slic_partition(image, size, options, 2) == one);
       CHECK(slic_partition(image, size, options, 3) == one);
-      // Every superpixel is one 4-connected piece.
-      std::vector<int> pieces(one.num_groups(), 0);
-      std::vector<bool> seen(one.num_variables(), false);
-      for (VariableIndex start = 0; start < one.num_variables(); ++start) {
-        if (seen[start]) continue;
-        ++pieces[one.group_of(start)];
-        std::vector<VariableIndex> stack{start};
-        seen[start] = true;
-        while (!stack.empty()) {
-          const VariableIndex v = stack.back();
-          stack.pop_back();
-          const std::size_t x = v % 64, y = v / 64;
-          const std::array<std::pair<std::size_t, bool>, 4> around{
-              {{v - 1, x > 0}, {v + 1, x + 1 < 64}, {v - 64, y > 0}, {v + 64, y + 1 < 48}}};
-          for (const auto& [u, inside] : around) {
-            if (inside && !seen[u] && one.group_of(u) == one.group_of(v)) {
-              seen[u] = true;
-              stack.push_back(u);
-            }
-          }
-        }
-      }
-      CHECK(std::ranges::all_of(pieces, [](int count) { return count == 1; }));
+      // Every superpixel is one 4-connected piece: splitting them into pieces adds none.
+      CHECK(connected_components(one, {64, 48}).num_groups() == one.num_groups());
       // SLICO: about (64 / size) x (48 / size) of them, pieces below a quarter of size^2
       // merged. (SLIC's fixed compactness lets the speckle split clusters into pieces, which
       // merge into fewer superpixels.)
