@@ -237,7 +237,7 @@ std::vector<std::int32_t> slic_labels(const cv::Mat& lab, int region_size,
                         {},
                         std::vector<float>(image.l.size(), 0.0F)};
   const auto rows = static_cast<std::size_t>(image.height);
-  for (int iteration = 0; iteration < std::max(1, options.iterations); ++iteration) {
+  for (int iteration = 0; iteration < options.iterations; ++iteration) {
     clustering.distance.assign(image.l.size(), std::numeric_limits<float>::infinity());
     parallel_for_chunks(
         rows, kRowsPerTask,
@@ -248,8 +248,7 @@ std::vector<std::int32_t> slic_labels(const cv::Mat& lab, int region_size,
     clustering.update_centres(adaptive);
   }
   const auto area = static_cast<std::size_t>(region_size) * static_cast<std::size_t>(region_size);
-  const std::size_t min_size =
-      area * static_cast<std::size_t>(std::max(0, options.min_element_percent)) / 100;
+  const std::size_t min_size = area * static_cast<std::size_t>(options.min_element_percent) / 100;
   return connected_superpixels(clustering.label, image.width, image.height, min_size);
 }
 

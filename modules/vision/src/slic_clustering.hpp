@@ -27,7 +27,7 @@ namespace c2f::vision::detail {
 ///
 /// Rows are split among min(resolved_threads(threads), rows) threads; each pixel's distances
 /// are computed in the same order on any count, so the result depends on none of them. The
-/// caller checks the image and region size (superpixels.cpp).
+/// caller checks the image, the region size and the options (superpixels.cpp).
 std::vector<std::int32_t> slic_labels(const cv::Mat& lab, int region_size,
                                       const SlicOptions& options, int threads);
 

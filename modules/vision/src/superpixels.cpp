@@ -64,6 +64,19 @@ DensePartition slic_partition_of_lab(const cv::Mat& lab, int region_size,
                                 " is larger than the " + std::to_string(lab.cols) + "x" +
                                 std::to_string(lab.rows) + " image's shorter side");
   }
+  if (options.iterations < 1) {
+    throw std::invalid_argument("slic_partition: iterations must be >= 1, got " +
+                                std::to_string(options.iterations));
+  }
+  if (options.min_element_percent < 0 || options.min_element_percent > 100) {
+    throw std::invalid_argument("slic_partition: min_element_percent must be in [0, 100], got " +
+                                std::to_string(options.min_element_percent));
+  }
+  if (options.algorithm == SlicAlgorithm::slic &&
+      !(std::isfinite(options.ruler) && options.ruler > 0.0F)) {
+    throw std::invalid_argument("slic_partition: SLIC's ruler must be finite and > 0, got " +
+                                std::to_string(options.ruler));
+  }
   return DensePartition::from_ids(detail::slic_labels(lab, region_size, options, threads));
 }
 

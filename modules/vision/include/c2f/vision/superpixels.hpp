@@ -15,7 +15,7 @@ enum class SlicAlgorithm { slic, slico };
 struct SlicOptions {
   SlicAlgorithm algorithm = SlicAlgorithm::slico;
   float ruler = 10.0F;  ///< compactness (SLIC only; SLICO adapts it)
-  int iterations = 10;  ///< clustering rounds (at least 1)
+  int iterations = 10;  ///< clustering rounds (>= 1)
   int min_element_percent =
       25;  ///< enforce connectivity: merge segments smaller than this % of the region
 };
@@ -33,7 +33,8 @@ cv::Mat lab_of_bgr(const cv::Mat& bgr);
 /// (lab_of_bgr) and positions, each superpixel 4-connected (the algorithm:
 /// src/slic_clustering.hpp). On min(resolved_threads(threads), rows) threads, with the same
 /// result for every count. Throws std::invalid_argument for an empty or non-8-bit-3-channel
-/// image, region_size < 2, or a region larger than the image's shorter side.
+/// image, region_size < 2, a region larger than the image's shorter side, iterations < 1,
+/// min_element_percent outside [0, 100], or (SLIC) a ruler that is not finite and positive.
 DensePartition slic_partition(const cv::Mat& image, int region_size,
                               const SlicOptions& options = {}, int threads = 0);
 
